@@ -1,0 +1,28 @@
+# Every dependency comes from a Debian 12 package installed by scripts/install-deps.sh.
+find_package(Threads REQUIRED)
+find_package(TBB REQUIRED)
+find_package(embree 3 REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(PNG REQUIRED)
+
+find_path(STB_INCLUDE_DIR stb_image_write.h PATH_SUFFIXES stb REQUIRED)
+add_library(shadowkit_stb INTERFACE)
+target_include_directories(shadowkit_stb SYSTEM INTERFACE ${STB_INCLUDE_DIR})
+
+# Debian 12's OpenSubdivConfig.cmake names a static library the package does not ship,
+# so the headers and libosdCPU.so are found directly.
+find_path(OPENSUBDIV_INCLUDE_DIR opensubdiv/far/topologyRefiner.h)
+find_library(OPENSUBDIV_CPU_LIBRARY NAMES osdCPU)
+if(OPENSUBDIV_INCLUDE_DIR AND OPENSUBDIV_CPU_LIBRARY)
+  add_library(shadowkit_opensubdiv INTERFACE)
+  target_include_directories(shadowkit_opensubdiv SYSTEM INTERFACE ${OPENSUBDIV_INCLUDE_DIR})
+  target_link_libraries(shadowkit_opensubdiv INTERFACE ${OPENSUBDIV_CPU_LIBRARY})
+endif()
+
+if(SHADOWKIT_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(SHADOWKIT_BENCHMARKS)
+  find_package(benchmark REQUIRED)
+endif()

@@ -1,0 +1,18 @@
+# One interface target carries the project's warnings and sanitizer flags.
+add_library(shadowkit_warnings INTERFACE)
+target_compile_options(shadowkit_warnings INTERFACE
+  -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wold-style-cast -Wcast-align
+  -Woverloaded-virtual -Wnull-dereference -Wimplicit-fallthrough
+  # GCC 12 reports false positives inside std::string (GCC bug 105329).
+  -Wno-restrict)
+
+add_library(shadowkit_options INTERFACE)
+target_link_libraries(shadowkit_options INTERFACE shadowkit_warnings)
+if(CMAKE_BUILD_TYPE STREQUAL "Release")
+  target_compile_options(shadowkit_options INTERFACE -march=x86-64-v2 -O3)
+endif()
+if(SHADOWKIT_SANITIZE)
+  target_compile_options(shadowkit_options INTERFACE
+    -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+  target_link_options(shadowkit_options INTERFACE -fsanitize=address,undefined)
+endif()

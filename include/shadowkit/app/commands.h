@@ -1,0 +1,45 @@
+#pragma once
+/// \brief The command-line commands as library functions: the executable only parses
+/// arguments. Each returns the process exit status; bad input throws InputError.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "shadowkit/core/context.h"
+#include "shadowkit/methods/shadow_method.h"
+
+namespace shadowkit {
+
+/// \brief What every command shares.
+struct CommandOptions {
+  std::string scene;                               ///< file or built-in scene name
+  std::map<std::string, MethodOptions> settings;  ///< per method name
+  bool json = false;
+};
+
+struct RenderOptions : CommandOptions {
+  std::string method;
+  std::string mask_prefix;
+  std::string image;  ///< empty: no shaded image
+};
+
+struct CompareOptions : CommandOptions {
+  std::vector<std::string> methods;  ///< empty: all; raytrace is always the reference
+  std::string report_dir;            ///< empty: no report
+};
+
+struct BenchOptions : CommandOptions {
+  std::vector<std::string> methods;
+  int warmup = 1;
+  int repeats = 5;
+};
+
+/// Parses "method.key=value" settings into per-method options; InputError if malformed.
+std::map<std::string, MethodOptions> parse_settings(const std::vector<std::string>& settings);
+
+int run_render(const RenderOptions& options, const Context& ctx);
+int run_compare(const CompareOptions& options, const Context& ctx);
+int run_bench(const BenchOptions& options, const Context& ctx);
+int run_info(const CommandOptions& options, const Context& ctx);
+
+}  // namespace shadowkit

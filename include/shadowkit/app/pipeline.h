@@ -1,0 +1,51 @@
+#pragma once
+/// \brief Runs methods over a scene's lights and times them: scene -> per-light build ->
+/// camera pass -> masks.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "shadowkit/core/context.h"
+#include "shadowkit/methods/shadow_method.h"
+#include "shadowkit/raster/visible_surface.h"
+#include "shadowkit/scene/scene.h"
+
+namespace shadowkit {
+
+/// \brief One method on one light: median times over the repetitions, memory, counters and
+/// the mask of the last repetition.
+struct MethodRun {
+  std::string method;
+  std::size_t light = 0;
+  double prepare_ms = 0;  ///< light-independent structures, once per scene
+  double build_ms = 0;
+  double shade_ms = 0;
+  std::size_t memory_bytes = 0;
+  MethodCounters counters;
+  ShadowMask mask;
+};
+
+/// \brief How often to run each stage when timing.
+struct Repetitions {
+  int warmup = 0;
+  int timed = 1;
+};
+
+/// Milliseconds since an arbitrary origin, from a steady clock.
+double now_ms();
+/// Median of \p samples (empty: 0).
+double median(std::vector<double> samples);
+
+/// The visible-surface buffer and the median time to compute it.
+struct CameraPass {
+  VisibleSurfaceBuffer surfaces;
+  double scan_ms = 0;
+};
+CameraPass run_camera_pass(const Scene& scene, const Repetitions& reps, const Context& ctx);
+
+/// Runs \p method_name (with its options) over every light of \p scene.
+std::vector<MethodRun> run_method(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
+                                  const std::string& method_name, const MethodOptions& options,
+                                  const Repetitions& reps, const Context& ctx);
+
+}  // namespace shadowkit

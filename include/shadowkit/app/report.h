@@ -1,0 +1,24 @@
+#pragma once
+/// \brief The comparison report: an HTML page with the images side by side.
+#include <filesystem>
+#include <vector>
+
+#include "shadowkit/app/mask_compare.h"
+#include "shadowkit/app/pipeline.h"
+#include "shadowkit/scene/scene.h"
+
+namespace shadowkit {
+
+/// \brief Everything compare measured, per method (runs in light order).
+struct ComparedMethod {
+  std::string name;
+  std::vector<MethodRun> runs;
+  std::vector<MaskComparison> against_reference;  ///< per light
+};
+
+/// Writes DIR/index.html with, per method, the shaded image, and per light the mask and the
+/// difference image against the reference (the first method), all as PNGs in DIR.
+void write_report(const std::filesystem::path& dir, const Scene& scene, const CameraPass& pass,
+                  const std::vector<ComparedMethod>& methods);
+
+}  // namespace shadowkit

@@ -1,0 +1,88 @@
+#pragma once
+/// \brief The one interface every shadow method implements, and what they share.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "shadowkit/core/context.h"
+#include "shadowkit/core/image.h"
+#include "shadowkit/raster/visible_surface.h"
+#include "shadowkit/scene/scene.h"
+
+namespace shadowkit {
+
+/// Mask values of scene-format.md.
+inline constexpr std::uint8_t kMaskBackground = 0;
+inline constexpr std::uint8_t kMaskShadow = 128;
+inline constexpr std::uint8_t kMaskLit = 255;
+
+/// \brief One light's shadow mask: kMaskBackground, kMaskShadow or kMaskLit per pixel.
+using ShadowMask = Image<std::uint8_t>;
+
+/// \brief Named numbers a method reports about its last build/shade (edges, nodes, calls).
+using MethodCounters = std::vector<std::pair<std::string, double>>;
+
+/// \brief Method settings from the command line ("--set shadowmap.resolution=4096"),
+/// keyed without the method prefix. Methods reject keys they do not know.
+class MethodOptions {
+ public:
+  MethodOptions() = default;
+  explicit MethodOptions(std::map<std::string, std::string> values) : values_(std::move(values)) {}
+  /// Value of \p key parsed as a number, or \p fallback; InputError if it is not a number.
+  double number(const std::string& key, double fallback) const;
+  /// Value of \p key, or \p fallback.
+  std::string text(const std::string& key, const std::string& fallback) const;
+  /// Throws InputError naming the first key not in \p known.
+  void expect_only(std::string_view method, const std::vector<std::string>& known) const;
+
+ private:
+  std::map<std::string, std::string> values_;
+};
+
+/// \brief A shadow algorithm. Data flows one way: prepare (once per scene) -> build (once
+/// per light) -> shade (camera pass over the visible-surface buffer).
+class ShadowMethod {
+ public:
+  virtual ~ShadowMethod() = default;
+  virtual std::string_view name() const = 0;
+  /// Light-independent structures, built once per scene (BVH, scene BSP tree, ...).
+  virtual void prepare(const Scene& /*scene*/, const Context& /*ctx*/) {}
+  /// Per-light structures (shadow map, shadow polygons, SVBSP tree, angular table).
+  virtual void build(const Scene& scene, std::size_t light, const Context& ctx) = 0;
+  /// Writes kMaskLit or kMaskShadow at every covered pixel of \p surfaces for the light of
+  /// the last build(); \p mask arrives sized and cleared to kMaskBackground.
+  virtual void shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
+                     ShadowMask& mask, const Context& ctx) = 0;
+  /// Bytes held by the structures of prepare() and the last build().
+  virtual std::size_t memory_bytes() const = 0;
+  /// Counters of the last build()/shade().
+  virtual MethodCounters counters() const { return {}; }
+};
+
+/// Condition 1 of the contract: the camera at \p eye and the light are strictly on the same
+/// side of a face's \p plane. A light in the plane, or behind it, shadows the face.
+inline bool faces_light(const Plane& plane, Vec3 eye, const Light& light) {
+  const double eye_side = plane.distance(eye);
+  const double light_side = light.type == Light::Type::point ? plane.distance(light.position)
+                                                             : -dot(plane.normal, light.direction);
+  return (eye_side > 0 && light_side > 0) || (eye_side < 0 && light_side < 0);
+}
+
+/// Runs \p classify(index) -> bool lit for every covered pixel, rows in parallel, and
+/// writes the mask. The shared camera pass of per-pixel methods.
+void shade_each_pixel(const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
+                      const std::function<bool(std::size_t)>& classify);
+
+/// Names of the available methods, in the order compare shows them.
+std::vector<std::string> method_names();
+
+/// Creates a method by name; InputError for an unknown name or option.
+std::unique_ptr<ShadowMethod> make_method(std::string_view name, const MethodOptions& options);
+
+}  // namespace shadowkit

@@ -1,0 +1,54 @@
+#pragma once
+/// \brief The software z-buffer scan converter that every method relies on.
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <vector>
+
+#include "shadowkit/core/context.h"
+#include "shadowkit/raster/projection.h"
+#include "shadowkit/scene/scene.h"
+
+namespace shadowkit {
+
+inline constexpr std::uint32_t kNoFace = std::numeric_limits<std::uint32_t>::max();
+
+/// \brief Nearest face per pixel and its depth key (larger is nearer; see RasterProjection).
+struct DepthFaceBuffer {
+  int width = 0, height = 0;
+  std::vector<float> depth_key;
+  std::vector<std::uint32_t> face;  ///< global face id, kNoFace where nothing was drawn
+};
+
+/// \brief One finished tile: pixels [x0, x0+width) x [y0, y0+height) of the raster, rows of
+/// `width` entries.
+struct RasterTile {
+  int x0 = 0, y0 = 0, width = 0, height = 0;
+  const float* depth_key = nullptr;
+  const std::uint32_t* face = nullptr;
+};
+
+/// \brief Rasterizes a scene's triangles: near-plane and guard-band clipping, no back-face
+/// culling, top-left fill rule on 1/256-pixel fixed point (a pixel centre on an edge shared
+/// by two triangles is drawn exactly once), tiles in parallel with oneTBB.
+class ScanConverter {
+ public:
+  /// Depth is interpolated from each face's exact plane, so all triangles of a polygon agree.
+  explicit ScanConverter(const Scene& scene) : scene_(scene) {}
+
+  /// Tile edge in pixels.
+  static constexpr int kTileSize = 64;
+
+  /// Nearest face per pixel. Ties in depth go to the lower triangle index.
+  DepthFaceBuffer rasterize(const RasterProjection& view, const Context& ctx) const;
+
+  /// Calls \p fn once per finished tile, from several threads at once: the building block
+  /// of rasterize() and of passes that post-process a tile while it is in cache.
+  void rasterize_tiles(const RasterProjection& view, const Context& ctx,
+                       const std::function<void(const RasterTile&)>& fn) const;
+
+ private:
+  const Scene& scene_;
+};
+
+}  // namespace shadowkit

@@ -1,0 +1,87 @@
+#pragma once
+/// \brief The scene model: camera, lights and meshes in world space (scene-format.md).
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "shadowkit/core/vec.h"
+#include "shadowkit/scene/mesh.h"
+
+namespace shadowkit {
+
+/// \brief Pinhole camera with the contract's pixel convention.
+struct Camera {
+  Vec3 position{0, 4, 12};
+  Vec3 look_at{0, 0, 0};
+  Vec3 up{0, 1, 0};
+  double fov_y_deg = 45;
+  int width = 1920, height = 1080;
+
+  /// Orthonormal frame: forward f, right r = normalize(f x up), true up u = r x f.
+  Vec3 forward() const { return normalize(look_at - position); }
+  Vec3 right() const { return normalize(cross(forward(), up)); }
+  Vec3 true_up() const { return cross(right(), forward()); }
+  double tan_half_fov() const;
+  /// Unit ray direction through the centre of pixel (column, row), row 0 at the top.
+  Vec3 pixel_ray(int column, int row) const;
+};
+
+/// \brief A point light or a directional light (a light at infinity).
+struct Light {
+  enum class Type { point, directional };
+  Type type = Type::point;
+  Vec3 position;   ///< point lights
+  Vec3 direction;  ///< directional lights: unit direction in which the light travels
+
+  /// Unit vector from \p p toward the light.
+  Vec3 direction_to(Vec3 p) const {
+    return type == Type::point ? normalize(position - p) : -direction;
+  }
+};
+
+/// \brief A mesh in world space and where its faces sit in the scene's face numbering.
+struct SceneObject {
+  std::string name;
+  Mesh mesh;
+  std::uint32_t first_face = 0;  ///< global id of the mesh's face 0
+};
+
+/// \brief Every face of every object, triangulated once for the scan converter and Embree.
+struct TriangleList {
+  std::vector<Vec3> positions;                       ///< all objects' vertices, concatenated
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::uint32_t> triangle_face;          ///< global face id per triangle
+};
+
+/// \brief The whole scene. Build it with finalize() after filling camera, lights, objects.
+struct Scene {
+  std::string name;
+  Camera camera;
+  std::vector<Light> lights;
+  std::vector<SceneObject> objects;
+
+  /// Numbers faces globally, triangulates them and computes bounds.
+  void finalize();
+
+  std::uint32_t face_count() const { return std::uint32_t(face_object.size()); }
+  const Plane& face_plane(std::uint32_t face) const;
+  std::uint32_t object_of_face(std::uint32_t face) const { return face_object[face]; }
+  std::uint32_t local_face(std::uint32_t face) const {
+    return face - objects[face_object[face]].first_face;
+  }
+  const Bounds3& bounds() const { return bounds_; }
+  const TriangleList& triangles() const { return triangles_; }
+
+  std::vector<std::uint32_t> face_object;  ///< object index per global face id
+
+ private:
+  Bounds3 bounds_;
+  TriangleList triangles_;
+};
+
+/// Applies the contract's transform p' = T · Rz · Ry · Rx · S · p to every position.
+void apply_transform(std::vector<Vec3>& positions, Vec3 scale, Vec3 rotate_deg, Vec3 translate);
+
+}  // namespace shadowkit

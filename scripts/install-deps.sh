@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package shadowkit needs (run as root on a fresh machine).
+set -euo pipefail
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libembree-dev libtbb-dev libosd-dev
+  nlohmann-json3-dev libcli11-dev libstb-dev libpng-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi

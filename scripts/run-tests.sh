@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# The whole test suite: install, build with AddressSanitizer + UBSan, run CTest.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+"$root/scripts/install-deps.sh"
+build=${BUILD_DIR:-$root/build-asan}
+BUILD_DIR=$build BUILD_TYPE=RelWithDebInfo "$root/scripts/build.sh" -DSHADOWKIT_SANITIZE=ON
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+ctest --test-dir "$build" --output-on-failure -j 2 --timeout 600

@@ -1,0 +1,72 @@
+#include "shadowkit/app/pipeline.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace shadowkit {
+
+double now_ms() {
+  using clock = std::chrono::steady_clock;
+  return std::chrono::duration<double, std::milli>(clock::now().time_since_epoch()).count();
+}
+
+double median(std::vector<double> samples) {
+  if (samples.empty()) return 0;
+  const std::size_t mid = samples.size() / 2;
+  std::nth_element(samples.begin(), samples.begin() + std::ptrdiff_t(mid), samples.end());
+  if (samples.size() % 2) return samples[mid];
+  const double upper = samples[mid];
+  return 0.5 * (upper + *std::max_element(samples.begin(), samples.begin() + std::ptrdiff_t(mid)));
+}
+
+namespace {
+
+// Runs fn warmup + timed times and returns the median of the timed runs.
+template <class Fn>
+double timed_median(const Repetitions& reps, Fn&& fn) {
+  for (int i = 0; i < reps.warmup; ++i) fn();
+  std::vector<double> samples;
+  for (int i = 0; i < std::max(1, reps.timed); ++i) {
+    const double start = now_ms();
+    fn();
+    samples.push_back(now_ms() - start);
+  }
+  return median(samples);
+}
+
+}  // namespace
+
+CameraPass run_camera_pass(const Scene& scene, const Repetitions& reps, const Context& ctx) {
+  CameraPass pass;
+  pass.scan_ms = timed_median(reps, [&] { pass.surfaces = render_visible_surfaces(scene, ctx); });
+  return pass;
+}
+
+std::vector<MethodRun> run_method(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
+                                  const std::string& method_name, const MethodOptions& options,
+                                  const Repetitions& reps, const Context& ctx) {
+  std::unique_ptr<ShadowMethod> method = make_method(method_name, options);
+  const double start = now_ms();
+  method->prepare(scene, ctx);
+  const double prepare_ms = now_ms() - start;
+
+  std::vector<MethodRun> runs;
+  for (std::size_t light = 0; light < scene.lights.size(); ++light) {
+    MethodRun run;
+    run.method = method_name;
+    run.light = light;
+    run.prepare_ms = prepare_ms;
+    run.build_ms = timed_median(reps, [&] { method->build(scene, light, ctx); });
+    run.mask = ShadowMask(surfaces.width, surfaces.height, kMaskBackground);
+    run.shade_ms = timed_median(reps, [&] {
+      std::fill(run.mask.pixels.begin(), run.mask.pixels.end(), kMaskBackground);
+      method->shade(scene, surfaces, run.mask, ctx);
+    });
+    run.memory_bytes = method->memory_bytes();
+    run.counters = method->counters();
+    runs.push_back(std::move(run));
+  }
+  return runs;
+}
+
+}  // namespace shadowkit

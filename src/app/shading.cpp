@@ -1,0 +1,57 @@
+#include "shadowkit/app/shading.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace shadowkit {
+namespace {
+
+constexpr double kAmbient = 0.18;
+
+Vec3 object_colour(std::uint32_t object) {
+  static constexpr std::array<Vec3, 8> palette{{{0.85, 0.82, 0.75},
+                                                {0.90, 0.55, 0.35},
+                                                {0.45, 0.65, 0.90},
+                                                {0.55, 0.80, 0.50},
+                                                {0.85, 0.75, 0.35},
+                                                {0.75, 0.50, 0.80},
+                                                {0.40, 0.80, 0.80},
+                                                {0.90, 0.45, 0.55}}};
+  return palette[object % palette.size()];
+}
+
+std::uint8_t to_byte(double v) {
+  return std::uint8_t(std::lround(255.0 * std::clamp(v, 0.0, 1.0)));
+}
+
+}  // namespace
+
+Image<Rgb8> shade_image(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
+                        const std::vector<const ShadowMask*>& masks) {
+  Image<Rgb8> image(surfaces.width, surfaces.height, Rgb8{24, 26, 32});
+  const Vec3 eye = scene.camera.position;
+  const double diffuse_share = (1.0 - kAmbient) / double(std::max<std::size_t>(1, masks.size()));
+  tbb::parallel_for(0, surfaces.height, [&](int y) {
+    for (int x = 0; x < surfaces.width; ++x) {
+      const std::size_t i = surfaces.index(x, y);
+      if (!surfaces.covered(i)) continue;
+      const Plane& plane = scene.face_plane(surfaces.face[i]);
+      const Vec3 p = surfaces.point[i].to_double();
+      // Two-sided: the normal of the side the camera sees.
+      const Vec3 n = plane.distance(eye) >= 0 ? plane.normal : -plane.normal;
+      double light = kAmbient;
+      for (std::size_t l = 0; l < masks.size(); ++l) {
+        if (masks[l]->pixels[i] != kMaskLit) continue;
+        light += diffuse_share * std::max(0.0, dot(n, scene.lights[l].direction_to(p)));
+      }
+      const Vec3 c = object_colour(surfaces.object[i]) * light;
+      image.pixels[i] = {to_byte(c.x), to_byte(c.y), to_byte(c.z)};
+    }
+  });
+  return image;
+}
+
+}  // namespace shadowkit

@@ -1,0 +1,143 @@
+// The command line end to end: exit statuses, error messages, files written.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "shadowkit/core/image.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("shadowkit_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+    return dir_ / name;
+  }
+  static std::string slurp(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+  Result run(const std::string& args) {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string cmd = std::string(SHADOWKIT_EXE) + " " + args + " >" + out.string() +
+                            " 2>" + err.string();
+    const int raw = std::system(cmd.c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+  }
+  // A tiny valid scene whose objects entry is `objects`.
+  fs::path scene(const std::string& objects,
+                 const std::string& camera = R"("position": [0, 6, 8], "look_at": [0, 0, 0])") {
+    return write("scene.json", "{\"camera\": {" + camera +
+                                   ", \"width\": 80, \"height\": 60},\n\"lights\": [{\"type\": "
+                                   "\"point\", \"position\": [1, 5, 1]}],\n\"objects\": [" +
+                                   objects + "]}\n");
+  }
+  void expect_bad_input(const std::string& args, const std::string& message) {
+    const Result r = run(args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+    EXPECT_THAT(r.err, HasSubstr(message)) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+
+  fs::path dir_;
+};
+
+constexpr const char* kGround = "v -4 0 -4\nv 4 0 -4\nv 4 0 4\nv -4 0 4\nf 1 4 3 2\n";
+
+TEST_F(Cli, RenderWritesOneContractMaskPerLight) {
+  write("ground.obj", kGround);
+  const fs::path s = scene(R"({"mesh": "ground.obj"}, {"generator": "box", "size": [1, 1, 1]})");
+  const Result r = run("render " + s.string() + " --method raytrace --mask " +
+                       (dir_ / "m").string() + " --image " + (dir_ / "img.png").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const shadowkit::Image<std::uint8_t> mask = shadowkit::read_png_gray(dir_ / "m.L0.png");
+  EXPECT_EQ(mask.width, 80);
+  EXPECT_EQ(mask.height, 60);
+  int counts[256] = {};
+  for (auto v : mask.pixels) ++counts[v];
+  EXPECT_EQ(counts[0] + counts[128] + counts[255], 80 * 60);
+  EXPECT_GT(counts[128], 0);
+  EXPECT_GT(counts[255], 0);
+  EXPECT_TRUE(fs::exists(dir_ / "img.png"));
+}
+
+TEST_F(Cli, CompareJsonHasTheContractKeys) {
+  write("ground.obj", kGround);
+  const Result r = run("compare " + scene(R"({"mesh": "ground.obj"})").string() +
+                       " --methods raytrace --json --threads 1");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.is_array());
+  ASSERT_EQ(j.size(), 1u);
+  for (const char* key : {"method", "light", "build_ms", "shade_ms", "memory_bytes",
+                          "mismatch_raw_pct", "mismatch_interior_pct"}) {
+    EXPECT_TRUE(j[0].contains(key)) << key;
+  }
+  EXPECT_EQ(j[0]["mismatch_raw_pct"], 0.0);
+}
+
+TEST_F(Cli, BuiltInSceneNamesStandWhereAFileWould) {
+  const Result r = run("info tetra:2 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["polygons"], 64 + 2);
+}
+
+TEST_F(Cli, BadInputIsOneLineAndExitStatusTwo) {
+  write("ground.obj", kGround);
+  write("bad-line.obj", "v 0 0 0\nv 1 0 0\nv 0 0 one\nf 1 2 3\n");
+  write("nan.obj", "v 0 0 0\nv 1 0 0\nv 0 0 nan\nf 1 2 3\n");
+  write("broken.json", "{\"camera\": {\"position\": [0, 1, 2]\n\"look_at\": [0, 0, 0]}}\n");
+  expect_bad_input("info " + (dir_ / "missing.json").string(), "missing.json");
+  expect_bad_input("info " + (dir_ / "broken.json").string(), "broken.json:2: malformed JSON");
+  expect_bad_input("info " + scene(R"({"mesh": "ground.obj"})",
+                                   R"("position": [0, 6, 8], "look_at": [0, 0, 0], "fov_y_deg": "x")")
+                                 .string(),
+                   "key 'camera.fov_y_deg': expected a number");
+  expect_bad_input("info " + scene(R"({"mesh": "bad-line.obj"})").string(), "bad-line.obj:3");
+  expect_bad_input("info " + scene(R"({"mesh": "nan.obj"})").string(), "nan.obj:3");
+  expect_bad_input("info " + scene(R"({"mesh": "ground.obj"})",
+                                   R"("position": [0, 6, 8], "look_at": [0, 6, 8])")
+                                 .string(),
+                   "key 'camera.look_at': equals camera.position");
+  expect_bad_input("render " + scene(R"({"mesh": "ground.obj"})").string() +
+                       " --method nosuch --mask " + (dir_ / "m").string(),
+                   "method 'nosuch': unknown method");
+  expect_bad_input("compare " + scene(R"({"mesh": "ground.obj"})").string() + " --methods raytrace,x",
+                   "method 'x': unknown method");
+  expect_bad_input("render " + scene(R"({"mesh": "ground.obj"})").string() +
+                       " --method shadowmap --set shadowmap.nosuch=1 --mask " + (dir_ / "m").string(),
+                   "shadowmap.nosuch");
+  expect_bad_input("bench", "SCENE");
+}
+
+TEST_F(Cli, DegenerateFacesAreAWarningNotAnError) {
+  write("degenerate.obj", std::string(kGround) + "v 9 9 9\nf 5 5 5\n");
+  const Result r = run("info " + scene(R"({"mesh": "degenerate.obj"})").string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("warning"));
+  EXPECT_THAT(r.err, HasSubstr("degenerate"));
+}
+
+}  // namespace

@@ -1,0 +1,124 @@
+// The shadowkit command line: parses arguments and calls the library's commands.
+#include <tbb/global_control.h>
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include "shadowkit/app/commands.h"
+#include "shadowkit/core/error.h"
+#include "shadowkit/scene/generators.h"
+
+namespace {
+
+using namespace shadowkit;
+
+constexpr int kBadInput = 2;
+
+struct Shared {
+  int threads = 0;
+  std::vector<std::string> settings;
+};
+
+void add_shared(CLI::App* cmd, CommandOptions& options, Shared& shared) {
+  std::string scenes;
+  for (const std::string& s : builtin_scene_names()) scenes += (scenes.empty() ? "" : ", ") + s;
+  cmd->add_option("SCENE", options.scene, "scene file, or a built-in scene: " + scenes)
+      ->required();
+  cmd->add_option("--threads", shared.threads, "worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--set", shared.settings,
+                  "method setting METHOD.KEY=VALUE, e.g. shadowmap.resolution=4096");
+}
+
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= s.size() && !s.empty()) {
+    const std::size_t comma = s.find(',', start);
+    out.push_back(s.substr(start, comma - start));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"shadowkit: classic hard-shadow algorithms side by side, against an exact "
+               "Embree reference"};
+  app.require_subcommand(1);
+  Shared shared;
+
+  RenderOptions render;
+  auto* render_cmd = app.add_subcommand("render", "render one method's masks and image");
+  add_shared(render_cmd, render, shared);
+  render_cmd->add_option("--method", render.method, "method name")->required();
+  render_cmd->add_option("--mask", render.mask_prefix, "writes PREFIX.L0.png, PREFIX.L1.png, ...")
+      ->required();
+  render_cmd->add_option("--image", render.image, "shaded image (PNG)");
+
+  CompareOptions compare;
+  std::string compare_methods;
+  auto* compare_cmd = app.add_subcommand("compare", "run methods and compare them with raytrace");
+  add_shared(compare_cmd, compare, shared);
+  compare_cmd->add_option("--methods", compare_methods, "comma-separated (default: all)");
+  compare_cmd->add_option("--report", compare.report_dir, "write an HTML report into DIR");
+  compare_cmd->add_flag("--json", compare.json, "print one JSON array");
+
+  BenchOptions bench;
+  std::string bench_methods;
+  auto* bench_cmd = app.add_subcommand("bench", "time methods (median of several runs)");
+  add_shared(bench_cmd, bench, shared);
+  bench_cmd->add_option("--methods", bench_methods, "comma-separated (default: all)");
+  bench_cmd->add_option("--repeats", bench.repeats, "timed runs per stage (default 5)");
+  bench_cmd->add_option("--warmup", bench.warmup, "untimed runs first (default 1)");
+  bench_cmd->add_flag("--json", bench.json, "print one JSON array");
+
+  CommandOptions info;
+  auto* info_cmd = app.add_subcommand("info", "print the scene's statistics");
+  add_shared(info_cmd, info, shared);
+  info_cmd->add_flag("--json", info.json, "print JSON");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "shadowkit: error: %s (run with --help for usage)\n", e.what());
+    return kBadInput;
+  }
+
+  std::optional<tbb::global_control> threads;
+  if (shared.threads > 0) {
+    threads.emplace(tbb::global_control::max_allowed_parallelism, std::size_t(shared.threads));
+  }
+  const Context ctx;
+  try {
+    const auto settings = parse_settings(shared.settings);
+    if (*render_cmd) {
+      render.settings = settings;
+      return run_render(render, ctx);
+    }
+    if (*compare_cmd) {
+      compare.settings = settings;
+      compare.methods = split_list(compare_methods);
+      return run_compare(compare, ctx);
+    }
+    if (*bench_cmd) {
+      bench.settings = settings;
+      bench.methods = split_list(bench_methods);
+      return run_bench(bench, ctx);
+    }
+    info.settings = settings;
+    return run_info(info, ctx);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "shadowkit: error: %s\n", e.what());
+    return kBadInput;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "shadowkit: internal error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,28 @@
+#pragma once
+// RAII ownership of an Embree device and a scene BVH over every triangle of a Scene.
+#include <embree3/rtcore.h>
+
+#include "shadowkit/scene/scene.h"
+
+namespace shadowkit {
+
+/// \brief One Embree device and one committed scene; triangle primID i is the scene's
+/// triangle i, so primID maps to a face through TriangleList::triangle_face.
+class EmbreeScene {
+ public:
+  explicit EmbreeScene(const Scene& scene);
+  ~EmbreeScene();
+  EmbreeScene(const EmbreeScene&) = delete;
+  EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+  RTCScene handle() const { return scene_; }
+  /// Bytes Embree reports for its BVH and buffers.
+  std::size_t memory_bytes() const { return memory_bytes_; }
+
+ private:
+  RTCDevice device_ = nullptr;
+  RTCScene scene_ = nullptr;
+  std::size_t memory_bytes_ = 0;
+};
+
+}  // namespace shadowkit

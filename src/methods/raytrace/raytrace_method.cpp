@@ -1,0 +1,123 @@
+#include "raytrace_method.h"
+
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <limits>
+
+namespace shadowkit {
+namespace {
+
+constexpr int kTile = 16;  // 16x16 pixel tiles, one 16-wide packet per tile row
+
+// About 64 float ulps: float storage of the point and of the triangles each err by less
+// than one ulp, and Embree's own intersection test by a few.
+constexpr double kOffsetUlps = 64.0 * std::numeric_limits<float>::epsilon();
+
+// One packet of shadow rays for up to 16 consecutive pixels of a row.
+class ShadowPacket {
+ public:
+  void clear() {
+    for (int& v : valid_) v = 0;
+    any_ = false;
+  }
+  void set(int k, Vec3 origin, Vec3 dir, float tfar) {
+    rays_.org_x[k] = float(origin.x), rays_.org_y[k] = float(origin.y);
+    rays_.org_z[k] = float(origin.z);
+    rays_.dir_x[k] = float(dir.x), rays_.dir_y[k] = float(dir.y), rays_.dir_z[k] = float(dir.z);
+    rays_.tnear[k] = 0.0f;
+    rays_.tfar[k] = tfar;
+    rays_.time[k] = 0.0f;
+    rays_.mask[k] = 0xFFFFFFFFu;
+    rays_.id[k] = unsigned(k);
+    rays_.flags[k] = 0;
+    valid_[k] = -1;
+    any_ = true;
+  }
+  /// Traces the packet; afterwards blocked(k) tells whether lane k hit anything.
+  bool trace(RTCScene scene, RTCIntersectContext* context) {
+    if (any_) rtcOccluded16(valid_, scene, context, &rays_);
+    return any_;
+  }
+  bool valid(int k) const { return valid_[k] != 0; }
+  bool blocked(int k) const { return rays_.tfar[k] == -std::numeric_limits<float>::infinity(); }
+
+ private:
+  alignas(64) RTCRay16 rays_;
+  alignas(64) int valid_[16];
+  bool any_ = false;
+};
+
+}  // namespace
+
+double shadow_ray_offset(Vec3 p) {
+  return kOffsetUlps * std::max(max_abs_component(p), double(std::numeric_limits<float>::min()));
+}
+
+RaytraceMethod::RaytraceMethod(const MethodOptions& options) { options.expect_only("raytrace", {}); }
+
+void RaytraceMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
+  embree_ = std::make_unique<EmbreeScene>(scene);
+}
+
+void RaytraceMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
+  light_ = scene.lights.at(light);
+}
+
+void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
+                           ShadowMask& mask, const Context& /*ctx*/) {
+  const Vec3 eye = scene.camera.position;
+  const bool point_light = light_.type == Light::Type::point;
+  // A point light sits at t = 1 on an unnormalised ray; stop just short of it.
+  const float tfar = point_light ? 1.0f - 1e-6f : std::numeric_limits<float>::infinity();
+  const int tiles_x = (surfaces.width + kTile - 1) / kTile;
+  const int tiles_y = (surfaces.height + kTile - 1) / kTile;
+  tbb::combinable<std::size_t> ray_count;
+
+  auto shade_row = [&](ShadowPacket& packet, RTCIntersectContext& context, int y, int x0,
+                       int lanes) {
+    packet.clear();
+    for (int k = 0; k < lanes; ++k) {
+      const std::size_t i = surfaces.index(x0 + k, y);
+      if (!surfaces.covered(i)) continue;
+      const Plane& plane = scene.face_plane(surfaces.face[i]);
+      // Contract condition 1: camera and light on the same side of the surface.
+      if (!faces_light(plane, eye, light_)) {
+        mask.pixels[i] = kMaskShadow;
+        continue;
+      }
+      const Vec3 p = surfaces.point[i].to_double();
+      const double side = plane.distance(eye) > 0 ? 1.0 : -1.0;
+      const Vec3 o = p + plane.normal * (side * shadow_ray_offset(p));
+      packet.set(k, o, point_light ? light_.position - o : -light_.direction, tfar);
+    }
+    if (!packet.trace(embree_->handle(), &context)) return;
+    for (int k = 0; k < lanes; ++k) {
+      if (!packet.valid(k)) continue;
+      ++ray_count.local();
+      mask.pixels[surfaces.index(x0 + k, y)] = packet.blocked(k) ? kMaskShadow : kMaskLit;
+    }
+  };
+
+  tbb::parallel_for(0, tiles_x * tiles_y, [&](int tile) {
+    const int x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    ShadowPacket packet;
+    const int lanes = std::min(kTile, surfaces.width - x0);
+    for (int y = y0; y < std::min(y0 + kTile, surfaces.height); ++y) {
+      shade_row(packet, context, y, x0, lanes);
+    }
+  });
+  rays_ = double(ray_count.combine(std::plus<>()));
+}
+
+std::size_t RaytraceMethod::memory_bytes() const {
+  return embree_ ? embree_->memory_bytes() : 0;
+}
+
+MethodCounters RaytraceMethod::counters() const { return {{"shadow_rays", rays_}}; }
+
+}  // namespace shadowkit

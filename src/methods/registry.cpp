@@ -1,0 +1,18 @@
+#include "shadowkit/core/error.h"
+#include "shadowkit/methods/shadow_method.h"
+#include "raytrace/raytrace_method.h"
+#include "shadowmap/shadow_map_method.h"
+
+namespace shadowkit {
+
+std::vector<std::string> method_names() { return {"raytrace", "shadowmap"}; }
+
+std::unique_ptr<ShadowMethod> make_method(std::string_view name, const MethodOptions& options) {
+  if (name == "raytrace") return std::make_unique<RaytraceMethod>(options);
+  if (name == "shadowmap") return std::make_unique<ShadowMapMethod>(options);
+  std::string list;
+  for (const auto& m : method_names()) list += (list.empty() ? "" : ", ") + m;
+  throw InputError("method '" + std::string(name) + "'", "unknown method (available: " + list + ")");
+}
+
+}  // namespace shadowkit

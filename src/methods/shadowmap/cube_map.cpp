@@ -1,0 +1,75 @@
+#include "cube_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowkit::shadowmap {
+namespace {
+
+struct FaceAxes {
+  Vec3 forward, up;
+};
+
+// +X, -X, +Y, -Y, +Z, -Z. Any up vector along another world axis gives axis-aligned right and
+// up vectors (right = forward x up), hence the exact pyramid of each face.
+constexpr std::array<FaceAxes, CubeMap::kFaces> kFaceAxes{{
+    {{1, 0, 0}, {0, 1, 0}},
+    {{-1, 0, 0}, {0, 1, 0}},
+    {{0, 1, 0}, {0, 0, 1}},
+    {{0, -1, 0}, {0, 0, 1}},
+    {{0, 0, 1}, {0, 1, 0}},
+    {{0, 0, -1}, {0, 1, 0}},
+}};
+
+// Near-plane depth for the light's views: tiny against the scene's extent from the light, as
+// for the camera (camera_near_plane): the 1/zv key keeps its relative precision, and only
+// geometry practically touching the light is clipped.
+double light_near_plane(const Scene& scene, Vec3 light) {
+  const Bounds3& b = scene.bounds();
+  if (b.empty()) return 1e-6;
+  const Vec3 far = max(b.hi - light, light - b.lo);
+  return std::max(length(far) * 1e-7, 1e-300);
+}
+
+}  // namespace
+
+int CubeMap::face_of(Vec3 d) {
+  const double ax = std::abs(d.x), ay = std::abs(d.y), az = std::abs(d.z);
+  if (ax >= ay && ax >= az) return d.x >= 0 ? 0 : 1;
+  if (ay >= az) return d.y >= 0 ? 2 : 3;
+  return d.z >= 0 ? 4 : 5;
+}
+
+RasterProjection CubeMap::face_view(int face, Vec3 eye, int resolution, double near) {
+  const FaceAxes& axes = kFaceAxes[face];
+  return RasterProjection::perspective(eye, axes.forward, axes.up, 90.0, resolution, resolution,
+                                       near);
+}
+
+void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution, const Context& ctx) {
+  light_position_ = light_position;
+  const double near = light_near_plane(scene, light_position);
+  for (int f = 0; f < kFaces; ++f) {
+    faces_[f].render(scene, face_view(f, light_position, resolution, near), ctx);
+  }
+}
+
+std::size_t CubeMap::texel_count() const {
+  std::size_t n = 0;
+  for (const DepthMap& m : faces_) n += m.texel_count();
+  return n;
+}
+
+std::size_t CubeMap::covered_texels() const {
+  std::size_t n = 0;
+  for (const DepthMap& m : faces_) n += m.covered_texels();
+  return n;
+}
+
+std::size_t CubeMap::memory_bytes() const {
+  std::size_t n = 0;
+  for (const DepthMap& m : faces_) n += m.memory_bytes();
+  return n;
+}
+
+}  // namespace shadowkit::shadowmap

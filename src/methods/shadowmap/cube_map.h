@@ -1,0 +1,50 @@
+#pragma once
+// A point light's shadow map: six 90° perspective depth maps on the faces of a cube around the
+// light. Williams 1978 renders a single view from the light; a light that radiates in every
+// direction needs views that together see the whole sphere, and six cube faces are the usual
+// (environment-map) way to get that with ordinary perspective projections.
+#include <array>
+#include <cstddef>
+
+#include "depth_map.h"
+#include "shadowkit/core/context.h"
+#include "shadowkit/core/vec.h"
+#include "shadowkit/raster/projection.h"
+#include "shadowkit/scene/scene.h"
+
+namespace shadowkit::shadowmap {
+
+/// \brief Six square depth maps looking along +X, -X, +Y, -Y, +Z, -Z from a point light.
+///
+/// Every face's right and up vectors are world axes, so face f sees exactly the pyramid
+/// |xv| <= zv, |yv| <= zv around its axis, and the six pyramids tile the sphere: a direction
+/// belongs to the face of its dominant axis. A direction on a cube edge or corner belongs to
+/// two or three faces equally; face_of() picks one and its projection still lies on the map
+/// (on its border, clamped to the edge texel).
+class CubeMap {
+ public:
+  static constexpr int kFaces = 6;
+
+  /// The face for direction \p d from the light: the dominant axis and its sign. Ties go to
+  /// x before y before z; the zero vector gets face 0.
+  static int face_of(Vec3 d);
+  /// The view of face \p face for a light at \p eye: a square 90° perspective view.
+  static RasterProjection face_view(int face, Vec3 eye, int resolution, double near);
+
+  /// Renders all six faces of \p scene for a point light at \p light_position.
+  void render(const Scene& scene, Vec3 light_position, int resolution, const Context& ctx);
+
+  const DepthMap& face(int f) const { return faces_[f]; }
+  /// The face map that holds world point \p p.
+  const DepthMap& map_for(Vec3 p) const { return faces_[face_of(p - light_position_)]; }
+
+  std::size_t texel_count() const;
+  std::size_t covered_texels() const;
+  std::size_t memory_bytes() const;
+
+ private:
+  std::array<DepthMap, kFaces> faces_;
+  Vec3 light_position_;
+};
+
+}  // namespace shadowkit::shadowmap

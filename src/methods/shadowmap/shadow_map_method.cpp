@@ -1,0 +1,140 @@
+#include "shadow_map_method.h"
+
+#include <tbb/combinable.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+
+#include "shadowkit/core/error.h"
+
+namespace shadowkit {
+namespace {
+
+constexpr double kDefaultBiasPerDiagonal = 1e-3;
+constexpr int kMinResolution = 16, kMaxResolution = 16384;
+constexpr int kMaxPcf = 31;
+
+[[noreturn]] void bad_option(const std::string& key, const std::string& what) {
+  throw InputError("option 'shadowmap." + key + "'", what);
+}
+
+// An integer option within [lo, hi].
+int integer_option(const MethodOptions& options, const std::string& key, int fallback, int lo,
+                   int hi) {
+  const double value = options.number(key, fallback);
+  if (value != std::floor(value) || value < lo || value > hi) {
+    bad_option(key, "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi) +
+                        ", got " + options.text(key, ""));
+  }
+  return int(value);
+}
+
+// A world axis far from \p forward, as the up hint of a view along it.
+Vec3 up_hint(Vec3 forward) {
+  const double ax = std::abs(forward.x), ay = std::abs(forward.y), az = std::abs(forward.z);
+  if (ay <= ax && ay <= az) return {0, 1, 0};
+  return ax <= az ? Vec3{1, 0, 0} : Vec3{0, 0, 1};
+}
+
+}  // namespace
+
+RasterProjection directional_light_view(const Bounds3& bounds, Vec3 direction, int resolution) {
+  const Vec3 forward = normalize(direction);
+  const Vec3 up0 = up_hint(forward);
+  // The frame orthographic_view() derives from (forward, up0).
+  const Vec3 right = normalize(cross(forward, up0));
+  const Vec3 up = cross(right, forward);
+  const bool empty = bounds.empty();
+  const Vec3 center = empty ? Vec3{} : bounds.center();
+  const double diagonal = empty || bounds.diagonal() == 0 ? 1.0 : bounds.diagonal();
+  double half_w = 0, half_h = 0, behind = 0;
+  for (int corner = 0; corner < 8 && !empty; ++corner) {
+    const Vec3 c{(corner & 1) ? bounds.hi.x : bounds.lo.x, (corner & 2) ? bounds.hi.y : bounds.lo.y,
+                 (corner & 4) ? bounds.hi.z : bounds.lo.z};
+    const Vec3 r = c - center;
+    half_w = std::max(half_w, std::abs(dot(r, right)));
+    half_h = std::max(half_h, std::abs(dot(r, up)));
+    behind = std::max(behind, -dot(r, forward));
+  }
+  // A box seen exactly edge-on projects to a segment; keep the map from collapsing.
+  const double min_half = 1e-6 * diagonal;
+  // The eye sits a little behind the farthest corner toward the light, so every point of the
+  // scene has zv > 0 and is drawn (the orthographic near plane is zv = 0).
+  const double depth_back = behind + 1e-3 * diagonal;
+  return RasterProjection::orthographic_view(center, forward, up0, std::max(half_w, min_half),
+                                             std::max(half_h, min_half), depth_back, resolution,
+                                             resolution);
+}
+
+ShadowMapMethod::ShadowMapMethod(const MethodOptions& options) {
+  options.expect_only("shadowmap", {"resolution", "bias", "slope_bias", "pcf"});
+  resolution_ = integer_option(options, "resolution", 2048, kMinResolution, kMaxResolution);
+  const double bias = options.number("bias", std::nan(""));
+  if (bias < 0) bad_option("bias", "expected a depth bias >= 0 in world units");
+  if (!std::isnan(bias)) bias_option_ = bias;
+  slope_bias_ = options.number("slope_bias", 1.0);
+  if (slope_bias_ < 0) bad_option("slope_bias", "expected a slope bias factor >= 0");
+  pcf_ = integer_option(options, "pcf", 1, 1, kMaxPcf);
+  if (pcf_ % 2 == 0) bad_option("pcf", "expected an odd kernel width (1 = off, 3, 5, ...)");
+}
+
+void ShadowMapMethod::build(const Scene& scene, std::size_t light, const Context& ctx) {
+  light_ = scene.lights.at(light);
+  // Default bias: relative to the scene's size, so that it means the same for any units.
+  bias_ = bias_option_.value_or(kDefaultBiasPerDiagonal * scene.bounds().diagonal());
+  // Only the current light's map is kept.
+  cube_ = {};
+  ortho_ = {};
+  if (light_.type == Light::Type::point) {
+    cube_.render(scene, light_.position, resolution_, ctx);
+  } else {
+    ortho_.render(scene, directional_light_view(scene.bounds(), light_.direction, resolution_),
+                  ctx);
+  }
+}
+
+void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
+                            ShadowMask& mask, const Context& /*ctx*/) {
+  const bool point_light = light_.type == Light::Type::point;
+  SHADOWKIT_CHECK((point_light ? cube_.texel_count() : ortho_.texel_count()) > 0);  // built
+  const Vec3 eye = scene.camera.position;
+  const int needed = pcf_ * pcf_;  // lit when 2 * passed >= pcf^2
+  tbb::combinable<std::size_t> tested;
+  shade_each_pixel(surfaces, mask, [&](std::size_t i) {
+    const Plane& plane = scene.face_plane(surfaces.face[i]);
+    // Contract condition 1: a surface is two-sided, lit only on the side the light is on.
+    if (!faces_light(plane, eye, light_)) return false;
+    ++tested.local();
+    // Williams 1978, second pass: transform the visible point into the light's view.
+    const Vec3 p = surfaces.point[i].to_double();
+    const shadowmap::DepthMap& map = point_light ? cube_.map_for(p) : ortho_;
+    const RasterProjection& view = map.view();
+    const Vec3 v = view.to_view(p);
+    const Vec3 n{dot(plane.normal, view.right), dot(plane.normal, view.up),
+                 dot(plane.normal, view.forward)};
+    // The map sampled each surface at texel centres, so a plane's stored depth differs from
+    // its depth at p by up to its slope times half a texel, and float storage adds rounding:
+    // without a bias surfaces shadow themselves, the self-shadowing problem Williams 1978
+    // describes ("acne").
+    const double bias = bias_ + slope_bias_ * map.texel_size(v.z) * map.depth_slope(n, v);
+    return 2 * map.passing_tests(v, bias, pcf_) >= needed;
+  });
+  depth_tests_ = double(tested.combine(std::plus<>())) * needed;
+}
+
+std::size_t ShadowMapMethod::memory_bytes() const {
+  return cube_.memory_bytes() + ortho_.memory_bytes();
+}
+
+MethodCounters ShadowMapMethod::counters() const {
+  const bool point_light = light_.type == Light::Type::point;
+  return {
+      {"map_texels", double(point_light ? cube_.texel_count() : ortho_.texel_count())},
+      {"covered_texels", double(point_light ? cube_.covered_texels() : ortho_.covered_texels())},
+      {"faces", point_light ? 6.0 : 1.0},
+      {"depth_tests", depth_tests_}};
+}
+
+}  // namespace shadowkit

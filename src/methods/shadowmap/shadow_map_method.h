@@ -1,0 +1,74 @@
+#pragma once
+// shadowmap: Williams 1978 ("Casting curved shadows on curved surfaces") depth-map shadows,
+// the image-space baseline. A cube map for point lights, one orthographic map for
+// directional lights, a constant plus slope-scaled depth bias and optional percentage-closer
+// filtering.
+#include <optional>
+
+#include "cube_map.h"
+#include "depth_map.h"
+#include "shadowkit/methods/shadow_method.h"
+
+namespace shadowkit {
+
+/// \brief Shadow maps: build() renders the scene's depth from the light with the shared
+/// ScanConverter, shade() transforms each visible point into the light's view and compares
+/// its depth with the stored one.
+///
+/// Options (`--set shadowmap.KEY=VALUE`):
+/// - `resolution` (default 2048): texels per side of each cube face (point light) or of the
+///   orthographic map (directional light), 16..16384.
+/// - `bias` (default 1e-3 x the scene's bounding-box diagonal): constant depth bias in world
+///   units, >= 0. It absorbs float rounding of stored depths and visible points and the
+///   second-order part of the sampling error, while detaching contact shadows by only 0.1% of
+///   the scene's size; relative to the diagonal so it means the same in any units.
+/// - `slope_bias` (default 1): scale of the slope term, >= 0. The term is slope_bias x (world
+///   size of a texel at the point's depth) x (the receiver's depth slope: tan of the angle
+///   between its normal and the light direction for a directional light; for a cube face the
+///   slope of the face's depth zv, the same tangent on the face's axis; capped at
+///   shadowmap::kMaxSlope = 10, i.e. 84.3°). To first order the depth of a plane varies by
+///   at most sqrt(2)/2 of this term at slope_bias 1 between a texel's centre, where the map
+///   sampled it, and any point of the texel: 1 covers that with some margin.
+/// - `pcf` (default 1: off): percentage-closer filtering kernel width in texels, odd, 1..31.
+///   The point is lit when at least half of the kernel's depth tests pass (the mask is
+///   binary), every test with the same bias; kernels are clamped at the map's (face's) edge.
+///
+/// A point is lit when it passes condition 1 (faces_light) and its depth from the light is
+/// not greater than the stored depth plus bias. Setting bias and slope_bias to 0 shows
+/// self-shadowing acne; a large bias detaches shadows from their casters (peter-panning);
+/// low resolution gives blocky, aliased shadow edges. These are the method's, kept on purpose.
+class ShadowMapMethod final : public ShadowMethod {
+ public:
+  explicit ShadowMapMethod(const MethodOptions& options);
+  std::string_view name() const override { return "shadowmap"; }
+  void build(const Scene& scene, std::size_t light, const Context& ctx) override;
+  void shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
+             const Context& ctx) override;
+  std::size_t memory_bytes() const override;
+  MethodCounters counters() const override;
+
+  /// The constant bias of the last build(), in world units.
+  double bias() const { return bias_; }
+  /// The map of the last build() for a directional light.
+  const shadowmap::DepthMap& directional_map() const { return ortho_; }
+  /// The cube map of the last build() for a point light.
+  const shadowmap::CubeMap& cube_map() const { return cube_; }
+
+ private:
+  int resolution_ = 2048;
+  std::optional<double> bias_option_;
+  double slope_bias_ = 1.0;
+  int pcf_ = 1;
+
+  Light light_;
+  double bias_ = 0;
+  shadowmap::CubeMap cube_;
+  shadowmap::DepthMap ortho_;
+  double depth_tests_ = 0;
+};
+
+/// The orthographic view along \p direction that covers the 8 corners of \p bounds, with its
+/// eye behind all of them (Williams 1978's view from a light at infinity).
+RasterProjection directional_light_view(const Bounds3& bounds, Vec3 direction, int resolution);
+
+}  // namespace shadowkit

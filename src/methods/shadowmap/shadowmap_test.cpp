@@ -1,0 +1,377 @@
+// Tests of the shadowmap method against analytic shadows. The scenes are built by hand (the
+// "square" scene: a ground quad y = 0 over [-10, 10]^2 and an open 2x2 square at height 1), so
+// that these tests do not depend on the generators.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "cube_map.h"
+#include "shadow_map_method.h"
+#include "shadowkit/core/error.h"
+#include "shadowkit/raster/visible_surface.h"
+#include "shadowkit/scene/mesh.h"
+
+namespace shadowkit {
+namespace {
+
+using shadowmap::CubeMap;
+
+const Context& quiet() {
+  static const Context ctx = [] {
+    Context c;
+    c.warn = [](const std::string&) {};
+    return c;
+  }();
+  return ctx;
+}
+
+void add_object(Scene& scene, const std::string& name, const std::vector<Vec3>& positions,
+                const std::vector<std::vector<std::uint32_t>>& faces) {
+  PolygonSoup soup;
+  soup.positions = positions;
+  for (const auto& f : faces) soup.add_face(f);
+  scene.objects.push_back({name, Mesh::build(soup, name, quiet())});
+}
+
+Camera small_camera(Vec3 position, Vec3 look_at, double fov = 60) {
+  Camera c;
+  c.position = position;
+  c.look_at = look_at;
+  c.fov_y_deg = fov;
+  c.width = 200;
+  c.height = 150;
+  return c;
+}
+
+Light point_light(Vec3 p) {
+  Light l;
+  l.type = Light::Type::point;
+  l.position = p;
+  return l;
+}
+
+Light directional_light(Vec3 d) {
+  Light l;
+  l.type = Light::Type::directional;
+  l.direction = normalize(d);
+  return l;
+}
+
+// Object 0: ground y = 0 over [-10, 10]^2; object 1 (optional): the square y = 1 over [-1, 1]^2.
+Scene square_scene(const Light& light, const Camera& camera, bool with_square = true) {
+  Scene scene;
+  scene.name = "square";
+  scene.camera = camera;
+  scene.lights = {light};
+  add_object(scene, "ground", {{-10, 0, -10}, {10, 0, -10}, {10, 0, 10}, {-10, 0, 10}},
+             {{0, 1, 2, 3}});
+  if (with_square) {
+    add_object(scene, "square", {{-1, 1, -1}, {1, 1, -1}, {1, 1, 1}, {-1, 1, 1}}, {{0, 1, 2, 3}});
+  }
+  scene.finalize();
+  return scene;
+}
+
+struct Rendered {
+  VisibleSurfaceBuffer surfaces;
+  ShadowMask mask;
+};
+
+Rendered render(const Scene& scene, ShadowMapMethod& method) {
+  Rendered r;
+  r.surfaces = render_visible_surfaces(scene, quiet());
+  r.mask = ShadowMask(r.surfaces.width, r.surfaces.height, kMaskBackground);
+  method.prepare(scene, quiet());
+  method.build(scene, 0, quiet());
+  method.shade(scene, r.surfaces, r.mask, quiet());
+  return r;
+}
+
+ShadowMapMethod make(std::map<std::string, std::string> options) {
+  return ShadowMapMethod(MethodOptions(std::move(options)));
+}
+
+// Compares the ground's mask with an analytic square shadow [cx +- h] x [cz +- h]: pixels
+// deeper than `margin` inside must be shadowed, farther than `margin` outside lit.
+struct ShadowCheck {
+  int inside = 0, outside = 0;  // pixels tested on either side
+  int wrong_inside = 0, wrong_outside = 0;
+  int band_errors = 0;  // disagreements with the exact shadow within the margin
+};
+
+ShadowCheck check_ground(const Rendered& r, double cx, double cz, double h, double margin) {
+  ShadowCheck c;
+  for (std::size_t i = 0; i < r.surfaces.point.size(); ++i) {
+    if (!r.surfaces.covered(i) || r.surfaces.object[i] != 0) continue;
+    const Vec3 p = r.surfaces.point[i].to_double();
+    const double depth_in = h - std::max(std::abs(p.x - cx), std::abs(p.z - cz));
+    const bool lit = r.mask.pixels[i] == kMaskLit;
+    if (depth_in > margin) {
+      ++c.inside;
+      c.wrong_inside += lit;
+    } else if (depth_in < -margin) {
+      ++c.outside;
+      c.wrong_outside += !lit;
+    } else {
+      c.band_errors += (depth_in > 0) == lit;
+    }
+  }
+  return c;
+}
+
+int count_mask(const Rendered& r, std::uint32_t object, std::uint8_t value) {
+  int n = 0;
+  for (std::size_t i = 0; i < r.mask.pixels.size(); ++i) {
+    n += r.surfaces.covered(i) && r.surfaces.object[i] == object && r.mask.pixels[i] == value;
+  }
+  return n;
+}
+
+// Low enough that the square hides none of its shadow.
+const Camera kTopCamera = small_camera({0, 2.5, 5}, {0, 0, 0}, 45);
+
+// (1) Point light at (0, 4, 0): the square's shadow is the square scaled by 4/3. A texel of the
+// -Y cube face is 2 * 4 / resolution wide on the ground (view depth 4).
+TEST(ShadowMap, PointLightShadowMatchesAnalyticSquare) {
+  const Scene scene = square_scene(point_light({0, 4, 0}), kTopCamera);
+  int errors_at_16 = 0, errors_at_512 = 0;
+  for (int resolution : {16, 64, 512}) {
+    SCOPED_TRACE(resolution);
+    ShadowMapMethod method = make({{"resolution", std::to_string(resolution)}});
+    const Rendered r = render(scene, method);
+    const double footprint = 2.0 * 4.0 / resolution;
+    const ShadowCheck c = check_ground(r, 0, 0, 4.0 / 3.0, 2 * footprint);
+    EXPECT_GT(c.inside, 100);
+    EXPECT_GT(c.outside, 1000);
+    EXPECT_EQ(c.wrong_inside, 0);
+    EXPECT_EQ(c.wrong_outside, 0);
+    // The square's top faces the light and nothing is above it.
+    EXPECT_GT(count_mask(r, 1, kMaskLit), 100);
+    EXPECT_EQ(count_mask(r, 1, kMaskShadow), 0);
+    if (resolution == 16) errors_at_16 = c.band_errors;
+    if (resolution == 512) errors_at_512 = c.band_errors;
+  }
+  // Aliasing: a coarse map gets the edge visibly wrong, a fine one much less so.
+  EXPECT_GT(errors_at_16, 0);
+  EXPECT_LT(errors_at_512, errors_at_16);
+}
+
+// (2) Directional light: the shadow is the square translated along the light direction down to
+// y = 0. An orthographic texel stretches by 1 / |direction.y| on the ground.
+TEST(ShadowMap, DirectionalLightShadowMatchesAnalyticSquare) {
+  const Vec3 d = normalize(Vec3{0.3, -1, 0.2});
+  const Scene scene = square_scene(directional_light(d), kTopCamera);
+  for (int resolution : {64, 512}) {
+    SCOPED_TRACE(resolution);
+    ShadowMapMethod method = make({{"resolution", std::to_string(resolution)}});
+    const Rendered r = render(scene, method);
+    const double footprint = method.directional_map().texel_size(0) / std::abs(d.y);
+    const ShadowCheck c = check_ground(r, d.x / -d.y, d.z / -d.y, 1.0, 2 * footprint);
+    EXPECT_GT(c.inside, 100);
+    EXPECT_GT(c.outside, 1000);
+    EXPECT_EQ(c.wrong_inside, 0);
+    EXPECT_EQ(c.wrong_outside, 0);
+    EXPECT_EQ(count_mask(r, 1, kMaskShadow), 0);
+  }
+}
+
+// PCF keeps the shadow within the kernel's reach of the exact edge.
+TEST(ShadowMap, PercentageCloserFilteringKeepsShadowShape) {
+  const Scene scene = square_scene(point_light({0, 4, 0}), kTopCamera);
+  for (int pcf : {3, 5}) {
+    SCOPED_TRACE(pcf);
+    ShadowMapMethod method = make({{"resolution", "256"}, {"pcf", std::to_string(pcf)}});
+    const Rendered r = render(scene, method);
+    const double footprint = 2.0 * 4.0 / 256;
+    const ShadowCheck c = check_ground(r, 0, 0, 4.0 / 3.0, (2 + pcf / 2) * footprint);
+    EXPECT_GT(c.inside, 100);
+    EXPECT_EQ(c.wrong_inside, 0);
+    EXPECT_EQ(c.wrong_outside, 0);
+    EXPECT_EQ(count_mask(r, 1, kMaskShadow), 0);
+  }
+}
+
+// (3) Every direction, including cube edges and corners, maps onto its face's raster.
+TEST(ShadowMap, CubeFaceSelectionCoversAllDirections) {
+  EXPECT_EQ(CubeMap::face_of({1, 0, 0}), 0);
+  EXPECT_EQ(CubeMap::face_of({-1, 0, 0}), 1);
+  EXPECT_EQ(CubeMap::face_of({0, 1, 0}), 2);
+  EXPECT_EQ(CubeMap::face_of({0, -1, 0}), 3);
+  EXPECT_EQ(CubeMap::face_of({0, 0, 1}), 4);
+  EXPECT_EQ(CubeMap::face_of({0, 0, -1}), 5);
+  std::vector<Vec3> dirs;
+  for (int x = -1; x <= 1; ++x) {
+    for (int y = -1; y <= 1; ++y) {
+      for (int z = -1; z <= 1; ++z) {
+        if (x || y || z) dirs.push_back({double(x), double(y), double(z)});
+      }
+    }
+  }
+  for (int k = 0; k < 2000; ++k) {  // a deterministic spiral over the sphere
+    const double t = (k + 0.5) / 2000, z = 1 - 2 * t, a = k * 2.399963229728653;
+    const double s = std::sqrt(1 - z * z);
+    dirs.push_back({s * std::cos(a), s * std::sin(a), z});
+  }
+  constexpr int kRes = 64;
+  for (const Vec3& d : dirs) {
+    const int f = CubeMap::face_of(d);
+    const RasterProjection view = CubeMap::face_view(f, {0, 0, 0}, kRes, 1e-3);
+    const Vec3 v = view.to_view(d);
+    ASSERT_GT(v.z, 0) << d.x << " " << d.y << " " << d.z;
+    EXPECT_LE(std::abs(v.x), v.z * (1 + 1e-12));
+    EXPECT_LE(std::abs(v.y), v.z * (1 + 1e-12));
+    EXPECT_GE(view.pixel_x(v), -1e-9);
+    EXPECT_LE(view.pixel_x(v), kRes + 1e-9);
+    EXPECT_GE(view.pixel_y(v), -1e-9);
+    EXPECT_LE(view.pixel_y(v), kRes + 1e-9);
+  }
+}
+
+// A closed box [-5, 5]^3 around a point light at its centre: the cube faces' edges and corners
+// fall exactly on the box's edges and corners. Every such point must be lit, and the corner
+// behind a small occluder on the (1, 1, 1) diagonal must be shadowed.
+Scene box_scene(bool with_occluder) {
+  Scene scene;
+  scene.camera = small_camera({0.5, 0.3, 0.2}, {1, 0, 0});
+  scene.lights = {point_light({0, 0, 0})};
+  std::vector<Vec3> v;
+  for (int k = 0; k < 8; ++k)
+    v.push_back({k & 1 ? 5.0 : -5.0, k & 2 ? 5.0 : -5.0, k & 4 ? 5.0 : -5.0});
+  add_object(scene, "box", v,
+             {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}});
+  if (with_occluder) {
+    const Vec3 c{1, 1, 1}, a = normalize(Vec3{1, -1, 0}) * 0.3, b = normalize(Vec3{1, 1, -2}) * 0.3;
+    add_object(scene, "occluder", {c - a - b, c + a - b, c + a + b, c - a + b}, {{0, 1, 2, 3}});
+  }
+  scene.finalize();
+  return scene;
+}
+
+// Shades the given points as if the camera saw them, each on a box face whose plane holds it.
+ShadowMask shade_points(const Scene& scene, ShadowMapMethod& method, const std::vector<Vec3>& pts) {
+  VisibleSurfaceBuffer s;
+  s.width = int(pts.size());
+  s.height = 1;
+  for (const Vec3& p : pts) {
+    std::uint32_t face = kNoFace;
+    for (std::uint32_t f = 0; f < scene.face_count() && face == kNoFace; ++f) {
+      if (scene.object_of_face(f) == 0 && std::abs(scene.face_plane(f).distance(p)) < 1e-9)
+        face = f;
+    }
+    EXPECT_NE(face, kNoFace);
+    s.depth.push_back(float(length(p - scene.camera.position)));
+    s.point.push_back(Vec3f(p));
+    s.face.push_back(face);
+    s.object.push_back(0);
+  }
+  ShadowMask mask(s.width, 1, kMaskBackground);
+  method.build(scene, 0, quiet());
+  method.shade(scene, s, mask, quiet());
+  return mask;
+}
+
+TEST(ShadowMap, CubeMapEdgesAndCornersLookUpCorrectly) {
+  std::vector<Vec3> pts;
+  for (int x = -1; x <= 1; ++x) {
+    for (int y = -1; y <= 1; ++y) {
+      for (int z = -1; z <= 1; ++z) {
+        if (x || y || z) pts.push_back(Vec3{double(x), double(y), double(z)} * 5.0);
+      }
+    }
+  }
+  for (int resolution : {16, 64}) {
+    SCOPED_TRACE(resolution);
+    ShadowMapMethod method = make({{"resolution", std::to_string(resolution)}});
+    const ShadowMask open = shade_points(box_scene(false), method, pts);
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      EXPECT_EQ(open.pixels[k], kMaskLit) << pts[k].x << " " << pts[k].y << " " << pts[k].z;
+    }
+    const ShadowMask occluded = shade_points(box_scene(true), method, pts);
+    for (std::size_t k = 0; k < pts.size(); ++k) {
+      const bool behind = pts[k] == Vec3{5, 5, 5};
+      EXPECT_EQ(occluded.pixels[k], behind ? kMaskShadow : kMaskLit)
+          << pts[k].x << " " << pts[k].y << " " << pts[k].z;
+    }
+  }
+}
+
+// (4) A lit ground at grazing incidence: without any bias about half of it shadows itself
+// (acne); the default bias removes all of it.
+TEST(ShadowMap, ZeroBiasShowsAcneDefaultBiasDoesNot) {
+  const Camera camera = small_camera({0, 6, 12}, {0, 0, 0});
+  for (const Light& light : {directional_light({1, -0.2, 0.3}), point_light({0, 3, 0})}) {
+    SCOPED_TRACE(light.type == Light::Type::point ? "point" : "directional");
+    const Scene scene = square_scene(light, camera, /*with_square=*/false);
+    ShadowMapMethod no_bias = make({{"resolution", "512"}, {"bias", "0"}, {"slope_bias", "0"}});
+    const Rendered acne = render(scene, no_bias);
+    const int ground = int(acne.surfaces.covered_count());
+    EXPECT_GT(ground, 10000);
+    EXPECT_GT(count_mask(acne, 0, kMaskShadow), ground / 20);
+
+    ShadowMapMethod defaults = make({{"resolution", "512"}});
+    const Rendered clean = render(scene, defaults);
+    EXPECT_EQ(count_mask(clean, 0, kMaskShadow), 0);
+    EXPECT_DOUBLE_EQ(defaults.bias(), 1e-3 * scene.bounds().diagonal());
+  }
+}
+
+// A bias larger than the gap between caster and receiver lifts the shadow off: peter-panning.
+TEST(ShadowMap, LargeBiasDetachesShadow) {
+  const Scene scene = square_scene(point_light({0, 4, 0}), kTopCamera);
+  ShadowMapMethod method = make({{"resolution", "256"}, {"bias", "1.5"}});
+  const Rendered r = render(scene, method);
+  EXPECT_EQ(count_mask(r, 0, kMaskShadow), 0);
+  EXPECT_GT(count_mask(r, 0, kMaskLit), 1000);
+}
+
+// (5) Options.
+TEST(ShadowMap, RejectsBadOptions) {
+  EXPECT_THROW(make({{"size", "512"}}), InputError);
+  EXPECT_THROW(make({{"resolution", "0"}}), InputError);
+  EXPECT_THROW(make({{"resolution", "15"}}), InputError);
+  EXPECT_THROW(make({{"resolution", "16385"}}), InputError);
+  EXPECT_THROW(make({{"resolution", "100.5"}}), InputError);
+  EXPECT_THROW(make({{"resolution", "big"}}), InputError);
+  EXPECT_THROW(make({{"bias", "-1"}}), InputError);
+  EXPECT_THROW(make({{"slope_bias", "-1"}}), InputError);
+  EXPECT_THROW(make({{"pcf", "2"}}), InputError);
+  EXPECT_THROW(make({{"pcf", "0"}}), InputError);
+  EXPECT_NO_THROW(make({{"resolution", "16"}, {"bias", "0"}, {"slope_bias", "2"}, {"pcf", "3"}}));
+}
+
+// (6) Condition 1: the open square seen from below, with the light above, is in shadow.
+TEST(ShadowMap, UndersideOfOpenSquareIsInShadow) {
+  const Scene scene = square_scene(point_light({0, 4, 0}), small_camera({0, 0.5, 2.5}, {0, 1, 0}));
+  ShadowMapMethod method = make({{"resolution", "64"}});
+  const Rendered r = render(scene, method);
+  EXPECT_GT(count_mask(r, 1, kMaskShadow), 100);
+  EXPECT_EQ(count_mask(r, 1, kMaskLit), 0);
+}
+
+TEST(ShadowMap, MemoryAndCounters) {
+  const Scene point = square_scene(point_light({0, 4, 0}), kTopCamera);
+  ShadowMapMethod method = make({{"resolution", "32"}});
+  render(point, method);
+  EXPECT_EQ(method.memory_bytes(), 6u * 32 * 32 * sizeof(float));
+  std::map<std::string, double> c;
+  for (const auto& [k, v] : method.counters()) c[k] = v;
+  EXPECT_EQ(c["faces"], 6);
+  EXPECT_EQ(c["map_texels"], 6 * 32 * 32);
+  EXPECT_GT(c["covered_texels"], 0);
+  EXPECT_GT(c["depth_tests"], 0);
+
+  const Scene directional = square_scene(directional_light({0, -1, 0.1}), kTopCamera);
+  render(directional, method);
+  EXPECT_EQ(method.memory_bytes(), 32u * 32 * sizeof(float));
+  c.clear();
+  for (const auto& [k, v] : method.counters()) c[k] = v;
+  EXPECT_EQ(c["faces"], 1);
+  EXPECT_EQ(c["map_texels"], 32 * 32);
+}
+
+}  // namespace
+}  // namespace shadowkit

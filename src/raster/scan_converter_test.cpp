@@ -1,0 +1,135 @@
+#include "shadowkit/raster/scan_converter.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <random>
+
+#include "../testing/test_scenes.h"
+#include "shadowkit/core/image.h"
+#include "triangle_setup.h"
+
+namespace shadowkit {
+namespace {
+
+// How many triangles own each pixel centre (the fill rule, independent of depth).
+Image<int> coverage(const Scene& scene, const RasterProjection& view) {
+  Image<int> count(view.width, view.height, 0);
+  for (const raster::ScreenTriangle& t : raster::setup_triangles(scene, view)) {
+    for (int y = t.min_y; y <= t.max_y; ++y) {
+      int x0 = t.min_x, x1 = t.max_x;
+      if (!raster::row_span(t, y, x0, x1)) continue;
+      for (int x = x0; x <= x1; ++x) ++count.at(x, y);
+    }
+  }
+  return count;
+}
+
+// A z = 0 sheet of n x n quads with jittered inner vertices, split into triangles along
+// alternating diagonals: many shared edges in every direction.
+PolygonSoup jittered_sheet(int n, double half, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> jitter(-0.35, 0.35);
+  PolygonSoup s;
+  const double step = 2 * half / n;
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      const bool inner = i > 0 && j > 0 && i < n && j < n;
+      s.positions.push_back({-half + step * (i + (inner ? jitter(rng) : 0)),
+                             -half + step * (j + (inner ? jitter(rng) : 0)), 0});
+    }
+  }
+  auto v = [n](int i, int j) { return std::uint32_t(j * (n + 1) + i); };
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      if ((i + j) % 2) {
+        s.add_face({v(i, j), v(i + 1, j), v(i + 1, j + 1)});
+        s.add_face({v(i, j), v(i + 1, j + 1), v(i, j + 1)});
+      } else {
+        s.add_face({v(i, j), v(i + 1, j), v(i, j + 1)});
+        s.add_face({v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)});
+      }
+    }
+  }
+  return s;
+}
+
+TEST(ScanConverter, SharedEdgesCoverEveryPixelExactlyOnce) {
+  for (std::uint32_t seed : {1u, 2u, 3u}) {
+    // The sheet is larger than the view: every pixel must be covered once, none twice.
+    const Scene scene = testing::make_scene(testing::camera({0.1, -0.2, 5}, {0, 0, 0}, 160, 120),
+                                            {}, {jittered_sheet(23, 6, seed)});
+    const RasterProjection view = RasterProjection::from_camera(scene.camera, 1e-3);
+    const Image<int> count = coverage(scene, view);
+    int gaps = 0, doubles = 0;
+    for (int c : count.pixels) gaps += c == 0, doubles += c > 1;
+    EXPECT_EQ(gaps, 0) << "seed " << seed;
+    EXPECT_EQ(doubles, 0) << "seed " << seed;
+  }
+}
+
+TEST(ScanConverter, EdgesThroughPixelCentresAreOwnedOnce) {
+  // An orthographic 8x8 view of [0,8]^2: vertices at pixel centres and corners, a fan of
+  // triangles around a vertex exactly on a pixel centre, axis-aligned and diagonal edges
+  // through pixel centres.
+  PolygonSoup s;
+  s.positions = {{0, 0, 0}, {8, 0, 0}, {8, 8, 0}, {0, 8, 0}, {3.5, 4.5, 0}, {3.5, 0, 0},
+                 {8, 4.5, 0}, {3.5, 8, 0}, {0, 4.5, 0}};
+  const std::uint32_t c = 4;
+  s.add_face({0, 5, c});
+  s.add_face({5, 1, c});
+  s.add_face({1, 6, c});
+  s.add_face({6, 2, c});
+  s.add_face({2, 7, c});
+  s.add_face({7, 3, c});
+  s.add_face({3, 8, c});
+  s.add_face({8, 0, c});
+  const Scene scene = testing::make_scene(testing::camera({4, 4, 5}, {4, 4, 0}, 8, 8), {}, {s});
+  const RasterProjection view =
+      RasterProjection::orthographic_view({4, 4, 0}, {0, 0, -1}, {0, 1, 0}, 4, 4, 5, 8, 8);
+  const Image<int> count = coverage(scene, view);
+  for (int y = 0; y < 8; ++y) {
+    for (int x = 0; x < 8; ++x) EXPECT_EQ(count.at(x, y), 1) << x << "," << y;
+  }
+}
+
+TEST(ScanConverter, NearPlaneClippingLeavesNoCracks) {
+  // A ground sheet running far behind the camera: every triangle crossing the near plane
+  // is clipped, and the clipped pieces must still tile the image below the horizon.
+  PolygonSoup sheet = jittered_sheet(31, 50, 7);
+  for (Vec3& p : sheet.positions) p = {p.x, 0, p.y};
+  const Scene scene = testing::make_scene(testing::camera({0.3, 1, 0}, {0.3, 0.2, -5}, 120, 90, 100),
+                                          {}, {sheet});
+  const RasterProjection view = RasterProjection::from_camera(scene.camera, 0.05);
+  const Image<int> count = coverage(scene, view);
+  int doubles = 0, gaps_below_horizon = 0;
+  for (int y = 0; y < view.height; ++y) {
+    for (int x = 0; x < view.width; ++x) {
+      doubles += count.at(x, y) > 1;
+      // Rows well below the horizon see the sheet everywhere.
+      if (y > 3 * view.height / 4) gaps_below_horizon += count.at(x, y) == 0;
+    }
+  }
+  EXPECT_EQ(doubles, 0);
+  EXPECT_EQ(gaps_below_horizon, 0);
+}
+
+TEST(ScanConverter, NearestFaceWinsWithoutBackFaceCulling) {
+  // Two squares facing away from each other; the nearer one hides the farther one from
+  // both sides.
+  const Scene scene = testing::make_scene(
+      testing::camera({0, 5, 0.01}, {0, 0, 0}, 32, 32, 30), {},
+      {testing::horizontal_quad(-1, 1, -1, 1, 0), testing::horizontal_quad(-1, 1, -1, 1, 1)});
+  const ScanConverter sc(scene);
+  const DepthFaceBuffer top = sc.rasterize(RasterProjection::from_camera(scene.camera, 1e-3), {});
+  EXPECT_EQ(top.face[16 * 32 + 16], 1u);
+  Scene below = scene;
+  below.camera = testing::camera({0, -5, 0.01}, {0, 0, 0}, 32, 32, 30);
+  const DepthFaceBuffer bottom =
+      ScanConverter(below).rasterize(RasterProjection::from_camera(below.camera, 1e-3), {});
+  EXPECT_EQ(bottom.face[16 * 32 + 16], 0u);
+  EXPECT_NEAR(1.0 / bottom.depth_key[16 * 32 + 16], 5.0, 1e-3);  // view depth, off-axis pixel
+}
+
+}  // namespace
+}  // namespace shadowkit

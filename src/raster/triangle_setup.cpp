@@ -1,0 +1,225 @@
+#include "triangle_setup.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace shadowkit::raster {
+namespace {
+
+constexpr int kClipPlanes = 5;
+
+// a x + b y + c z + e >= 0 in view space keeps a point.
+struct ClipPlane {
+  double a, b, c, e;
+  double eval(Vec3 v) const { return a * v.x + b * v.y + c * v.z + e; }
+};
+
+std::array<ClipPlane, kClipPlanes> clip_planes(const RasterProjection& p) {
+  const double g = kGuardBand, w = p.width, h = p.height;
+  if (p.orthographic) {
+    return {{{0, 0, 1, -p.near},
+             {p.scale_x, 0, 0, p.offset_x + g},
+             {-p.scale_x, 0, 0, w + g - p.offset_x},
+             {0, -p.scale_y, 0, p.offset_y + g},
+             {0, p.scale_y, 0, h + g - p.offset_y}}};
+  }
+  return {{{0, 0, 1, -p.near},
+           {p.scale_x, 0, p.offset_x + g, 0},
+           {-p.scale_x, 0, w + g - p.offset_x, 0},
+           {0, -p.scale_y, p.offset_y + g, 0},
+           {0, p.scale_y, h + g - p.offset_y, 0}}};
+}
+
+struct DepthPlane {
+  double a, b, c;
+  bool valid;
+};
+
+// The depth key of a face is linear in screen space; taking it from the face's exact plane
+// makes every triangle of a polygon agree (RasterProjection::depth_key).
+DepthPlane depth_plane(const Plane& plane, const RasterProjection& p) {
+  const Vec3 n{dot(plane.normal, p.right), dot(plane.normal, p.up), dot(plane.normal, p.forward)};
+  const double dv = plane.distance(p.eye);
+  DepthPlane k{};
+  if (p.orthographic) {
+    if (n.z == 0) return k;  // edge-on: covers no area
+    k.a = n.x / (p.scale_x * n.z);
+    k.b = -n.y / (p.scale_y * n.z);
+    k.c = (-n.x * p.offset_x / p.scale_x + n.y * p.offset_y / p.scale_y + dv) / n.z;
+  } else {
+    if (dv == 0) return k;  // the plane passes through the eye: edge-on
+    k.a = -n.x / (p.scale_x * dv);
+    k.b = n.y / (p.scale_y * dv);
+    k.c = (n.x * p.offset_x / p.scale_x - n.y * p.offset_y / p.scale_y - n.z) / dv;
+  }
+  // Pixel (px, py) is sampled at its centre (px + 0.5, py + 0.5).
+  k.c += 0.5 * (k.a + k.b);
+  k.valid = true;
+  return k;
+}
+
+struct FixedPoint {
+  std::int64_t x, y;
+};
+
+FixedPoint to_fixed(const RasterProjection& p, Vec3 v) {
+  return {std::llround(p.pixel_x(v) * double(kSubpixel)),
+          std::llround(p.pixel_y(v) * double(kSubpixel))};
+}
+
+// Where edge (p, q) crosses a clip plane. The endpoints are taken in a canonical order so
+// that two triangles sharing the edge get bit-identical points: no cracks after clipping.
+Vec3 crossing(Vec3 p, double dp, Vec3 q, double dq) {
+  const bool swap = std::tie(q.x, q.y, q.z) < std::tie(p.x, p.y, p.z);
+  if (swap) std::swap(p, q), std::swap(dp, dq);
+  return p + (q - p) * (dp / (dp - dq));
+}
+
+using Polygon = std::vector<Vec3>;
+
+Polygon clip(Polygon poly, const std::array<ClipPlane, kClipPlanes>& planes, unsigned outside) {
+  Polygon next;
+  for (int i = 0; i < kClipPlanes && poly.size() >= 3; ++i) {
+    if (!(outside & (1u << i))) continue;
+    next.clear();
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+      const Vec3 a = poly[k], b = poly[(k + 1) % poly.size()];
+      const double da = planes[i].eval(a), db = planes[i].eval(b);
+      if (da >= 0) next.push_back(a);
+      if ((da >= 0) != (db >= 0)) next.push_back(crossing(a, da, b, db));
+    }
+    poly.swap(next);
+  }
+  return poly;
+}
+
+class TriangleBuilder {
+ public:
+  TriangleBuilder(const RasterProjection& view, std::vector<ScreenTriangle>& out)
+      : view_(view), out_(out) {}
+
+  void emit(FixedPoint v0, FixedPoint v1, FixedPoint v2, const DepthPlane& k,
+            std::uint32_t face) {
+    std::int64_t area = (v1.x - v0.x) * (v2.y - v0.y) - (v1.y - v0.y) * (v2.x - v0.x);
+    if (area == 0) return;
+    if (area < 0) std::swap(v1, v2);
+    ScreenTriangle t;
+    const FixedPoint v[3] = {v0, v1, v2};
+    for (int i = 0; i < 3; ++i) {
+      t.x[i] = v[i].x;
+      t.y[i] = v[i].y;
+      const FixedPoint d{v[(i + 1) % 3].x - v[i].x, v[(i + 1) % 3].y - v[i].y};
+      // Antisymmetric ownership: of two triangles on either side of an edge, exactly one
+      // owns the pixel centres lying on it.
+      t.bias[i] = (d.y < 0 || (d.y == 0 && d.x > 0)) ? 0 : 1;
+    }
+    const auto lo = [](std::int64_t a) { return int((a - kSubpixel / 2 + kSubpixel - 1) >> kSubpixelBits); };
+    const auto hi = [](std::int64_t a) { return int((a - kSubpixel / 2) >> kSubpixelBits); };
+    t.min_x = std::max(0, lo(std::min({v0.x, v1.x, v2.x})));
+    t.min_y = std::max(0, lo(std::min({v0.y, v1.y, v2.y})));
+    t.max_x = std::min(view_.width - 1, hi(std::max({v0.x, v1.x, v2.x})));
+    t.max_y = std::min(view_.height - 1, hi(std::max({v0.y, v1.y, v2.y})));
+    if (t.min_x > t.max_x || t.min_y > t.max_y) return;
+    t.key_a = k.a;
+    t.key_b = k.b;
+    t.key_c = k.c;
+    t.face = face;
+    out_.push_back(t);
+  }
+
+ private:
+  const RasterProjection& view_;
+  std::vector<ScreenTriangle>& out_;
+};
+
+std::int64_t floor_div(std::int64_t a, std::int64_t b) {  // b > 0
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+
+}  // namespace
+
+// The pixel columns of row `py` whose centres satisfy all three edge functions.
+bool row_span(const ScreenTriangle& t, int py, int& x_lo, int& x_hi) {
+  const std::int64_t cy = std::int64_t(py) * kSubpixel + kSubpixel / 2;
+  std::int64_t lo = x_lo, hi = x_hi;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    const std::int64_t dx = t.x[j] - t.x[i], dy = t.y[j] - t.y[i];
+    // E(px) = dx (cy - y_i) - dy (256 px + 128 - x_i) - bias = c + a px, needed >= 0.
+    const std::int64_t a = -dy * kSubpixel;
+    const std::int64_t c = dx * (cy - t.y[i]) - dy * (kSubpixel / 2 - t.x[i]) - t.bias[i];
+    if (a > 0) {
+      lo = std::max(lo, floor_div(-c + a - 1, a));
+    } else if (a < 0) {
+      hi = std::min(hi, floor_div(c, -a));
+    } else if (c < 0) {
+      return false;
+    }
+  }
+  x_lo = int(lo);
+  x_hi = int(hi);
+  return lo <= hi;
+}
+
+std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const RasterProjection& view) {
+  const TriangleList& list = scene.triangles();
+  const auto planes = clip_planes(view);
+
+  // Per vertex, once: view-space position, outcode and (if inside) fixed-point position,
+  // so that every triangle sharing a vertex snaps it identically.
+  const std::size_t nv = list.positions.size();
+  std::vector<Vec3> view_pos(nv);
+  std::vector<unsigned> outcode(nv);
+  std::vector<FixedPoint> fixed(nv);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 4096), [&](const auto& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      view_pos[i] = view.to_view(list.positions[i]);
+      unsigned code = 0;
+      for (int k = 0; k < kClipPlanes; ++k) code |= (planes[k].eval(view_pos[i]) < 0) << k;
+      outcode[i] = code;
+      if (code == 0) fixed[i] = to_fixed(view, view_pos[i]);
+    }
+  });
+
+  const std::size_t nt = list.triangles.size();
+  constexpr std::size_t kChunk = 2048;
+  std::vector<std::vector<ScreenTriangle>> chunks((nt + kChunk - 1) / kChunk);
+  tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
+    TriangleBuilder builder(view, chunks[c]);
+    Polygon poly;
+    for (std::size_t t = c * kChunk; t < std::min(nt, (c + 1) * kChunk); ++t) {
+      const auto& tri = list.triangles[t];
+      const unsigned all_out = outcode[tri[0]] & outcode[tri[1]] & outcode[tri[2]];
+      const unsigned any_out = outcode[tri[0]] | outcode[tri[1]] | outcode[tri[2]];
+      if (all_out) continue;
+      const std::uint32_t face = list.triangle_face[t];
+      const DepthPlane k = depth_plane(scene.face_plane(face), view);
+      if (!k.valid) continue;
+      if (!any_out) {
+        builder.emit(fixed[tri[0]], fixed[tri[1]], fixed[tri[2]], k, face);
+        continue;
+      }
+      poly = clip({view_pos[tri[0]], view_pos[tri[1]], view_pos[tri[2]]}, planes, any_out);
+      if (poly.size() < 3) continue;
+      const FixedPoint f0 = to_fixed(view, poly[0]);
+      FixedPoint prev = to_fixed(view, poly[1]);
+      for (std::size_t i = 2; i < poly.size(); ++i) {
+        const FixedPoint cur = to_fixed(view, poly[i]);
+        builder.emit(f0, prev, cur, k, face);
+        prev = cur;
+      }
+    }
+  });
+
+  std::vector<ScreenTriangle> all;
+  std::size_t total = 0;
+  for (const auto& c : chunks) total += c.size();
+  all.reserve(total);
+  for (const auto& c : chunks) all.insert(all.end(), c.begin(), c.end());
+  return all;
+}
+
+}  // namespace shadowkit::raster

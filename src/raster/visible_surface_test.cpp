@@ -1,0 +1,51 @@
+#include "shadowkit/raster/visible_surface.h"
+
+#include <gtest/gtest.h>
+
+#include "../testing/test_scenes.h"
+
+namespace shadowkit {
+namespace {
+
+TEST(VisibleSurface, PointsLieOnThePixelRayAndTheFacePlane) {
+  const Scene scene = testing::make_scene(testing::camera({0.3, 3, 4}, {0, 0, 0}, 96, 64), {},
+                                          {testing::horizontal_quad(-20, 20, -20, 20, 0),
+                                           testing::box({-0.5, 0, -0.5}, {0.5, 1, 0.5})});
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  ASSERT_EQ(vsb.width, 96);
+  int checked = 0;
+  for (int y = 0; y < vsb.height; ++y) {
+    for (int x = 0; x < vsb.width; ++x) {
+      const std::size_t i = vsb.index(x, y);
+      if (!vsb.covered(i)) continue;
+      const Vec3 p = vsb.point[i].to_double();
+      const Vec3 ray = scene.camera.pixel_ray(x, y);
+      const Vec3 along = scene.camera.position + ray * double(vsb.depth[i]);
+      EXPECT_LT(length(p - along), 1e-5);
+      EXPECT_LT(std::abs(scene.face_plane(vsb.face[i]).distance(p)), 1e-5);
+      EXPECT_EQ(vsb.object[i], scene.object_of_face(vsb.face[i]));
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 96 * 64 / 2);
+  // The centre pixel sees the box's top (y = 1) or its front.
+  EXPECT_EQ(vsb.object[vsb.index(48, 32)], 1u);
+}
+
+TEST(VisibleSurface, GroundDepthMatchesTheAnalyticDistance) {
+  const Scene scene = testing::make_scene(testing::camera({0, 2, 0}, {0, 1, -4}, 50, 50, 60), {},
+                                          {testing::horizontal_quad(-50, 50, -50, 50, 0)});
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  for (int y = 30; y < 50; y += 7) {
+    for (int x = 0; x < 50; x += 9) {
+      const Vec3 ray = scene.camera.pixel_ray(x, y);
+      const double t = -2.0 / ray.y;  // ray from height 2 down to y = 0
+      EXPECT_NEAR(vsb.depth[vsb.index(x, y)], t, 1e-5 * t);
+    }
+  }
+  // Above the horizon there is nothing.
+  EXPECT_FALSE(vsb.covered(vsb.index(25, 0)));
+}
+
+}  // namespace
+}  // namespace shadowkit

@@ -1,0 +1,76 @@
+#include "json_cursor.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadowkit {
+namespace {
+
+std::string type_name(const nlohmann::json& v) { return v.type_name(); }
+
+}  // namespace
+
+JsonCursor JsonCursor::operator[](const std::string& key) const {
+  const std::string child = path_.empty() ? key : path_ + "." + key;
+  if (!value_.is_object()) fail("expected an object, got " + type_name(value_));
+  if (!value_.contains(key)) throw InputError(file_ + ": key '" + child + "'", "is missing");
+  return {value_.at(key), file_, child};
+}
+
+JsonCursor JsonCursor::operator[](std::size_t index) const {
+  return {value_.at(index), file_, path_ + "[" + std::to_string(index) + "]"};
+}
+
+std::size_t JsonCursor::array_size() const {
+  if (!value_.is_array()) fail("expected an array, got " + type_name(value_));
+  return value_.size();
+}
+
+std::vector<std::string> JsonCursor::unknown_keys(const std::vector<std::string>& known) const {
+  std::vector<std::string> unknown;
+  if (!value_.is_object()) return unknown;
+  for (const auto& item : value_.items()) {
+    if (std::find(known.begin(), known.end(), item.key()) == known.end()) {
+      unknown.push_back(path_.empty() ? item.key() : path_ + "." + item.key());
+    }
+  }
+  return unknown;
+}
+
+double JsonCursor::number() const {
+  if (!value_.is_number()) fail("expected a number, got " + type_name(value_));
+  const double x = value_.get<double>();
+  if (!std::isfinite(x)) fail("expected a finite number");
+  return x;
+}
+
+int JsonCursor::integer(int lo, int hi) const {
+  const double x = number();
+  if (x != std::floor(x) || x < lo || x > hi) {
+    fail("expected a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
+         ", got " + value_.dump());
+  }
+  return int(x);
+}
+
+std::string JsonCursor::string() const {
+  if (!value_.is_string()) fail("expected a string, got " + type_name(value_));
+  return value_.get<std::string>();
+}
+
+Vec3 JsonCursor::vec3() const {
+  if (!value_.is_array() || value_.size() != 3) {
+    fail("expected an array of three numbers, got " + value_.dump());
+  }
+  return {(*this)[0].number(), (*this)[1].number(), (*this)[2].number()};
+}
+
+Vec3 JsonCursor::scale3() const {
+  if (value_.is_number()) {
+    const double s = number();
+    return {s, s, s};
+  }
+  return vec3();
+}
+
+}  // namespace shadowkit

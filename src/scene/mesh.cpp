@@ -1,0 +1,227 @@
+#include "shadowkit/scene/mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <string>
+#include <unordered_map>
+
+#include "shadowkit/core/error.h"
+#include "shadowkit/scene/triangulate.h"
+
+namespace shadowkit {
+
+void PolygonSoup::add_face(std::initializer_list<std::uint32_t> face) {
+  indices.insert(indices.end(), face.begin(), face.end());
+  face_start.push_back(std::uint32_t(indices.size()));
+}
+
+void PolygonSoup::add_face(const std::vector<std::uint32_t>& face) {
+  indices.insert(indices.end(), face.begin(), face.end());
+  face_start.push_back(std::uint32_t(indices.size()));
+}
+
+void PolygonSoup::append(const PolygonSoup& other) {
+  const auto base = std::uint32_t(positions.size());
+  positions.insert(positions.end(), other.positions.begin(), other.positions.end());
+  for (std::size_t f = 0; f < other.face_count(); ++f) {
+    for (std::uint32_t k = other.face_start[f]; k < other.face_start[f + 1]; ++k) {
+      indices.push_back(base + other.indices[k]);
+    }
+    face_start.push_back(std::uint32_t(indices.size()));
+  }
+}
+
+namespace {
+
+// Tolerances are relative to the mesh's size so that tiny and huge models behave alike.
+constexpr double kWeldTolerance = 1e-9;      // of the bounding-box diagonal
+constexpr double kPlanarTolerance = 1e-7;    // of the face's own diameter
+constexpr double kDegenerateArea = 1e-14;    // of the face's squared diameter
+
+struct CellKey {
+  std::int64_t x, y, z;
+  bool operator==(const CellKey&) const = default;
+};
+struct CellHash {
+  std::size_t operator()(const CellKey& k) const {
+    return std::size_t(k.x * 73856093) ^ std::size_t(k.y * 19349663) ^ std::size_t(k.z * 83492791);
+  }
+};
+
+// Merges positions closer than `tolerance` (in every coordinate) on a hash grid whose cells
+// are twice the tolerance wide, so only the 27 neighbouring cells need checking.
+std::vector<std::uint32_t> weld(std::span<const Vec3> positions, double tolerance,
+                                std::vector<Vec3>& welded) {
+  const double cell = std::max(2 * tolerance, std::numeric_limits<double>::min());
+  std::unordered_map<CellKey, std::vector<std::uint32_t>, CellHash> grid;
+  grid.reserve(positions.size());
+  std::vector<std::uint32_t> remap(positions.size());
+  auto key_of = [&](Vec3 p) {
+    return CellKey{std::int64_t(std::floor(p.x / cell)), std::int64_t(std::floor(p.y / cell)),
+                   std::int64_t(std::floor(p.z / cell))};
+  };
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const Vec3 p = positions[i];
+    const CellKey k = key_of(p);
+    std::uint32_t found = std::uint32_t(-1);
+    for (int dx = -1; dx <= 1 && found == std::uint32_t(-1); ++dx)
+      for (int dy = -1; dy <= 1 && found == std::uint32_t(-1); ++dy)
+        for (int dz = -1; dz <= 1 && found == std::uint32_t(-1); ++dz) {
+          auto it = grid.find({k.x + dx, k.y + dy, k.z + dz});
+          if (it == grid.end()) continue;
+          for (std::uint32_t w : it->second) {
+            if (max_abs_component(welded[w] - p) <= tolerance) {
+              found = w;
+              break;
+            }
+          }
+        }
+    if (found == std::uint32_t(-1)) {
+      found = std::uint32_t(welded.size());
+      welded.push_back(p);
+      grid[k].push_back(found);
+    }
+    remap[i] = found;
+  }
+  return remap;
+}
+
+// Removes repeated consecutive vertices (including the wrap-around) left by welding.
+std::vector<std::uint32_t> remove_repeats(std::vector<std::uint32_t> loop) {
+  std::vector<std::uint32_t> out;
+  for (std::uint32_t v : loop) {
+    if (out.empty() || out.back() != v) out.push_back(v);
+  }
+  while (out.size() > 1 && out.front() == out.back()) out.pop_back();
+  return out;
+}
+
+double diameter(std::span<const Vec3> p, std::span<const std::uint32_t> loop) {
+  Bounds3 b;
+  for (std::uint32_t v : loop) b.add(p[v]);
+  return b.diagonal();
+}
+
+bool is_planar(std::span<const Vec3> p, std::span<const std::uint32_t> loop, const Plane& plane,
+               double size) {
+  return std::all_of(loop.begin(), loop.end(), [&](std::uint32_t v) {
+    return std::abs(plane.distance(p[v])) <= kPlanarTolerance * size;
+  });
+}
+
+Plane plane_of(std::span<const Vec3> p, std::span<const std::uint32_t> loop, Vec3 newell) {
+  Vec3 centroid;
+  for (std::uint32_t v : loop) centroid += p[v];
+  centroid = centroid / double(loop.size());
+  const Vec3 n = normalize(newell);
+  return {n, -dot(n, centroid)};
+}
+
+}  // namespace
+
+Mesh Mesh::build(const PolygonSoup& soup, const std::string& name, const Context& ctx) {
+  Bounds3 box;
+  for (const Vec3& p : soup.positions) box.add(p);
+  Mesh mesh;
+  const std::vector<std::uint32_t> remap =
+      weld(soup.positions, kWeldTolerance * box.diagonal(), mesh.vertices);
+
+  std::size_t degenerate = 0, split = 0;
+  auto add_face = [&mesh](std::span<const std::uint32_t> loop, const Plane& plane, double area) {
+    mesh.face_vertices.insert(mesh.face_vertices.end(), loop.begin(), loop.end());
+    mesh.face_start.push_back(std::uint32_t(mesh.face_vertices.size()));
+    mesh.planes.push_back(plane);
+    mesh.areas.push_back(area);
+  };
+  for (std::size_t f = 0; f < soup.face_count(); ++f) {
+    std::vector<std::uint32_t> loop;
+    for (std::uint32_t k = soup.face_start[f]; k < soup.face_start[f + 1]; ++k) {
+      loop.push_back(remap[soup.indices[k]]);
+    }
+    loop = remove_repeats(std::move(loop));
+    const double size = loop.size() >= 3 ? diameter(mesh.vertices, loop) : 0.0;
+    const Vec3 newell = loop.size() >= 3 ? newell_normal(mesh.vertices, loop) : Vec3{};
+    const double area = 0.5 * length(newell);
+    if (loop.size() < 3 || !(area > kDegenerateArea * size * size)) {
+      ++degenerate;
+      continue;
+    }
+    const Plane plane = plane_of(mesh.vertices, loop, newell);
+    if (is_planar(mesh.vertices, loop, plane, size)) {
+      add_face(loop, plane, area);
+      continue;
+    }
+    // A warped polygon has no single plane: keep its surface as triangles.
+    ++split;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    triangulate_polygon(mesh.vertices, loop, plane.normal, triangles);
+    for (const auto& t : triangles) {
+      const Vec3 tn = newell_normal(mesh.vertices, t);
+      const double tsize = diameter(mesh.vertices, t);
+      if (0.5 * length(tn) > kDegenerateArea * tsize * tsize) {
+        add_face(t, plane_of(mesh.vertices, t, tn), 0.5 * length(tn));
+      }
+    }
+  }
+  if (degenerate > 0) {
+    ctx.warning(name + ": dropped " + std::to_string(degenerate) +
+                " degenerate face(s) (fewer than 3 distinct vertices or zero area)");
+  }
+  if (split > 0) {
+    ctx.warning(name + ": split " + std::to_string(split) + " non-planar face(s) into triangles");
+  }
+  mesh.build_adjacency();
+  return mesh;
+}
+
+void Mesh::build_adjacency() {
+  std::unordered_map<std::uint64_t, std::uint32_t> edge_of;
+  edge_of.reserve(face_vertices.size());
+  corner_edge.resize(face_vertices.size());
+  std::vector<std::uint32_t> uses_per_edge;
+  for (std::size_t f = 0; f < face_count(); ++f) {
+    const std::uint32_t n = face_size(f);
+    for (std::uint32_t k = 0; k < n; ++k) {
+      const std::uint32_t a = face_vertex(f, k), b = face_vertex(f, (k + 1) % n);
+      const std::uint32_t lo = std::min(a, b), hi = std::max(a, b);
+      const std::uint64_t key = (std::uint64_t(lo) << 32) | hi;
+      auto [it, inserted] = edge_of.try_emplace(key, std::uint32_t(edges.size()));
+      if (inserted) {
+        edges.push_back({lo, hi, 0, 0});
+        uses_per_edge.push_back(0);
+      }
+      corner_edge[face_start[f] + k] = it->second;
+      ++uses_per_edge[it->second];
+    }
+  }
+  std::uint32_t offset = 0;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    edges[e].first_use = offset;
+    offset += uses_per_edge[e];
+  }
+  edge_uses.resize(offset);
+  for (std::size_t f = 0; f < face_count(); ++f) {
+    const std::uint32_t n = face_size(f);
+    for (std::uint32_t k = 0; k < n; ++k) {
+      MeshEdge& e = edges[corner_edge[face_start[f] + k]];
+      edge_uses[e.first_use + e.use_count++] = {std::uint32_t(f), face_vertex(f, k) == e.v0};
+    }
+  }
+  for (const MeshEdge& e : edges) {
+    if (e.use_count == 1) ++boundary_edges_;
+    if (e.use_count > 2) ++nonmanifold_edges_;
+    if (e.use_count == 2 &&
+        edge_uses[e.first_use].forward == edge_uses[e.first_use + 1].forward) {
+      consistently_oriented_ = false;
+    }
+  }
+}
+
+Bounds3 Mesh::bounds() const {
+  Bounds3 b;
+  for (const Vec3& p : vertices) b.add(p);
+  return b;
+}
+
+}  // namespace shadowkit
