@@ -40,7 +40,8 @@ nlohmann::json scene_info(const Scene& scene) {
                             {"manifold", m.manifold()},
                             {"consistently_oriented", m.consistently_oriented()},
                             {"boundary_edges", m.boundary_edge_count()},
-                            {"nonmanifold_edges", m.nonmanifold_edge_count()}});
+                            {"nonmanifold_edges", m.nonmanifold_edge_count()},
+                            {"nonplanar_polygons_split", m.split_face_count()}});
   }
   j["closed_meshes"] = closed;
   j["open_meshes"] = scene.objects.size() - closed;

@@ -36,7 +36,7 @@ namespace {
 
 // Tolerances are relative to the mesh's size so that tiny and huge models behave alike.
 constexpr double kWeldTolerance = 1e-9;      // of the bounding-box diagonal
-constexpr double kPlanarTolerance = 1e-7;    // of the face's own diameter
+constexpr double kPlanarTolerance = 1e-6;    // of the face's own diameter
 constexpr double kDegenerateArea = 1e-14;    // of the face's squared diameter
 
 struct CellKey {
@@ -168,9 +168,7 @@ Mesh Mesh::build(const PolygonSoup& soup, const std::string& name, const Context
     ctx.warning(name + ": dropped " + std::to_string(degenerate) +
                 " degenerate face(s) (fewer than 3 distinct vertices or zero area)");
   }
-  if (split > 0) {
-    ctx.warning(name + ": split " + std::to_string(split) + " non-planar face(s) into triangles");
-  }
+  mesh.split_faces_ = split;
   mesh.build_adjacency();
   return mesh;
 }

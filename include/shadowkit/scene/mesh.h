@@ -45,7 +45,8 @@ struct EdgeUse {
 class Mesh {
  public:
   /// Welds coincident vertices, drops degenerate faces (warning through \p ctx), splits
-  /// non-planar faces, computes planes and adjacency. \p name labels warnings.
+  /// non-planar faces into triangles (counted, not warned: the surface is unchanged),
+  /// computes planes and adjacency. \p name labels warnings.
   static Mesh build(const PolygonSoup& soup, const std::string& name, const Context& ctx);
 
   std::vector<Vec3> vertices;
@@ -74,11 +75,14 @@ class Mesh {
   bool manifold() const { return nonmanifold_edges_ == 0; }
   /// Every two-face edge is walked in opposite directions by its faces.
   bool consistently_oriented() const { return consistently_oriented_; }
+  /// Input polygons that were not planar and are kept as triangles instead.
+  std::size_t split_face_count() const { return split_faces_; }
 
  private:
   void build_adjacency();
   std::size_t boundary_edges_ = 0;
   std::size_t nonmanifold_edges_ = 0;
+  std::size_t split_faces_ = 0;
   bool consistently_oriented_ = true;
 };
 

@@ -3,6 +3,7 @@
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -51,14 +52,31 @@ class ShadowPacket {
 
 }  // namespace
 
-double shadow_ray_offset(Vec3 p) {
-  return kOffsetUlps * std::max(max_abs_component(p), double(std::numeric_limits<float>::min()));
+double face_offset(const Mesh& mesh, std::size_t face) {
+  double magnitude = 0, deviation = 0;
+  for (std::uint32_t k = 0; k < mesh.face_size(face); ++k) {
+    const Vec3 v = mesh.vertices[mesh.face_vertex(face, k)];
+    magnitude = std::max(magnitude, max_abs_component(v));
+    deviation = std::max(deviation, std::abs(mesh.planes[face].distance(v)));
+  }
+  return kOffsetUlps * magnitude + 2 * deviation;
+}
+
+double shadow_ray_offset(Vec3 p, double face_part) {
+  return std::max({kOffsetUlps * max_abs_component(p), face_part,
+                   double(std::numeric_limits<float>::min())});
 }
 
 RaytraceMethod::RaytraceMethod(const MethodOptions& options) { options.expect_only("raytrace", {}); }
 
 void RaytraceMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
   embree_ = std::make_unique<EmbreeScene>(scene);
+  face_offset_.resize(scene.face_count());
+  for (const SceneObject& object : scene.objects) {
+    for (std::size_t f = 0; f < object.mesh.face_count(); ++f) {
+      face_offset_[object.first_face + f] = float(face_offset(object.mesh, f));
+    }
+  }
 }
 
 void RaytraceMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
@@ -89,7 +107,8 @@ void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfa
       }
       const Vec3 p = surfaces.point[i].to_double();
       const double side = plane.distance(eye) > 0 ? 1.0 : -1.0;
-      const Vec3 o = p + plane.normal * (side * shadow_ray_offset(p));
+      const double offset = shadow_ray_offset(p, face_offset_[surfaces.face[i]]);
+      const Vec3 o = p + plane.normal * (side * offset);
       packet.set(k, o, point_light ? light_.position - o : -light_.direction, tfar);
     }
     if (!packet.trace(embree_->handle(), &context)) return;
@@ -115,7 +134,7 @@ void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfa
 }
 
 std::size_t RaytraceMethod::memory_bytes() const {
-  return embree_ ? embree_->memory_bytes() : 0;
+  return (embree_ ? embree_->memory_bytes() : 0) + face_offset_.size() * sizeof(float);
 }
 
 MethodCounters RaytraceMethod::counters() const { return {{"shadow_rays", rays_}}; }

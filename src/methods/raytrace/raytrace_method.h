@@ -1,6 +1,7 @@
 #pragma once
 // raytrace: the exact reference. Embree shadow rays from every visible point.
 #include <memory>
+#include <vector>
 
 #include "embree_scene.h"
 #include "shadowkit/methods/shadow_method.h"
@@ -8,8 +9,8 @@
 namespace shadowkit {
 
 /// \brief Shadow rays in 16-wide packets (rtcOccluded16) over 16x16 pixel tiles, with the
-/// contract's two-sided rule and a self-intersection offset relative to the point's
-/// magnitude. The BVH is built once per scene.
+/// contract's two-sided rule and a self-intersection offset along the face normal. The BVH
+/// and the per-face offsets are built once per scene.
 class RaytraceMethod final : public ShadowMethod {
  public:
   explicit RaytraceMethod(const MethodOptions& options);
@@ -23,12 +24,19 @@ class RaytraceMethod final : public ShadowMethod {
 
  private:
   std::unique_ptr<EmbreeScene> embree_;
+  std::vector<float> face_offset_;
   Light light_;
   double rays_ = 0;
 };
 
-/// The origin offset that keeps a shadow ray off its own surface: a fixed number of float
-/// ulps of the point's largest coordinate (the scene is stored in float by Embree).
-double shadow_ray_offset(Vec3 p);
+/// The smallest origin offset along the normal that keeps shadow rays off a face: Embree
+/// stores and intersects the face's triangles in float, so their error grows with the
+/// largest coordinate of the face's vertices; a face that is planar only within the mesh
+/// tolerance adds its deviation from its plane.
+double face_offset(const Mesh& mesh, std::size_t face);
+
+/// The offset for a point \p p on a face with face_offset() \p face_part: float storage of the
+/// point itself errs in proportion to its largest coordinate.
+double shadow_ray_offset(Vec3 p, double face_part);
 
 }  // namespace shadowkit
