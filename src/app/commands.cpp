@@ -108,13 +108,14 @@ int run_compare(const CompareOptions& options, const Context& ctx) {
   progress.step("scan conversion");
   const CameraPass pass = run_camera_pass(scene, {}, ctx);
 
+  const std::vector<std::uint32_t> object_ids = pass.surfaces.object_ids();
   std::vector<ComparedMethod> compared;
   for (const std::string& m : methods) {
     progress.step("method " + m);
     ComparedMethod cm{m, run_method(scene, pass.surfaces, m, settings_for(options, m), {}, ctx), {}};
     for (std::size_t l = 0; l < cm.runs.size(); ++l) {
       const ShadowMask& ref = compared.empty() ? cm.runs[l].mask : compared.front().runs[l].mask;
-      cm.against_reference.push_back(compare_masks(ref, cm.runs[l].mask, pass.surfaces.object));
+      cm.against_reference.push_back(compare_masks(ref, cm.runs[l].mask, object_ids));
     }
     compared.push_back(std::move(cm));
   }

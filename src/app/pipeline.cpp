@@ -38,7 +38,7 @@ double timed_median(const Repetitions& reps, Fn&& fn) {
 
 CameraPass run_camera_pass(const Scene& scene, const Repetitions& reps, const Context& ctx) {
   CameraPass pass;
-  pass.scan_ms = timed_median(reps, [&] { pass.surfaces = render_visible_surfaces(scene, ctx); });
+  pass.scan_ms = timed_median(reps, [&] { render_visible_surfaces(scene, ctx, pass.surfaces); });
   return pass;
 }
 

@@ -39,7 +39,7 @@ Image<Rgb8> shade_image(const Scene& scene, const VisibleSurfaceBuffer& surfaces
       const std::size_t i = surfaces.index(x, y);
       if (!surfaces.covered(i)) continue;
       const Plane& plane = scene.face_plane(surfaces.face[i]);
-      const Vec3 p = surfaces.point[i].to_double();
+      const Vec3 p = surfaces.point(i);
       // Two-sided: the normal of the side the camera sees.
       const Vec3 n = plane.distance(eye) >= 0 ? plane.normal : -plane.normal;
       double light = kAmbient;
@@ -47,7 +47,7 @@ Image<Rgb8> shade_image(const Scene& scene, const VisibleSurfaceBuffer& surfaces
         if (masks[l]->pixels[i] != kMaskLit) continue;
         light += diffuse_share * std::max(0.0, dot(n, scene.lights[l].direction_to(p)));
       }
-      const Vec3 c = object_colour(surfaces.object[i]) * light;
+      const Vec3 c = object_colour(surfaces.object(i)) * light;
       image.pixels[i] = {to_byte(c.x), to_byte(c.y), to_byte(c.z)};
     }
   });

@@ -46,7 +46,6 @@ struct TileBins {
 
 struct TileBuffers {
   double key[kTile * kTile];
-  float key_out[kTile * kTile];
   std::uint32_t face[kTile * kTile];
 };
 
@@ -57,22 +56,24 @@ void raster_tile(const std::vector<ScreenTriangle>& tris, const std::uint32_t* b
   for (std::size_t k = 0; k < bin_size; ++k) {
     const ScreenTriangle& t = tris[bin[k]];
     const int ya = std::max(y0, t.min_y), yb = std::min(y0 + h - 1, t.max_y);
-    for (int py = ya; py <= yb; ++py) {
+    raster::SpanWalker walker(t, ya);
+    for (int py = ya; py <= yb; ++py, walker.next_row()) {
       int xa = std::max(x0, t.min_x), xb = std::min(x0 + w - 1, t.max_x);
-      if (!raster::row_span(t, py, xa, xb)) continue;
+      if (!walker.span(xa, xb)) continue;
       double* key = buf.key + (py - y0) * w - x0;
       std::uint32_t* face = buf.face + (py - y0) * w - x0;
-      const double row = t.key_b * py + t.key_c;
+      // Locals, so the compiler need not reload them after every store to the tile.
+      const double row = t.key_b * py + t.key_c, key_a = t.key_a;
+      const std::uint32_t id = t.face;
       for (int px = xa; px <= xb; ++px) {
-        const double z = t.key_a * px + row;
+        const double z = key_a * px + row;
         if (z > key[px]) {
           key[px] = z;
-          face[px] = t.face;
+          face[px] = id;
         }
       }
     }
   }
-  for (int i = 0; i < w * h; ++i) buf.key_out[i] = float(buf.key[i]);
 }
 
 }  // namespace
@@ -88,7 +89,7 @@ void ScanConverter::rasterize_tiles(const RasterProjection& view, const Context&
     const int w = std::min(kTile, view.width - x0), h = std::min(kTile, view.height - y0);
     raster_tile(tris, bins.items.data() + bins.start[tile], bins.start[tile + 1] - bins.start[tile],
                 x0, y0, w, h, buf);
-    fn(RasterTile{x0, y0, w, h, buf.key_out, buf.face});
+    fn(RasterTile{x0, y0, w, h, buf.key, buf.face});
   });
 }
 
@@ -101,7 +102,8 @@ DepthFaceBuffer ScanConverter::rasterize(const RasterProjection& view, const Con
   rasterize_tiles(view, ctx, [&](const RasterTile& tile) {
     for (int y = 0; y < tile.height; ++y) {
       const std::size_t dst = std::size_t(tile.y0 + y) * view.width + tile.x0;
-      std::copy_n(tile.depth_key + y * tile.width, tile.width, out.depth_key.begin() + dst);
+      std::transform(tile.depth_key + y * tile.width, tile.depth_key + (y + 1) * tile.width,
+                     out.depth_key.begin() + std::ptrdiff_t(dst), [](double k) { return float(k); });
       std::copy_n(tile.face + y * tile.width, tile.width, out.face.begin() + dst);
     }
   });

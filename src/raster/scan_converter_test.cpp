@@ -16,9 +16,10 @@ namespace {
 Image<int> coverage(const Scene& scene, const RasterProjection& view) {
   Image<int> count(view.width, view.height, 0);
   for (const raster::ScreenTriangle& t : raster::setup_triangles(scene, view)) {
-    for (int y = t.min_y; y <= t.max_y; ++y) {
+    raster::SpanWalker walker(t, t.min_y);
+    for (int y = t.min_y; y <= t.max_y; ++y, walker.next_row()) {
       int x0 = t.min_x, x1 = t.max_x;
-      if (!raster::row_span(t, y, x0, x1)) continue;
+      if (!walker.span(x0, x1)) continue;
       for (int x = x0; x <= x1; ++x) ++count.at(x, y);
     }
   }

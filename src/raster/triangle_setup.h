@@ -1,5 +1,6 @@
 #pragma once
 // Triangle setup for the scan converter: clipping in view space and fixed-point edges.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -29,8 +30,57 @@ struct ScreenTriangle {
 /// tie rule "lower triangle index wins" survives binning). Runs in parallel.
 std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const RasterProjection& view);
 
-/// Narrows [x_lo, x_hi] to the pixel columns of row \p py whose centres the triangle owns
-/// under the fill rule; false if none.
-bool row_span(const ScreenTriangle& t, int py, int& x_lo, int& x_hi);
+/// \brief One edge's boundary column, row after row, in exact integer arithmetic.
+class EdgeWalker {
+ public:
+  EdgeWalker(const ScreenTriangle& t, int edge, int first_row);
+  /// Narrows [lo, hi] to the columns on the inner side of the edge in the current row.
+  void clip(std::int64_t& lo, std::int64_t& hi) const {
+    if (a_ == 0) {
+      if (c_ < 0) lo = hi + 1;  // the whole row is outside this edge
+    } else if (a_ > 0) {
+      lo = std::max(lo, q_ + (r_ > 0));  // first column with E >= 0: ceil(-c / a)
+    } else {
+      hi = std::min(hi, q_);  // last column with E >= 0: floor(c / -a)
+    }
+  }
+  void next_row() {
+    if (a_ == 0) {
+      c_ += step_c_;
+      return;
+    }
+    q_ += step_q_;
+    r_ += step_r_;
+    if (r_ >= abs_a_) r_ -= abs_a_, q_ += 1;
+  }
+
+ private:
+  static void split(std::int64_t num, std::int64_t den, std::int64_t& q, std::int64_t& r);
+  std::int64_t a_ = 0, abs_a_ = 0;  // change of the edge function per column
+  std::int64_t c_ = 0, step_c_ = 0;  // horizontal edges: the edge function and its row step
+  std::int64_t q_ = 0, r_ = 0;    // boundary as quotient and remainder
+  std::int64_t step_q_ = 0, step_r_ = 0;
+};
+
+/// \brief The pixel columns a triangle owns under the fill rule, row by row from
+/// \p first_row: the scan converter's inner loop, without a division per row.
+class SpanWalker {
+ public:
+  SpanWalker(const ScreenTriangle& t, int first_row);
+  /// Narrows [x_lo, x_hi] to the current row's owned columns; false if none.
+  bool span(int& x_lo, int& x_hi) const {
+    std::int64_t lo = x_lo, hi = x_hi;
+    for (const EdgeWalker& e : edges_) e.clip(lo, hi);
+    x_lo = int(lo);
+    x_hi = int(hi);
+    return lo <= hi;
+  }
+  void next_row() {
+    for (EdgeWalker& e : edges_) e.next_row();
+  }
+
+ private:
+  EdgeWalker edges_[3];
+};
 
 }  // namespace shadowkit::raster

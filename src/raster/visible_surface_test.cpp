@@ -18,18 +18,18 @@ TEST(VisibleSurface, PointsLieOnThePixelRayAndTheFacePlane) {
     for (int x = 0; x < vsb.width; ++x) {
       const std::size_t i = vsb.index(x, y);
       if (!vsb.covered(i)) continue;
-      const Vec3 p = vsb.point[i].to_double();
+      const Vec3 p = vsb.point(i);
       const Vec3 ray = scene.camera.pixel_ray(x, y);
       const Vec3 along = scene.camera.position + ray * double(vsb.depth[i]);
       EXPECT_LT(length(p - along), 1e-5);
       EXPECT_LT(std::abs(scene.face_plane(vsb.face[i]).distance(p)), 1e-5);
-      EXPECT_EQ(vsb.object[i], scene.object_of_face(vsb.face[i]));
+      EXPECT_EQ(vsb.object(i), scene.object_of_face(vsb.face[i]));
       ++checked;
     }
   }
   EXPECT_GT(checked, 96 * 64 / 2);
   // The centre pixel sees the box's top (y = 1) or its front.
-  EXPECT_EQ(vsb.object[vsb.index(48, 32)], 1u);
+  EXPECT_EQ(vsb.object(vsb.index(48, 32)), 1u);
 }
 
 TEST(VisibleSurface, GroundDepthMatchesTheAnalyticDistance) {

@@ -19,13 +19,9 @@ Vec3 Camera::pixel_ray(int column, int row) const {
   return normalize(forward() + x * right() + y * true_up());
 }
 
-const Plane& Scene::face_plane(std::uint32_t face) const {
-  const SceneObject& object = objects[face_object[face]];
-  return object.mesh.planes[face - object.first_face];
-}
-
 void Scene::finalize() {
   face_object.clear();
+  face_planes_.clear();
   bounds_ = {};
   triangles_ = {};
   for (std::uint32_t o = 0; o < objects.size(); ++o) {
@@ -33,6 +29,7 @@ void Scene::finalize() {
     const Mesh& mesh = object.mesh;
     object.first_face = std::uint32_t(face_object.size());
     face_object.insert(face_object.end(), mesh.face_count(), o);
+    face_planes_.insert(face_planes_.end(), mesh.planes.begin(), mesh.planes.end());
 
     const auto base = std::uint32_t(triangles_.positions.size());
     triangles_.positions.insert(triangles_.positions.end(), mesh.vertices.begin(),

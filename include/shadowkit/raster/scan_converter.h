@@ -24,7 +24,7 @@ struct DepthFaceBuffer {
 /// `width` entries.
 struct RasterTile {
   int x0 = 0, y0 = 0, width = 0, height = 0;
-  const float* depth_key = nullptr;
+  const double* depth_key = nullptr;  ///< exact to double rounding of the face plane
   const std::uint32_t* face = nullptr;
 };
 

@@ -11,22 +11,45 @@
 
 namespace shadowkit {
 
-/// \brief Per pixel (row-major, row 0 at the top): distance along the pixel's unit ray, the
-/// visible point (intersection of the pixel's ray with the face plane, computed in double),
-/// the global face id and the object id. Background pixels have face == kNoFace.
-struct VisibleSurfaceBuffer {
+/// \brief Per pixel (row-major, row 0 at the top): the nearest face and its distance along
+/// the pixel's unit ray. The visible point is not stored but computed on demand, exactly in
+/// double, as the intersection of the contract's pixel ray with the face plane; this keeps
+/// the buffer at 8 bytes a pixel. Background pixels have face == kNoFace.
+class VisibleSurfaceBuffer {
+ public:
   int width = 0, height = 0;
-  std::vector<float> depth;
-  std::vector<Vec3f> point;
-  std::vector<std::uint32_t> face;
-  std::vector<std::uint32_t> object;
+  std::vector<float> depth;         ///< distance from the eye along the unit pixel ray
+  std::vector<std::uint32_t> face;  ///< global face id or kNoFace
 
   std::size_t index(int x, int y) const { return std::size_t(y) * width + x; }
   bool covered(std::size_t i) const { return face[i] != kNoFace; }
   std::size_t covered_count() const;
+
+  /// The object seen at pixel \p i (kNoFace for background).
+  std::uint32_t object(std::size_t i) const {
+    return covered(i) ? scene_->object_of_face(face[i]) : kNoFace;
+  }
+  /// Object ids of all pixels, for comparisons that look at neighbourhoods.
+  std::vector<std::uint32_t> object_ids() const;
+  /// The visible point of covered pixel \p i: its pixel ray against its face plane.
+  Vec3 point(std::size_t i) const;
+  /// The unnormalised contract ray f + x r + y u through the centre of pixel \p i.
+  Vec3 ray(std::size_t i) const;
+
+  /// Binds the buffer to the scene whose camera and faces it describes.
+  void bind(const Scene& scene);
+
+ private:
+  const Scene* scene_ = nullptr;
+  Vec3 forward_, right_, up_;
+  double step_ = 0, x_base_ = 0, y_base_ = 0;
 };
 
-/// Scan-converts the scene from its camera and resolves each pixel's visible point.
+/// Scan-converts the scene from its camera into \p out, reusing its storage (a new frame of
+/// the same size allocates nothing). \p out refers to \p scene afterwards.
+void render_visible_surfaces(const Scene& scene, const Context& ctx, VisibleSurfaceBuffer& out);
+
+/// The same, into a new buffer.
 VisibleSurfaceBuffer render_visible_surfaces(const Scene& scene, const Context& ctx);
 
 /// The near-plane depth used for the camera: small against the scene's extent from the eye,

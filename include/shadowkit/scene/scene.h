@@ -66,7 +66,7 @@ struct Scene {
   void finalize();
 
   std::uint32_t face_count() const { return std::uint32_t(face_object.size()); }
-  const Plane& face_plane(std::uint32_t face) const;
+  const Plane& face_plane(std::uint32_t face) const { return face_planes_[face]; }
   std::uint32_t object_of_face(std::uint32_t face) const { return face_object[face]; }
   std::uint32_t local_face(std::uint32_t face) const {
     return face - objects[face_object[face]].first_face;
@@ -79,6 +79,7 @@ struct Scene {
  private:
   Bounds3 bounds_;
   TriangleList triangles_;
+  std::vector<Plane> face_planes_;  ///< copies of the meshes' planes, by global face id
 };
 
 /// Applies the contract's transform p' = T · Rz · Ry · Rx · S · p to every position.

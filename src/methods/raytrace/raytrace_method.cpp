@@ -81,11 +81,19 @@ void RaytraceMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
 
 void RaytraceMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
   light_ = scene.lights.at(light);
+  const Vec3 eye = scene.camera.position;
+  lit_side_offset_.resize(scene.face_count());
+  for (std::uint32_t f = 0; f < scene.face_count(); ++f) {
+    const Plane& plane = scene.face_plane(f);
+    const float side = plane.distance(eye) > 0 ? 1.0f : -1.0f;
+    // Never 0 for a lit face, even if its offset underflows float.
+    const float offset = std::max(face_offset_[f], std::numeric_limits<float>::min());
+    lit_side_offset_[f] = faces_light(plane, eye, light_) ? side * offset : 0.0f;
+  }
 }
 
 void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
                            ShadowMask& mask, const Context& /*ctx*/) {
-  const Vec3 eye = scene.camera.position;
   const bool point_light = light_.type == Light::Type::point;
   // A point light sits at t = 1 on an unnormalised ray; stop just short of it.
   const float tfar = point_light ? 1.0f - 1e-6f : std::numeric_limits<float>::infinity();
@@ -93,30 +101,31 @@ void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfa
   const int tiles_y = (surfaces.height + kTile - 1) / kTile;
   tbb::combinable<std::size_t> ray_count;
 
+  // Returns the number of shadow rays cast.
   auto shade_row = [&](ShadowPacket& packet, RTCIntersectContext& context, int y, int x0,
-                       int lanes) {
+                       int lanes) -> std::size_t {
     packet.clear();
     for (int k = 0; k < lanes; ++k) {
       const std::size_t i = surfaces.index(x0 + k, y);
       if (!surfaces.covered(i)) continue;
-      const Plane& plane = scene.face_plane(surfaces.face[i]);
-      // Contract condition 1: camera and light on the same side of the surface.
-      if (!faces_light(plane, eye, light_)) {
+      const float signed_offset = lit_side_offset_[surfaces.face[i]];
+      if (signed_offset == 0.0f) {  // contract condition 1 fails
         mask.pixels[i] = kMaskShadow;
         continue;
       }
-      const Vec3 p = surfaces.point[i].to_double();
-      const double side = plane.distance(eye) > 0 ? 1.0 : -1.0;
-      const double offset = shadow_ray_offset(p, face_offset_[surfaces.face[i]]);
-      const Vec3 o = p + plane.normal * (side * offset);
+      const Vec3 p = surfaces.point(i);
+      const double offset = std::copysign(shadow_ray_offset(p, std::abs(signed_offset)), signed_offset);
+      const Vec3 o = p + scene.face_plane(surfaces.face[i]).normal * offset;
       packet.set(k, o, point_light ? light_.position - o : -light_.direction, tfar);
     }
-    if (!packet.trace(embree_->handle(), &context)) return;
+    if (!packet.trace(embree_->handle(), &context)) return 0;
+    std::size_t rays = 0;
     for (int k = 0; k < lanes; ++k) {
       if (!packet.valid(k)) continue;
-      ++ray_count.local();
+      ++rays;
       mask.pixels[surfaces.index(x0 + k, y)] = packet.blocked(k) ? kMaskShadow : kMaskLit;
     }
+    return rays;
   };
 
   tbb::parallel_for(0, tiles_x * tiles_y, [&](int tile) {
@@ -126,15 +135,18 @@ void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfa
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     ShadowPacket packet;
     const int lanes = std::min(kTile, surfaces.width - x0);
+    std::size_t rays = 0;
     for (int y = y0; y < std::min(y0 + kTile, surfaces.height); ++y) {
-      shade_row(packet, context, y, x0, lanes);
+      rays += shade_row(packet, context, y, x0, lanes);
     }
+    ray_count.local() += rays;
   });
   rays_ = double(ray_count.combine(std::plus<>()));
 }
 
 std::size_t RaytraceMethod::memory_bytes() const {
-  return (embree_ ? embree_->memory_bytes() : 0) + face_offset_.size() * sizeof(float);
+  return (embree_ ? embree_->memory_bytes() : 0) +
+         (face_offset_.size() + lit_side_offset_.size()) * sizeof(float);
 }
 
 MethodCounters RaytraceMethod::counters() const { return {{"shadow_rays", rays_}}; }

@@ -24,7 +24,10 @@ class RaytraceMethod final : public ShadowMethod {
 
  private:
   std::unique_ptr<EmbreeScene> embree_;
-  std::vector<float> face_offset_;
+  std::vector<float> face_offset_;  ///< per face, from prepare()
+  /// Per face for the current light: the offset signed toward the side the camera and the
+  /// light share, or 0 when they are on opposite sides (contract condition 1).
+  std::vector<float> lit_side_offset_;
   Light light_;
   double rays_ = 0;
 };

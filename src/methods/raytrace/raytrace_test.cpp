@@ -26,8 +26,8 @@ void expect_ground_shadow(const Scene& scene, const ShadowMask& mask, InShadow i
   const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
   int shadowed = 0, lit = 0;
   for (std::size_t i = 0; i < mask.size(); ++i) {
-    if (!vsb.covered(i) || vsb.object[i] != 0) continue;
-    const Vec3 p = vsb.point[i].to_double();
+    if (!vsb.covered(i) || vsb.object(i) != 0) continue;
+    const Vec3 p = vsb.point(i);
     const int expected = in_shadow(p);  // 1 shadow, 0 lit, -1 too close to tell
     if (expected < 0) continue;
     EXPECT_EQ(mask.pixels[i], expected ? kMaskShadow : kMaskLit) << p.x << " " << p.z;
@@ -88,9 +88,9 @@ TEST(Raytrace, ClosedBoxShadowsTheGroundAndItsOwnFarSide) {
   const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
   for (std::size_t i = 0; i < mask.size(); ++i) {
     if (!vsb.covered(i)) continue;
-    const Vec3 p = vsb.point[i].to_double();
+    const Vec3 p = vsb.point(i);
     const Plane& plane = scene.face_plane(vsb.face[i]);
-    if (vsb.object[i] == 1) {  // box: only the top faces the light
+    if (vsb.object(i) == 1) {  // box: only the top faces the light
       EXPECT_EQ(mask.pixels[i], plane.normal.y > 0.5 ? kMaskLit : kMaskShadow);
     } else {  // ground: shadow of the top square from height 6 is |x|, |z| < 1.2
       const double edge = std::max(std::abs(p.x), std::abs(p.z)) - 1.2;

@@ -100,28 +100,30 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
   const bool point_light = light_.type == Light::Type::point;
   SHADOWKIT_CHECK((point_light ? cube_.texel_count() : ortho_.texel_count()) > 0);  // built
   const Vec3 eye = scene.camera.position;
-  const int needed = pcf_ * pcf_;  // lit when 2 * passed >= pcf^2
   tbb::combinable<std::size_t> tested;
   shade_each_pixel(surfaces, mask, [&](std::size_t i) {
     const Plane& plane = scene.face_plane(surfaces.face[i]);
     // Contract condition 1: a surface is two-sided, lit only on the side the light is on.
     if (!faces_light(plane, eye, light_)) return false;
     ++tested.local();
-    // Williams 1978, second pass: transform the visible point into the light's view.
-    const Vec3 p = surfaces.point[i].to_double();
-    const shadowmap::DepthMap& map = point_light ? cube_.map_for(p) : ortho_;
-    const RasterProjection& view = map.view();
-    const Vec3 v = view.to_view(p);
-    const Vec3 n{dot(plane.normal, view.right), dot(plane.normal, view.up),
-                 dot(plane.normal, view.forward)};
-    // The map sampled each surface at texel centres, so a plane's stored depth differs from
-    // its depth at p by up to its slope times half a texel, and float storage adds rounding:
-    // without a bias surfaces shadow themselves, the self-shadowing problem Williams 1978
-    // describes ("acne").
-    const double bias = bias_ + slope_bias_ * map.texel_size(v.z) * map.depth_slope(n, v);
-    return 2 * map.passing_tests(v, bias, pcf_) >= needed;
+    return passes_depth_test(plane, surfaces.point(i));
   });
-  depth_tests_ = double(tested.combine(std::plus<>())) * needed;
+  depth_tests_ = double(tested.combine(std::plus<>())) * pcf_ * pcf_;
+}
+
+bool ShadowMapMethod::passes_depth_test(const Plane& plane, Vec3 p) const {
+  // Williams 1978, second pass: transform the visible point into the light's view.
+  const shadowmap::DepthMap& map = light_.type == Light::Type::point ? cube_.map_for(p) : ortho_;
+  const RasterProjection& view = map.view();
+  const Vec3 v = view.to_view(p);
+  const Vec3 n{dot(plane.normal, view.right), dot(plane.normal, view.up),
+               dot(plane.normal, view.forward)};
+  // The map sampled each surface at texel centres, so a plane's stored depth differs from
+  // its depth at p by up to its slope times half a texel, and float storage adds rounding:
+  // without a bias surfaces shadow themselves, the self-shadowing problem Williams 1978
+  // describes ("acne").
+  const double bias = bias_ + slope_bias_ * map.texel_size(v.z) * map.depth_slope(n, v);
+  return 2 * map.passing_tests(v, bias, pcf_) >= pcf_ * pcf_;  // lit if half the tests pass
 }
 
 std::size_t ShadowMapMethod::memory_bytes() const {

@@ -47,6 +47,10 @@ class ShadowMapMethod final : public ShadowMethod {
   std::size_t memory_bytes() const override;
   MethodCounters counters() const override;
 
+  /// The depth comparison for a point \p p on a face with \p plane (condition 2 only), with
+  /// the light of the last build().
+  bool passes_depth_test(const Plane& plane, Vec3 p) const;
+
   /// The constant bias of the last build(), in world units.
   double bias() const { return bias_; }
   /// The map of the last build() for a directional light.

@@ -18,8 +18,9 @@ constexpr std::string_view kCounts = "the vertex, face and edge counts";
 void parse_counts(TextCursor& in, std::vector<std::string_view>& tokens, std::uint64_t& vertices,
                   std::uint64_t& faces) {
   if (tokens.empty()) {
-    if (!in.next_nonblank_line())
+    if (!in.next_nonblank_line()) {
       in.fail("expected " + std::string(kCounts) + ", found the end of the file");
+    }
     for (std::string_view t = in.token(); !t.empty(); t = in.token()) tokens.push_back(t);
   }
   // The edge count is often missing and is never used.

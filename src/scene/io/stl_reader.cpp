@@ -41,7 +41,7 @@ bool is_binary(std::string_view data) {
     const auto count = load_little_endian<std::uint32_t>(data.data() + 80);
     if (kHeaderBytes + kRecordBytes * std::uint64_t{count} == data.size()) return true;
   }
-  std::size_t start = data.find_first_not_of(" \t\r\n");
+  const std::size_t start = data.find_first_not_of(" \t\r\n");
   if (start == std::string_view::npos || !equals_ignoring_case(data.substr(start, 5), "solid")) {
     return true;
   }

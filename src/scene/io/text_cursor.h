@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <string>
 #include <string_view>
+#include <utility>
 
 #include "shadowkit/core/error.h"
 #include "shadowkit/core/vec.h"
