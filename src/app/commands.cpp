@@ -80,7 +80,7 @@ std::map<std::string, MethodOptions> parse_settings(const std::vector<std::strin
   std::map<std::string, MethodOptions> out;
   for (auto& [method, kv] : values) {
     make_method(method, {});  // an unknown method name is an error here, not silently ignored
-    out.emplace(method, MethodOptions(std::move(kv)));
+    out.emplace(method, MethodOptions(method, std::move(kv)));
   }
   return out;
 }
@@ -155,9 +155,8 @@ int run_compare(const CompareOptions& options, const Context& ctx) {
 int run_bench(const BenchOptions& options, const Context& ctx) {
   const std::vector<std::string> methods = checked_methods(options.methods);
   for (const std::string& m : methods) make_method(m, settings_for(options, m));
-  if (options.repeats < 1 || options.warmup < 0) {
-    throw InputError("--repeats", "needs at least one timed run");
-  }
+  if (options.repeats < 1) throw InputError("--repeats", "needs at least one timed run");
+  if (options.warmup < 0) throw InputError("--warmup", "cannot be negative");
   const Scene scene = load_scene(options.scene, ctx);
   const Repetitions reps{options.warmup, options.repeats};
   Progress progress;

@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
+#include <new>
 #include <optional>
 
 #include "shadowkit/app/commands.h"
@@ -116,6 +117,11 @@ int main(int argc, char** argv) {
     return run_info(info, ctx);
   } catch (const InputError& e) {
     std::fprintf(stderr, "shadowkit: error: %s\n", e.what());
+    return kBadInput;
+  } catch (const std::bad_alloc&) {
+    // Only a setting can ask for this much (image size, map resolution): say so.
+    std::fprintf(stderr, "shadowkit: error: out of memory; lower the image size or a method's "
+                         "resolution setting\n");
     return kBadInput;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowkit: internal error: %s\n", e.what());

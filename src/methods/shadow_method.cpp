@@ -17,7 +17,7 @@ double MethodOptions::number(const std::string& key, double fallback) const {
   double value = 0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
   if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(value)) {
-    throw InputError("option '" + key + "'", "expected a number, got '" + s + "'");
+    throw InputError("option '" + method_ + "." + key + "'", "expected a number, got '" + s + "'");
   }
   return value;
 }

@@ -1,5 +1,6 @@
 #include "shadowkit/raster/projection.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -47,6 +48,12 @@ RasterProjection RasterProjection::orthographic_view(Vec3 center, Vec3 forward, 
   p.width = width;
   p.height = height;
   return p;
+}
+
+double near_plane_for(const Bounds3& bounds, Vec3 eye) {
+  if (bounds.empty()) return 1e-6;
+  const Vec3 far = max(bounds.hi - eye, eye - bounds.lo);
+  return std::max(length(far) * 1e-7, 1e-300);
 }
 
 }  // namespace shadowkit

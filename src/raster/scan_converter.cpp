@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "shadowkit/core/error.h"
 
 #include "triangle_setup.h"
 
@@ -25,6 +28,9 @@ struct TileBins {
       : tiles_x((width + kTile - 1) / kTile), tiles_y((height + kTile - 1) / kTile) {
     std::vector<std::uint32_t> count(std::size_t(tiles_x) * tiles_y + 1, 0);
     for_each_tile(tris, [&](std::size_t tile, std::uint32_t) { ++count[tile + 1]; });
+    std::uint64_t total = 0;
+    for (std::size_t i = 1; i < count.size(); ++i) total += count[i];
+    SHADOWKIT_CHECK(total < std::numeric_limits<std::uint32_t>::max());
     for (std::size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
     start = count;
     items.resize(count.back());

@@ -16,7 +16,8 @@ inline constexpr std::int64_t kSubpixel = 1 << kSubpixelBits;
 /// edge functions well inside 64 bits.
 inline constexpr double kGuardBand = 4096;
 
-/// \brief A triangle ready for scan conversion: counter-clockwise fixed-point vertices with
+/// \brief A triangle ready for scan conversion: positively oriented fixed-point vertices (in
+/// pixel coordinates, y down; clockwise as seen on screen) with
 /// the top-left rule folded into the edge biases, and the depth-key plane of its face.
 struct ScreenTriangle {
   std::int64_t x[3], y[3];  ///< fixed point

@@ -21,16 +21,12 @@ void VisibleSurfaceBuffer::bind(const Scene& scene) {
   forward_ = cam.forward();
   right_ = cam.right();
   up_ = cam.true_up();
-  // Contract: x = (2 (c + 0.5) / W - 1) t W / H, y = (1 - 2 (w + 0.5) / H) t.
-  const double t = cam.tan_half_fov();
-  step_ = 2.0 * t / cam.height;
-  x_base_ = -t * cam.width / cam.height + 0.5 * step_;
-  y_base_ = t - 0.5 * step_;
+  grid_ = cam.pixel_grid();
 }
 
 Vec3 VisibleSurfaceBuffer::ray(std::size_t i) const {
-  const double x = x_base_ + step_ * double(i % std::size_t(width));
-  const double y = y_base_ - step_ * double(i / std::size_t(width));
+  const double x = grid_.x0 + grid_.step * double(i % std::size_t(width));
+  const double y = grid_.y0 - grid_.step * double(i / std::size_t(width));
   return forward_ + x * right_ + y * up_;
 }
 
@@ -38,15 +34,6 @@ Vec3 VisibleSurfaceBuffer::point(std::size_t i) const {
   const Vec3 eye = scene_->camera.position, dir = ray(i);
   const Plane& plane = scene_->face_plane(face[i]);
   return eye + dir * (-plane.distance(eye) / dot(plane.normal, dir));
-}
-
-double camera_near_plane(const Scene& scene) {
-  // Relative to the farthest scene point: the 1/z depth key keeps its precision even for a
-  // tiny near distance, and a ray can only miss geometry closer than this.
-  const Bounds3& b = scene.bounds();
-  if (b.empty()) return 1e-6;
-  const Vec3 far = max(b.hi - scene.camera.position, scene.camera.position - b.lo);
-  return std::max(length(far) * 1e-7, 1e-300);
 }
 
 void render_visible_surfaces(const Scene& scene, const Context& ctx, VisibleSurfaceBuffer& vsb) {
@@ -60,25 +47,22 @@ void render_visible_surfaces(const Scene& scene, const Context& ctx, VisibleSurf
 
   // The scan converter's key is 1 / zv from the face's exact plane; the distance along the
   // unit ray through (x, y) on the view plane at unit depth is zv * sqrt(1 + x^2 + y^2).
-  const double t = cam.tan_half_fov();
-  const double step = 2.0 * t / cam.height;
-  const double x_base = -t * cam.width / cam.height + 0.5 * step;
-  const double y_base = t - 0.5 * step;
+  const Camera::PixelGrid grid = cam.pixel_grid();
   std::vector<float> column_x2(std::size_t(cam.width));
-  for (int c = 0; c < cam.width; ++c) column_x2[c] = float(std::pow(x_base + step * c, 2));
+  for (int c = 0; c < cam.width; ++c) column_x2[c] = float(std::pow(grid.x0 + grid.step * c, 2));
 
   const ScanConverter converter(scene);
-  converter.rasterize_tiles(RasterProjection::from_camera(cam, camera_near_plane(scene)), ctx,
+  converter.rasterize_tiles(RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position)), ctx,
                             [&](const RasterTile& tile) {
     for (int y = 0; y < tile.height; ++y) {
-      const float y2 = float(std::pow(y_base - step * (tile.y0 + y), 2));
+      const float y2 = float(std::pow(grid.y0 - grid.step * (tile.y0 + y), 2));
       const std::size_t row = std::size_t(tile.y0 + y) * cam.width + tile.x0;
       const double* key = tile.depth_key + y * tile.width;
       const float* x2 = column_x2.data() + tile.x0;
       float* depth = vsb.depth.data() + row;
       std::copy_n(tile.face + y * tile.width, tile.width, vsb.face.begin() + std::ptrdiff_t(row));
       for (int x = 0; x < tile.width; ++x) {
-        // Background keys are -inf and give +inf, as documented.
+        // Background keys are -inf and give a depth of +inf.
         depth[x] = std::sqrt(1.0f + x2[x] + y2) / std::max(float(key[x]), 0.0f);
       }
     }

@@ -45,21 +45,23 @@ struct CellKey {
 };
 struct CellHash {
   std::size_t operator()(const CellKey& k) const {
-    return std::size_t(k.x * 73856093) ^ std::size_t(k.y * 19349663) ^ std::size_t(k.z * 83492791);
+    return std::size_t(std::uint64_t(k.x) * 73856093u ^ std::uint64_t(k.y) * 19349663u ^
+                       std::uint64_t(k.z) * 83492791u);
   }
 };
 
 // Merges positions closer than `tolerance` (in every coordinate) on a hash grid whose cells
-// are twice the tolerance wide, so only the 27 neighbouring cells need checking.
-std::vector<std::uint32_t> weld(std::span<const Vec3> positions, double tolerance,
-                                std::vector<Vec3>& welded) {
-  const double cell = std::max(2 * tolerance, std::numeric_limits<double>::min());
+// are twice the tolerance wide, so only the 27 neighbouring cells need checking. Cells count
+// from the box's low corner: keys stay below diagonal / cell = 5e8 wherever the mesh sits.
+std::vector<std::uint32_t> weld(std::span<const Vec3> positions, const Bounds3& box,
+                                double tolerance, std::vector<Vec3>& welded) {
+  const double cell = tolerance > 0 ? 2 * tolerance : 1.0;  // one point: any cell will do
   std::unordered_map<CellKey, std::vector<std::uint32_t>, CellHash> grid;
   grid.reserve(positions.size());
   std::vector<std::uint32_t> remap(positions.size());
   auto key_of = [&](Vec3 p) {
-    return CellKey{std::int64_t(std::floor(p.x / cell)), std::int64_t(std::floor(p.y / cell)),
-                   std::int64_t(std::floor(p.z / cell))};
+    const Vec3 q = (p - box.lo) / cell;
+    return CellKey{std::int64_t(q.x), std::int64_t(q.y), std::int64_t(q.z)};
   };
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const Vec3 p = positions[i];
@@ -125,7 +127,7 @@ Mesh Mesh::build(const PolygonSoup& soup, const std::string& name, const Context
   for (const Vec3& p : soup.positions) box.add(p);
   Mesh mesh;
   const std::vector<std::uint32_t> remap =
-      weld(soup.positions, kWeldTolerance * box.diagonal(), mesh.vertices);
+      weld(soup.positions, box, kWeldTolerance * box.diagonal(), mesh.vertices);
 
   std::size_t degenerate = 0, split = 0;
   auto add_face = [&mesh](std::span<const std::uint32_t> loop, const Plane& plane, double area) {

@@ -66,6 +66,17 @@ TEST(Mesh, TinyAndHugeCoordinatesWeldAlike) {
   }
 }
 
+TEST(Mesh, WeldingIsExactFarFromTheOriginAndForASinglePoint) {
+  PolygonSoup far = unwelded(box({500, 0, 0}, {500.1, 0.1, 0.1}));
+  EXPECT_EQ(Mesh::build(far, "far", {}).vertices.size(), 8u);
+  PolygonSoup point;
+  point.positions = {{1, 1, 1}, {1, 1, 1}, {1, 1, 1}};
+  point.add_face({0, 1, 2});
+  Warnings w;
+  EXPECT_EQ(Mesh::build(point, "point", w.ctx()).face_count(), 0u);
+  EXPECT_EQ(w.messages.size(), 1u);
+}
+
 TEST(Mesh, OpenQuadHasFourBoundaryEdges) {
   const Mesh m = Mesh::build(polygon({{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}}), "q", {});
   EXPECT_EQ(m.boundary_edge_count(), 4u);

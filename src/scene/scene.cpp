@@ -12,11 +12,17 @@ double Camera::tan_half_fov() const {
   return std::tan(fov_y_deg * std::numbers::pi / 360.0);
 }
 
-Vec3 Camera::pixel_ray(int column, int row) const {
+Camera::PixelGrid Camera::pixel_grid() const {
+  // x = (2 (c + 0.5) / W - 1) t W / H and y = (1 - 2 (w + 0.5) / H) t, as steps from pixel 0.
   const double t = tan_half_fov();
-  const double x = (2.0 * (column + 0.5) / width - 1.0) * t * width / height;
-  const double y = (1.0 - 2.0 * (row + 0.5) / height) * t;
-  return normalize(forward() + x * right() + y * true_up());
+  const double step = 2.0 * t / height;
+  return {step, -t * width / height + 0.5 * step, t - 0.5 * step};
+}
+
+Vec3 Camera::pixel_ray(int column, int row) const {
+  const PixelGrid g = pixel_grid();
+  return normalize(forward() + (g.x0 + g.step * column) * right() +
+                   (g.y0 - g.step * row) * true_up());
 }
 
 void Scene::finalize() {

@@ -16,6 +16,16 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// Embree stores coordinates in float and treats |x| >= 1.8e18 as invalid; far below that,
+// every stage has headroom in double.
+constexpr double kMaxCoordinate = 1e15;
+
+Vec3 position(const JsonCursor& c) {
+  const Vec3 p = c.vec3();
+  if (max_abs_component(p) > kMaxCoordinate) c.fail("coordinates beyond +-1e15 are not supported");
+  return p;
+}
+
 nlohmann::json parse_json(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "cannot open scene file");
@@ -44,8 +54,8 @@ void warn_unknown(const JsonCursor& c, const std::vector<std::string>& known, co
 
 Camera read_camera(const JsonCursor& c, Camera camera, const Context& ctx, const std::string& file) {
   warn_unknown(c, {"position", "look_at", "up", "fov_y_deg", "width", "height"}, ctx, file);
-  if (c.has("position")) camera.position = c["position"].vec3();
-  if (c.has("look_at")) camera.look_at = c["look_at"].vec3();
+  if (c.has("position")) camera.position = position(c["position"]);
+  if (c.has("look_at")) camera.look_at = position(c["look_at"]);
   if (c.has("up")) camera.up = c["up"].vec3();
   if (c.has("fov_y_deg")) camera.fov_y_deg = c["fov_y_deg"].number();
   if (c.has("width")) camera.width = c["width"].integer(1, 16384);
@@ -58,8 +68,8 @@ Camera read_camera(const JsonCursor& c, Camera camera, const Context& ctx, const
     c.has("up") ? c["up"].fail("is zero or parallel to the view direction")
                 : c.fail("up [0, 1, 0] is parallel to the view direction; give camera.up");
   }
-  if (!(camera.fov_y_deg > 0 && camera.fov_y_deg < 180)) {
-    c["fov_y_deg"].fail("must lie strictly between 0 and 180 degrees");
+  if (!(camera.fov_y_deg >= 1e-3 && camera.fov_y_deg <= 179.9)) {
+    c["fov_y_deg"].fail("must lie between 0.001 and 179.9 degrees");
   }
   return camera;
 }
@@ -70,7 +80,7 @@ Light read_light(const JsonCursor& c, const Context& ctx, const std::string& fil
   if (type == "point") {
     warn_unknown(c, {"type", "position"}, ctx, file);
     light.type = Light::Type::point;
-    light.position = c["position"].vec3();
+    light.position = position(c["position"]);
   } else if (type == "directional") {
     warn_unknown(c, {"type", "direction"}, ctx, file);
     light.type = Light::Type::directional;
@@ -87,11 +97,20 @@ void apply_object_transform(const JsonCursor& c, std::vector<Vec3>& positions) {
   if (!c.has("transform")) return;
   const JsonCursor t = c["transform"];
   const Vec3 scale = t.has("scale") ? t["scale"].scale3() : Vec3{1, 1, 1};
+  if (scale.x == 0 || scale.y == 0 || scale.z == 0) {
+    t["scale"].fail("a zero scale flattens the object to nothing");
+  }
   const Vec3 rotate = t.has("rotate_deg") ? t["rotate_deg"].vec3() : Vec3{};
   const Vec3 translate = t.has("translate") ? t["translate"].vec3() : Vec3{};
   apply_transform(positions, scale, rotate, translate);
-  if (!std::all_of(positions.begin(), positions.end(), [](Vec3 p) { return is_finite(p); })) {
-    t.fail("makes a coordinate overflow to infinity");
+}
+
+void check_coordinates(const JsonCursor& c, const std::vector<Vec3>& positions) {
+  for (const Vec3& p : positions) {
+    if (max_abs_component(p) > kMaxCoordinate || !is_finite(p)) {
+      c.fail(std::string(c.has("transform") ? "after its transform, " : "") +
+             "a vertex lies beyond +-1e15, which is not supported");
+    }
   }
 }
 
@@ -118,6 +137,7 @@ void read_objects(const JsonCursor& list, const fs::path& dir, Scene& scene, con
     const std::string name = c.has("name") ? c["name"].string() : "";
     for (GeneratedObject& part : parts) {
       apply_object_transform(c, part.soup.positions);
+      check_coordinates(c, part.soup.positions);
       const std::string label = name.empty() ? part.name : name;
       scene.objects.push_back({label, Mesh::build(part.soup, file + ": " + label, ctx), 0});
     }
@@ -131,13 +151,18 @@ Scene load_scene_file(const fs::path& path, const Context& ctx) {
   const std::string file = path.string();
   const JsonCursor root(json, file, "");
   if (!json.is_object()) throw InputError(file, "a scene file holds one JSON object");
-  warn_unknown(root, {"generator", "camera", "lights", "objects"}, ctx, file);
+  if (!root.has("generator")) warn_unknown(root, {"camera", "lights", "objects"}, ctx, file);
 
   Scene scene;
   if (root.has("generator")) {
-    scene = make_builtin_scene(root["generator"].string(), ctx);
+    // The scene file's own keys are not the generator's parameters.
+    nlohmann::json params = json;
+    for (const char* key : {"camera", "lights", "objects"}) params.erase(key);
+    const std::string spec = root["generator"].string();
+    scene = spec.find(':') == std::string::npos ? make_builtin_scene(params, file, ctx)
+                                                : make_builtin_scene(spec, ctx);
   } else if (!root.has("camera")) {
-    root["camera"];  // throws: key 'camera' is missing
+    throw InputError(file + ": key 'camera'", "is missing");
   }
   scene.name = path.stem().string();
   if (root.has("camera")) scene.camera = read_camera(root["camera"], scene.camera, ctx, file);

@@ -128,7 +128,13 @@ TEST_F(SceneFileTest, OverflowingTransformIsRejected) {
   EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
                              R"({"type": "point", "position": [3, 10, 4]})",
                              R"({"mesh": "ground.obj", "transform": {"scale": 1e308}})")),
-              HasSubstr("key 'objects[0].transform': makes a coordinate overflow"));
+              HasSubstr("key 'objects[0]': after its transform, a vertex lies beyond +-1e15"));
+  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                             R"({"type": "point", "position": [3, 10, 4]})",
+                             R"({"mesh": "ground.obj", "transform": {"scale": [1, 0, 1]}})")),
+              HasSubstr("key 'objects[0].transform.scale': a zero scale"));
+  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0], "fov_y_deg": 1e-300)")),
+              HasSubstr("key 'camera.fov_y_deg': must lie between"));
 }
 
 TEST_F(SceneFileTest, SubdivisionSurfacesAreRefusedRatherThanDrawnWrong) {
@@ -136,6 +142,14 @@ TEST_F(SceneFileTest, SubdivisionSurfacesAreRefusedRatherThanDrawnWrong) {
                              R"({"type": "point", "position": [3, 10, 4]})",
                              R"({"mesh": "ground.obj", "subdivision": "catmull-clark"})")),
               HasSubstr("key 'objects[0].subdivision'"));
+}
+
+TEST_F(SceneFileTest, TopLevelGeneratorTakesItsParametersFromTheFile) {
+  const Scene s = load_scene_file(write("scene.json", R"({"generator": "cubes", "count": 8})"), quiet_);
+  EXPECT_EQ(s.face_count(), 8u * 6 + 1);
+  EXPECT_EQ(load_scene_file(write("scene.json", R"({"generator": "tetra:2"})"), quiet_).face_count(),
+            66u);
+  EXPECT_THAT(error_of(R"({"generator": "cubes", "cuont": 8})"), HasSubstr("cuont"));
 }
 
 TEST_F(SceneFileTest, UnknownSceneNameListsTheBuiltIns) {

@@ -42,16 +42,6 @@ inline bool is_finite(Vec3 a) {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }
 
-/// \brief Single-precision 3-vector: compact storage for per-pixel data and Embree input.
-struct Vec3f {
-  float x = 0, y = 0, z = 0;
-  Vec3f() = default;
-  constexpr Vec3f(float x_, float y_, float z_) : x(x_), y(y_), z(z_) {}
-  explicit constexpr Vec3f(Vec3 v)
-      : x(static_cast<float>(v.x)), y(static_cast<float>(v.y)), z(static_cast<float>(v.z)) {}
-  constexpr Vec3 to_double() const { return {x, y, z}; }
-};
-
 /// \brief Axis-aligned bounding box; empty until a point is added.
 struct Bounds3 {
   Vec3 lo{INFINITY, INFINITY, INFINITY};

@@ -33,7 +33,8 @@ using MethodCounters = std::vector<std::pair<std::string, double>>;
 class MethodOptions {
  public:
   MethodOptions() = default;
-  explicit MethodOptions(std::map<std::string, std::string> values) : values_(std::move(values)) {}
+  MethodOptions(std::string method, std::map<std::string, std::string> values)
+      : method_(std::move(method)), values_(std::move(values)) {}
   /// Value of \p key parsed as a number, or \p fallback; InputError if it is not a number.
   double number(const std::string& key, double fallback) const;
   /// Value of \p key, or \p fallback.
@@ -42,6 +43,7 @@ class MethodOptions {
   void expect_only(std::string_view method, const std::vector<std::string>& known) const;
 
  private:
+  std::string method_;
   std::map<std::string, std::string> values_;
 };
 

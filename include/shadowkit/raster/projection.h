@@ -39,4 +39,9 @@ struct RasterProjection {
   double depth_key(double zv) const { return orthographic ? -zv : 1.0 / zv; }
 };
 
+/// A near-plane depth for a perspective view from \p eye: small against the distance to the
+/// farthest corner of \p bounds (the 1/z depth key keeps its precision even so), so that in
+/// practice nothing a ray could hit is clipped.
+double near_plane_for(const Bounds3& bounds, Vec3 eye);
+
 }  // namespace shadowkit

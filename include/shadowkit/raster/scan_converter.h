@@ -43,7 +43,8 @@ class ScanConverter {
   DepthFaceBuffer rasterize(const RasterProjection& view, const Context& ctx) const;
 
   /// Calls \p fn once per finished tile, from several threads at once: the building block
-  /// of rasterize() and of passes that post-process a tile while it is in cache.
+  /// of rasterize() and of passes that post-process a tile while it is in cache. \p fn must
+  /// not start parallel work itself: the tile's buffer is the worker thread's own.
   void rasterize_tiles(const RasterProjection& view, const Context& ctx,
                        const std::function<void(const RasterTile&)>& fn) const;
 

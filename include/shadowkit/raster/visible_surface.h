@@ -18,7 +18,7 @@ namespace shadowkit {
 class VisibleSurfaceBuffer {
  public:
   int width = 0, height = 0;
-  std::vector<float> depth;         ///< distance from the eye along the unit pixel ray
+  std::vector<float> depth;         ///< distance along the unit pixel ray; +inf: background
   std::vector<std::uint32_t> face;  ///< global face id or kNoFace
 
   std::size_t index(int x, int y) const { return std::size_t(y) * width + x; }
@@ -42,7 +42,7 @@ class VisibleSurfaceBuffer {
  private:
   const Scene* scene_ = nullptr;
   Vec3 forward_, right_, up_;
-  double step_ = 0, x_base_ = 0, y_base_ = 0;
+  Camera::PixelGrid grid_{};
 };
 
 /// Scan-converts the scene from its camera into \p out, reusing its storage (a new frame of
@@ -51,9 +51,5 @@ void render_visible_surfaces(const Scene& scene, const Context& ctx, VisibleSurf
 
 /// The same, into a new buffer.
 VisibleSurfaceBuffer render_visible_surfaces(const Scene& scene, const Context& ctx);
-
-/// The near-plane depth used for the camera: small against the scene's extent from the eye,
-/// so that nothing a ray could hit is clipped in practice.
-double camera_near_plane(const Scene& scene);
 
 }  // namespace shadowkit

@@ -27,6 +27,11 @@ std::vector<GeneratedObject> generate_objects(const nlohmann::json& params,
 /// Throws InputError if the name is unknown.
 Scene make_builtin_scene(const std::string& spec, const Context& ctx);
 
+/// The same from parameters such as {"generator": "cubes", "count": 2000}; \p where labels
+/// errors.
+Scene make_builtin_scene(const nlohmann::json& params, const std::string& where,
+                         const Context& ctx);
+
 /// Names of the built-in scenes, for help texts and error messages.
 std::vector<std::string> builtin_scene_names();
 

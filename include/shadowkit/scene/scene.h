@@ -24,6 +24,13 @@ struct Camera {
   Vec3 right() const { return normalize(cross(forward(), up)); }
   Vec3 true_up() const { return cross(right(), forward()); }
   double tan_half_fov() const;
+
+  /// The contract's pixel rays as a grid: the ray through the centre of pixel (c, w) is
+  /// forward + (x0 + c step) right + (y0 - w step) true_up, before normalisation.
+  struct PixelGrid {
+    double step, x0, y0;
+  };
+  PixelGrid pixel_grid() const;
   /// Unit ray direction through the centre of pixel (column, row), row 0 at the top.
   Vec3 pixel_ray(int column, int row) const;
 };

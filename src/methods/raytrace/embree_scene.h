@@ -7,7 +7,9 @@
 namespace shadowkit {
 
 /// \brief One Embree device and one committed scene; triangle primID i is the scene's
-/// triangle i, so primID maps to a face through TriangleList::triangle_face.
+/// triangle i, so primID maps to a face through TriangleList::triangle_face. Embree works in
+/// float, so positions are stored relative to origin() (the centre of the scene's bounds):
+/// their precision then depends on the scene's size, not on where it sits.
 class EmbreeScene {
  public:
   explicit EmbreeScene(const Scene& scene);
@@ -16,6 +18,8 @@ class EmbreeScene {
   EmbreeScene& operator=(const EmbreeScene&) = delete;
 
   RTCScene handle() const { return scene_; }
+  /// Subtract from world positions before handing them to Embree.
+  Vec3 origin() const { return origin_; }
   /// Bytes Embree reports for its BVH and buffers.
   std::size_t memory_bytes() const { return memory_bytes_; }
 
@@ -23,6 +27,7 @@ class EmbreeScene {
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   std::size_t memory_bytes_ = 0;
+  Vec3 origin_;
 };
 
 }  // namespace shadowkit

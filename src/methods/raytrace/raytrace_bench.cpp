@@ -28,7 +28,7 @@ const Fixture& cubes() {
 void BM_RawEmbree(benchmark::State& state) {
   const Fixture& f = cubes();
   const EmbreeScene embree(f.scene);
-  const Vec3 light = f.scene.lights[0].position;
+  const Vec3 light = f.scene.lights[0].position - embree.origin();
   const int tiles_x = (f.vsb.width + 15) / 16, tiles_y = (f.vsb.height + 15) / 16;
   for (auto _ : state) {
     tbb::parallel_for(0, tiles_x * tiles_y, [&](int tile) {
@@ -45,7 +45,7 @@ void BM_RawEmbree(benchmark::State& state) {
           valid[k] = x < f.vsb.width && f.vsb.covered(i) ? -1 : 0;
           if (!valid[k]) continue;
           const Vec3 n = f.scene.face_plane(f.vsb.face[i]).normal;
-          const Vec3 o = f.vsb.point(i) + n * 1e-4;
+          const Vec3 o = f.vsb.point(i) - embree.origin() + n * 1e-4;
           const Vec3 d = light - o;
           rays.org_x[k] = float(o.x), rays.org_y[k] = float(o.y), rays.org_z[k] = float(o.z);
           rays.dir_x[k] = float(d.x), rays.dir_y[k] = float(d.y), rays.dir_z[k] = float(d.z);

@@ -52,11 +52,11 @@ class ShadowPacket {
 
 }  // namespace
 
-double face_offset(const Mesh& mesh, std::size_t face) {
+double face_offset(const Mesh& mesh, std::size_t face, Vec3 origin) {
   double magnitude = 0, deviation = 0;
   for (std::uint32_t k = 0; k < mesh.face_size(face); ++k) {
     const Vec3 v = mesh.vertices[mesh.face_vertex(face, k)];
-    magnitude = std::max(magnitude, max_abs_component(v));
+    magnitude = std::max(magnitude, max_abs_component(v - origin));
     deviation = std::max(deviation, std::abs(mesh.planes[face].distance(v)));
   }
   return kOffsetUlps * magnitude + 2 * deviation;
@@ -74,7 +74,7 @@ void RaytraceMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
   face_offset_.resize(scene.face_count());
   for (const SceneObject& object : scene.objects) {
     for (std::size_t f = 0; f < object.mesh.face_count(); ++f) {
-      face_offset_[object.first_face + f] = float(face_offset(object.mesh, f));
+      face_offset_[object.first_face + f] = float(face_offset(object.mesh, f, embree_->origin()));
     }
   }
 }
@@ -95,6 +95,7 @@ void RaytraceMethod::build(const Scene& scene, std::size_t light, const Context&
 void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
                            ShadowMask& mask, const Context& /*ctx*/) {
   const bool point_light = light_.type == Light::Type::point;
+  const Vec3 origin = embree_->origin(), light_position = light_.position - origin;
   // A point light sits at t = 1 on an unnormalised ray; stop just short of it.
   const float tfar = point_light ? 1.0f - 1e-6f : std::numeric_limits<float>::infinity();
   const int tiles_x = (surfaces.width + kTile - 1) / kTile;
@@ -113,10 +114,10 @@ void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfa
         mask.pixels[i] = kMaskShadow;
         continue;
       }
-      const Vec3 p = surfaces.point(i);
+      const Vec3 p = surfaces.point(i) - origin;
       const double offset = std::copysign(shadow_ray_offset(p, std::abs(signed_offset)), signed_offset);
       const Vec3 o = p + scene.face_plane(surfaces.face[i]).normal * offset;
-      packet.set(k, o, point_light ? light_.position - o : -light_.direction, tfar);
+      packet.set(k, o, point_light ? light_position - o : -light_.direction, tfar);
     }
     if (!packet.trace(embree_->handle(), &context)) return 0;
     std::size_t rays = 0;

@@ -36,10 +36,12 @@ class RaytraceMethod final : public ShadowMethod {
 /// stores and intersects the face's triangles in float, so their error grows with the
 /// largest coordinate of the face's vertices; a face that is planar only within the mesh
 /// tolerance adds its deviation from its plane.
-double face_offset(const Mesh& mesh, std::size_t face);
+/// Coordinates are taken relative to \p origin, as Embree stores them.
+double face_offset(const Mesh& mesh, std::size_t face, Vec3 origin);
 
-/// The offset for a point \p p on a face with face_offset() \p face_part: float storage of the
-/// point itself errs in proportion to its largest coordinate.
+/// The offset for a point \p p (relative to Embree's origin) on a face with face_offset()
+/// \p face_part: float storage of the point itself errs in proportion to its largest
+/// coordinate.
 double shadow_ray_offset(Vec3 p, double face_part);
 
 }  // namespace shadowkit

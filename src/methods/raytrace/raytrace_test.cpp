@@ -116,5 +116,23 @@ TEST(Raytrace, WorksAtTinyAndHugeScales) {
   }
 }
 
+TEST(Raytrace, PrecisionDoesNotDependOnWhereTheSceneSits) {
+  // The analytic square scene shrunk to 0.02 units and moved 1e5 from the origin, where a
+  // float's spacing (0.008) exceeds the whole scene: Embree stores coordinates relative to
+  // the scene's centre, so the shadow is still exact.
+  const double s = 1e-3;
+  const Vec3 at{1e5, 0, -1e5};
+  const Scene scene = testing::make_scene(
+      testing::camera(at + Vec3{0, 9, 6} * s, at, 120, 90),
+      {testing::point_light(at + Vec3{0, 4, 0} * s)},
+      {testing::horizontal_quad(at.x - 10 * s, at.x + 10 * s, at.z - 10 * s, at.z + 10 * s, 0),
+       testing::horizontal_quad(at.x - s, at.x + s, at.z - s, at.z + s, s)});
+  const ShadowMask mask = shade(scene);
+  expect_ground_shadow(scene, mask, [&](Vec3 p) {
+    const double edge = (std::max(std::abs(p.x - at.x), std::abs(p.z - at.z)) - 4.0 / 3.0 * s) / s;
+    return std::abs(edge) < 1e-2 ? -1 : int(edge < 0);
+  });
+}
+
 }  // namespace
 }  // namespace shadowkit

@@ -20,17 +20,6 @@ constexpr std::array<FaceAxes, CubeMap::kFaces> kFaceAxes{{
     {{0, 0, 1}, {0, 1, 0}},
     {{0, 0, -1}, {0, 1, 0}},
 }};
-
-// Near-plane depth for the light's views: tiny against the scene's extent from the light, as
-// for the camera (camera_near_plane): the 1/zv key keeps its relative precision, and only
-// geometry practically touching the light is clipped.
-double light_near_plane(const Scene& scene, Vec3 light) {
-  const Bounds3& b = scene.bounds();
-  if (b.empty()) return 1e-6;
-  const Vec3 far = max(b.hi - light, light - b.lo);
-  return std::max(length(far) * 1e-7, 1e-300);
-}
-
 }  // namespace
 
 int CubeMap::face_of(Vec3 d) {
@@ -48,7 +37,7 @@ RasterProjection CubeMap::face_view(int face, Vec3 eye, int resolution, double n
 
 void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution, const Context& ctx) {
   light_position_ = light_position;
-  const double near = light_near_plane(scene, light_position);
+  const double near = near_plane_for(scene.bounds(), light_position);
   for (int f = 0; f < kFaces; ++f) {
     faces_[f].render(scene, face_view(f, light_position, resolution, near), ctx);
   }

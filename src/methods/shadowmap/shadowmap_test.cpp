@@ -92,7 +92,7 @@ Rendered render(const Scene& scene, ShadowMapMethod& method) {
 }
 
 ShadowMapMethod make(std::map<std::string, std::string> options) {
-  return ShadowMapMethod(MethodOptions(std::move(options)));
+  return ShadowMapMethod(MethodOptions("shadowmap", std::move(options)));
 }
 
 // Compares the ground's mask with an analytic square shadow [cx +- h] x [cz +- h]: pixels

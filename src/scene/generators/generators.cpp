@@ -207,10 +207,29 @@ Scene make_builtin_scene(const std::string& spec, const Context& ctx) {
     params[std::string(entry->spec_key)] =
         spec_value(*entry, std::string_view(spec).substr(colon + 1), where);
   }
-  SceneParts parts = entry->build(ParamReader(params, where));
+  Scene scene = make_builtin_scene(params, where, ctx);
+  scene.name = spec;
+  return scene;
+}
+
+Scene make_builtin_scene(const nlohmann::json& params, const std::string& where,
+                         const Context& ctx) {
+  using namespace generators;
+  const ParamReader reader(params, where);
+  const auto name_it = params.find("generator");
+  if (name_it == params.end() || !name_it->is_string()) {
+    reader.fail("generator", "expected the name of a built-in scene");
+  }
+  const std::string name = name_it->get<std::string>();
+  const SceneEntry* entry = find_scene(name);
+  if (entry == nullptr) {
+    reader.fail("generator", "unknown built-in scene '" + name + "' (known: " +
+                                 joined_names(false) + ")");
+  }
+  SceneParts parts = entry->build(reader);
 
   Scene scene;
-  scene.name = spec;
+  scene.name = name;
   scene.camera = parts.camera;
   scene.lights = std::move(parts.lights);
   for (const GeneratedObject& object : parts.objects) {
