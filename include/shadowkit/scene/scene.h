@@ -42,6 +42,10 @@ struct Light {
   Vec3 position;   ///< point lights
   Vec3 direction;  ///< directional lights: unit direction in which the light travels
 
+  static Light point(Vec3 position) { return {Type::point, position, {}}; }
+  /// \p direction: the way the light travels (need not be unit length).
+  static Light directional(Vec3 direction) { return {Type::directional, {}, normalize(direction)}; }
+
   /// Unit vector from \p p toward the light.
   Vec3 direction_to(Vec3 p) const {
     return type == Type::point ? normalize(position - p) : -direction;

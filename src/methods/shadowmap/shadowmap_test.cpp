@@ -47,20 +47,6 @@ Camera small_camera(Vec3 position, Vec3 look_at, double fov = 60) {
   return c;
 }
 
-Light point_light(Vec3 p) {
-  Light l;
-  l.type = Light::Type::point;
-  l.position = p;
-  return l;
-}
-
-Light directional_light(Vec3 d) {
-  Light l;
-  l.type = Light::Type::directional;
-  l.direction = normalize(d);
-  return l;
-}
-
 // Object 0: ground y = 0 over [-10, 10]^2; object 1 (optional): the square y = 1 over [-1, 1]^2.
 Scene square_scene(const Light& light, const Camera& camera, bool with_square = true) {
   Scene scene;
@@ -137,7 +123,7 @@ const Camera kTopCamera = small_camera({0, 2.5, 5}, {0, 0, 0}, 45);
 // (1) Point light at (0, 4, 0): the square's shadow is the square scaled by 4/3. A texel of the
 // -Y cube face is 2 * 4 / resolution wide on the ground (view depth 4).
 TEST(ShadowMap, PointLightShadowMatchesAnalyticSquare) {
-  const Scene scene = square_scene(point_light({0, 4, 0}), kTopCamera);
+  const Scene scene = square_scene(Light::point({0, 4, 0}), kTopCamera);
   int errors_at_16 = 0, errors_at_512 = 0;
   for (int resolution : {16, 64, 512}) {
     SCOPED_TRACE(resolution);
@@ -164,7 +150,7 @@ TEST(ShadowMap, PointLightShadowMatchesAnalyticSquare) {
 // y = 0. An orthographic texel stretches by 1 / |direction.y| on the ground.
 TEST(ShadowMap, DirectionalLightShadowMatchesAnalyticSquare) {
   const Vec3 d = normalize(Vec3{0.3, -1, 0.2});
-  const Scene scene = square_scene(directional_light(d), kTopCamera);
+  const Scene scene = square_scene(Light::directional(d), kTopCamera);
   for (int resolution : {64, 512}) {
     SCOPED_TRACE(resolution);
     ShadowMapMethod method = make({{"resolution", std::to_string(resolution)}});
@@ -181,7 +167,7 @@ TEST(ShadowMap, DirectionalLightShadowMatchesAnalyticSquare) {
 
 // PCF keeps the shadow within the kernel's reach of the exact edge.
 TEST(ShadowMap, PercentageCloserFilteringKeepsShadowShape) {
-  const Scene scene = square_scene(point_light({0, 4, 0}), kTopCamera);
+  const Scene scene = square_scene(Light::point({0, 4, 0}), kTopCamera);
   for (int pcf : {3, 5}) {
     SCOPED_TRACE(pcf);
     ShadowMapMethod method = make({{"resolution", "256"}, {"pcf", std::to_string(pcf)}});
@@ -237,7 +223,7 @@ TEST(ShadowMap, CubeFaceSelectionCoversAllDirections) {
 Scene box_scene(bool with_occluder) {
   Scene scene;
   scene.camera = small_camera({0.5, 0.3, 0.2}, {1, 0, 0});
-  scene.lights = {point_light({0, 0, 0})};
+  scene.lights = {Light::point({0, 0, 0})};
   std::vector<Vec3> v;
   for (int k = 0; k < 8; ++k)
     v.push_back({k & 1 ? 5.0 : -5.0, k & 2 ? 5.0 : -5.0, k & 4 ? 5.0 : -5.0});
@@ -298,7 +284,7 @@ TEST(ShadowMap, CubeMapEdgesAndCornersLookUpCorrectly) {
 // (acne); the default bias removes all of it.
 TEST(ShadowMap, ZeroBiasShowsAcneDefaultBiasDoesNot) {
   const Camera camera = small_camera({0, 6, 12}, {0, 0, 0});
-  for (const Light& light : {directional_light({1, -0.2, 0.3}), point_light({0, 3, 0})}) {
+  for (const Light& light : {Light::directional({1, -0.2, 0.3}), Light::point({0, 3, 0})}) {
     SCOPED_TRACE(light.type == Light::Type::point ? "point" : "directional");
     const Scene scene = square_scene(light, camera, /*with_square=*/false);
     ShadowMapMethod no_bias = make({{"resolution", "512"}, {"bias", "0"}, {"slope_bias", "0"}});
@@ -316,7 +302,7 @@ TEST(ShadowMap, ZeroBiasShowsAcneDefaultBiasDoesNot) {
 
 // A bias larger than the gap between caster and receiver lifts the shadow off: peter-panning.
 TEST(ShadowMap, LargeBiasDetachesShadow) {
-  const Scene scene = square_scene(point_light({0, 4, 0}), kTopCamera);
+  const Scene scene = square_scene(Light::point({0, 4, 0}), kTopCamera);
   ShadowMapMethod method = make({{"resolution", "256"}, {"bias", "1.5"}});
   const Rendered r = render(scene, method);
   EXPECT_EQ(count_mask(r, 0, kMaskShadow), 0);
@@ -340,7 +326,7 @@ TEST(ShadowMap, RejectsBadOptions) {
 
 // (6) Condition 1: the open square seen from below, with the light above, is in shadow.
 TEST(ShadowMap, UndersideOfOpenSquareIsInShadow) {
-  const Scene scene = square_scene(point_light({0, 4, 0}), small_camera({0, 0.5, 2.5}, {0, 1, 0}));
+  const Scene scene = square_scene(Light::point({0, 4, 0}), small_camera({0, 0.5, 2.5}, {0, 1, 0}));
   ShadowMapMethod method = make({{"resolution", "64"}});
   const Rendered r = render(scene, method);
   EXPECT_GT(count_mask(r, 1, kMaskShadow), 100);
@@ -348,7 +334,7 @@ TEST(ShadowMap, UndersideOfOpenSquareIsInShadow) {
 }
 
 TEST(ShadowMap, MemoryAndCounters) {
-  const Scene point = square_scene(point_light({0, 4, 0}), kTopCamera);
+  const Scene point = square_scene(Light::point({0, 4, 0}), kTopCamera);
   ShadowMapMethod method = make({{"resolution", "32"}});
   render(point, method);
   EXPECT_EQ(method.memory_bytes(), 6u * 32 * 32 * sizeof(float));
@@ -359,7 +345,7 @@ TEST(ShadowMap, MemoryAndCounters) {
   EXPECT_GT(c["covered_texels"], 0);
   EXPECT_GT(c["depth_tests"], 0);
 
-  const Scene directional = square_scene(directional_light({0, -1, 0.1}), kTopCamera);
+  const Scene directional = square_scene(Light::directional({0, -1, 0.1}), kTopCamera);
   render(directional, method);
   EXPECT_EQ(method.memory_bytes(), 32u * 32 * sizeof(float));
   c.clear();

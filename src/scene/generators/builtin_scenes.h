@@ -29,10 +29,6 @@ SceneParts three_lights_scene(const ParamReader& params);
 /// The analytic test: a square above a plane under a point light on its axis.
 SceneParts square_scene(const ParamReader& params);
 
-/// A point light at \p position.
-Light point_light(Vec3 position);
-/// A directional light travelling along \p direction (normalized here).
-Light directional_light(Vec3 direction);
 /// A camera at \p position looking at \p look_at with +y up, 1920×1080.
 Camera camera_looking_at(Vec3 position, Vec3 look_at, double fov_y_deg = 45);
 /// A ground quad object "ground": the plane y = 0 over [-half, half]².

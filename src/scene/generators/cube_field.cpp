@@ -112,7 +112,7 @@ SceneParts cube_field_scene(const ParamReader& params) {
   SceneParts parts;
   parts.objects.push_back(std::move(cubes));
   parts.objects.push_back(ground_object(kGroundHalf));
-  parts.lights.push_back(point_light(kLight));
+  parts.lights.push_back(Light::point(kLight));
   parts.camera = camera_looking_at(kCamera, kLookAt);
   return parts;
 }

@@ -14,20 +14,6 @@
 namespace shadowkit {
 namespace generators {
 
-Light point_light(Vec3 position) {
-  Light light;
-  light.type = Light::Type::point;
-  light.position = position;
-  return light;
-}
-
-Light directional_light(Vec3 direction) {
-  Light light;
-  light.type = Light::Type::directional;
-  light.direction = normalize(direction);
-  return light;
-}
-
 Camera camera_looking_at(Vec3 position, Vec3 look_at, double fov_y_deg) {
   Camera camera;
   camera.position = position;
@@ -57,20 +43,21 @@ GeneratedObject box_primitive(const ParamReader& params) {
   return box;
 }
 
-GeneratedObject quad_primitive(const ParamReader& params) {
+// An open horizontal square facing +y; `quad` and `ground` differ in name and default size.
+GeneratedObject horizontal_square(const ParamReader& params, const char* name, double size) {
   params.allow_only({"size"});
-  const Vec3 size = params.size2("size", 2);
-  GeneratedObject quad{"quad", {}};
-  add_horizontal_quad(quad.soup, {0, 0, 0}, size.x, size.z);
-  return quad;
+  const Vec3 extent = params.size2("size", size);
+  GeneratedObject square{name, {}};
+  add_horizontal_quad(square.soup, {0, 0, 0}, extent.x, extent.z);
+  return square;
+}
+
+GeneratedObject quad_primitive(const ParamReader& params) {
+  return horizontal_square(params, "quad", 2);
 }
 
 GeneratedObject ground_primitive(const ParamReader& params) {
-  params.allow_only({"size"});
-  const Vec3 size = params.size2("size", 20);
-  GeneratedObject ground{"ground", {}};
-  add_horizontal_quad(ground.soup, {0, 0, 0}, size.x, size.z);
-  return ground;
+  return horizontal_square(params, "ground", 20);
 }
 
 GeneratedObject tetrahedron_primitive(const ParamReader& params) {

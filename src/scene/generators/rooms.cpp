@@ -68,7 +68,7 @@ SceneParts room_scene(const ParamReader& params) {
   // The light hangs near the ceiling (Thakur et al. Fig. 9(a): light inside the room); the
   // camera stands in the near corner at eye height.
   const auto scaled = [&](Vec3 p) { return Vec3{p.x * scale.x, p.y * scale.y, p.z * scale.z}; };
-  parts.lights.push_back(point_light(scaled({0.4, 5.3, -0.3})));
+  parts.lights.push_back(Light::point(scaled({0.4, 5.3, -0.3})));
   parts.camera = camera_looking_at(scaled({4.2, 2.4, 4.3}), scaled({-1.5, 1.1, -1.8}), 65);
   return parts;
 }
@@ -84,8 +84,8 @@ SceneParts table_scene(const ParamReader& params) {
     add_chair(new_object(parts, "chair-" + std::to_string(i)), chair_at[i], chair_turns[i]);
   }
   parts.objects.push_back(ground_object(6));
-  parts.lights.push_back(point_light({1.3, 3.1, 1.7}));
-  parts.lights.push_back(directional_light({-0.55, -1, -0.35}));
+  parts.lights.push_back(Light::point({1.3, 3.1, 1.7}));
+  parts.lights.push_back(Light::directional({-0.55, -1, -0.35}));
   parts.camera = camera_looking_at({2.4, 2.1, 3.0}, {0, 0.35, 0});
   return parts;
 }
@@ -99,9 +99,9 @@ SceneParts three_lights_scene(const ParamReader& params) {
             {0, 0, 1.8});
   add_tetrahedron(new_object(parts, "tetrahedron"), regular_tetrahedron({-1.5, 0, 2.4}, 1.8));
   parts.objects.push_back(ground_object(8));
-  parts.lights.push_back(point_light({-5.2, 6.5, 3.6}));
-  parts.lights.push_back(point_light({4.6, 5.1, 3.9}));
-  parts.lights.push_back(directional_light({0.35, -1, -0.45}));
+  parts.lights.push_back(Light::point({-5.2, 6.5, 3.6}));
+  parts.lights.push_back(Light::point({4.6, 5.1, 3.9}));
+  parts.lights.push_back(Light::directional({0.35, -1, -0.45}));
   parts.camera = camera_looking_at({1.2, 6.3, 11.5}, {0, 0.8, 0});
   return parts;
 }
@@ -119,7 +119,7 @@ SceneParts square_scene(const ParamReader& params) {
   SceneParts parts;
   add_horizontal_quad(new_object(parts, "square"), {0, height, 0}, 2, 2);
   parts.objects.push_back(ground_object(10));
-  parts.lights.push_back(point_light({0, light_height, 0}));
+  parts.lights.push_back(Light::point({0, light_height, 0}));
   parts.camera = camera_looking_at({0, 5.5, 5.5}, {0, 0.2, 0});
   return parts;
 }

@@ -56,7 +56,7 @@ SceneParts tetra_scene(const ParamReader& params) {
   SceneParts parts;
   parts.objects.push_back(std::move(tetra));
   parts.objects.push_back(std::move(ground));
-  parts.lights.push_back(point_light(kLight));
+  parts.lights.push_back(Light::point(kLight));
   parts.camera = camera_looking_at(kCamera, kLookAt);
   return parts;
 }

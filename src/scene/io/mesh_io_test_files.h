@@ -107,8 +107,10 @@ inline std::string cube_obj() {
   return s;
 }
 
-inline std::string cube_off() {
-  std::string s = "OFF\n# unit cube\n8 6 12\n";
+// "x y z" lines for the cube's vertices, then "4 a b c d" lines for its faces: the body that
+// OFF and ASCII PLY share.
+inline std::string cube_vertex_and_face_lines() {
+  std::string s;
   for (Vec3 p : kCubePositions) {
     s += std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
   }
@@ -120,20 +122,17 @@ inline std::string cube_off() {
   return s;
 }
 
+inline std::string cube_off() {
+  std::string s = "OFF\n# unit cube\n8 6 12\n";
+  return s + cube_vertex_and_face_lines();
+}
+
 inline std::string cube_ply_ascii() {
   std::string s =
       "ply\nformat ascii 1.0\ncomment unit cube\nelement vertex 8\nproperty float x\n"
       "property float y\nproperty float z\nelement face 6\nproperty list uchar int "
       "vertex_indices\nend_header\n";
-  for (Vec3 p : kCubePositions) {
-    s += std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
-  }
-  for (const auto& quad : kCubeQuads) {
-    s += "4";
-    for (std::uint32_t i : quad) s += " " + std::to_string(i);
-    s += "\n";
-  }
-  return s;
+  return s + cube_vertex_and_face_lines();
 }
 
 /// A binary PLY cube that also exercises skipped properties: a normal, a list on the
