@@ -1,6 +1,5 @@
 #include "shadow_map_method.h"
 
-#include <tbb/combinable.h>
 
 #include <algorithm>
 #include <cmath>
@@ -100,15 +99,12 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
   const bool point_light = light_.type == Light::Type::point;
   SHADOWKIT_CHECK((point_light ? cube_.texel_count() : ortho_.texel_count()) > 0);  // built
   const Vec3 eye = scene.camera.position;
-  tbb::combinable<std::size_t> tested;
   shade_each_pixel(surfaces, mask, [&](std::size_t i) {
     const Plane& plane = scene.face_plane(surfaces.face[i]);
     // Contract condition 1: a surface is two-sided, lit only on the side the light is on.
     if (!faces_light(plane, eye, light_)) return false;
-    ++tested.local();
     return passes_depth_test(plane, surfaces.point(i));
   });
-  depth_tests_ = double(tested.combine(std::plus<>())) * pcf_ * pcf_;
 }
 
 bool ShadowMapMethod::passes_depth_test(const Plane& plane, Vec3 p) const {
@@ -135,8 +131,7 @@ MethodCounters ShadowMapMethod::counters() const {
   return {
       {"map_texels", double(point_light ? cube_.texel_count() : ortho_.texel_count())},
       {"covered_texels", double(point_light ? cube_.covered_texels() : ortho_.covered_texels())},
-      {"faces", point_light ? 6.0 : 1.0},
-      {"depth_tests", depth_tests_}};
+      {"faces", point_light ? 6.0 : 1.0}};
 }
 
 }  // namespace shadowkit

@@ -68,7 +68,6 @@ class ShadowMapMethod final : public ShadowMethod {
   double bias_ = 0;
   shadowmap::CubeMap cube_;
   shadowmap::DepthMap ortho_;
-  double depth_tests_ = 0;
 };
 
 /// The orthographic view along \p direction that covers the 8 corners of \p bounds, with its
