@@ -20,10 +20,18 @@ TEST(Image, GrayPngRoundTripKeepsEveryValue) {
   std::filesystem::remove(path);
 }
 
-TEST(Image, WritingIntoAMissingDirectoryNamesThePath) {
+TEST(Image, MissingParentDirectoriesAreCreated) {
+  const auto dir = std::filesystem::temp_directory_path() / "shadowkit_image_test_dir";
+  std::filesystem::remove_all(dir);
+  write_png(dir / "a" / "b.png", Image<std::uint8_t>(2, 2));
+  EXPECT_TRUE(std::filesystem::exists(dir / "a" / "b.png"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Image, AnUnwritablePathIsNamedInTheError) {
   Image<std::uint8_t> image(2, 2);
-  EXPECT_THAT([&] { write_png("/nonexistent-dir/x.png", image); },
-              testing::ThrowsMessage<InputError>(testing::HasSubstr("/nonexistent-dir/x.png")));
+  EXPECT_THAT([&] { write_png("/proc/shadowkit/x.png", image); },
+              testing::ThrowsMessage<InputError>(testing::HasSubstr("/proc/shadowkit/x.png")));
 }
 
 }  // namespace

@@ -26,7 +26,8 @@ struct Rgb8 {
   friend bool operator==(Rgb8, Rgb8) = default;
 };
 
-/// Writes an 8-bit grayscale PNG; throws InputError naming the path if it cannot.
+/// Writes an 8-bit grayscale PNG, creating missing parent directories; throws InputError
+/// naming the path if it cannot.
 void write_png(const std::filesystem::path& path, const Image<std::uint8_t>& image);
 /// Writes an 8-bit RGB PNG; throws InputError naming the path if it cannot.
 void write_png(const std::filesystem::path& path, const Image<Rgb8>& image);
