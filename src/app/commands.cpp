@@ -1,10 +1,9 @@
 #include "shadowkit/app/commands.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "progress.h"
 #include "shadowkit/app/mask_compare.h"
@@ -40,9 +39,12 @@ std::vector<std::string> with_reference_first(std::vector<std::string> methods) 
 }
 
 nlohmann::json run_json(const MethodRun& run, double scan_ms) {
-  nlohmann::json j = {{"method", run.method},         {"light", run.light},
-                      {"prepare_ms", run.prepare_ms}, {"build_ms", run.build_ms},
-                      {"shade_ms", run.shade_ms},     {"scan_ms", scan_ms},
+  nlohmann::json j = {{"method", run.method},
+                      {"light", run.light},
+                      {"prepare_ms", run.prepare_ms},
+                      {"build_ms", run.build_ms},
+                      {"shade_ms", run.shade_ms},
+                      {"scan_ms", scan_ms},
                       {"memory_bytes", run.memory_bytes}};
   for (const auto& [key, value] : run.counters) j["counters"][key] = value;
   return j;
@@ -56,9 +58,10 @@ void print_row(const MethodRun& run, const MaskComparison* c) {
 }
 
 void print_header(const Scene& scene, const CameraPass& pass, bool with_mismatch) {
-  std::printf("scene %s: %u polygons, %zu triangles, %zu light(s), %dx%d; scan conversion %.2f ms\n",
-              scene.name.c_str(), scene.face_count(), scene.triangles().triangles.size(),
-              scene.lights.size(), pass.surfaces.width, pass.surfaces.height, pass.scan_ms);
+  std::printf(
+      "scene %s: %u polygons, %zu triangles, %zu light(s), %dx%d; scan conversion %.2f ms\n",
+      scene.name.c_str(), scene.face_count(), scene.triangles().triangles.size(),
+      scene.lights.size(), pass.surfaces.width, pass.surfaces.height, pass.scan_ms);
   std::printf("%-10s %-4s %10s %10s %10s %10s", "method", "light", "prepare_ms", "build_ms",
               "shade_ms", "memory_MB");
   if (with_mismatch) std::printf(" %11s %11s", "mismatch_%", "interior_%");
@@ -89,8 +92,8 @@ int run_render(const RenderOptions& options, const Context& ctx) {
   make_method(options.method, settings_for(options, options.method));  // validate first
   const Scene scene = load_scene(options.scene, ctx);
   const CameraPass pass = run_camera_pass(scene, {}, ctx);
-  const std::vector<MethodRun> runs = run_method(
-      scene, pass.surfaces, options.method, settings_for(options, options.method), {}, ctx);
+  const std::vector<MethodRun> runs = run_method(scene, pass.surfaces, options.method,
+                                                 settings_for(options, options.method), {}, ctx);
   std::vector<const ShadowMask*> masks;
   for (const MethodRun& run : runs) {
     write_png(options.mask_prefix + ".L" + std::to_string(run.light) + ".png", run.mask);
@@ -112,7 +115,8 @@ int run_compare(const CompareOptions& options, const Context& ctx) {
   std::vector<ComparedMethod> compared;
   for (const std::string& m : methods) {
     progress.step("method " + m);
-    ComparedMethod cm{m, run_method(scene, pass.surfaces, m, settings_for(options, m), {}, ctx), {}};
+    ComparedMethod cm{
+        m, run_method(scene, pass.surfaces, m, settings_for(options, m), {}, ctx), {}};
     for (std::size_t l = 0; l < cm.runs.size(); ++l) {
       const ShadowMask& ref = compared.empty() ? cm.runs[l].mask : compared.front().runs[l].mask;
       cm.against_reference.push_back(compare_masks(ref, cm.runs[l].mask, object_ids));
@@ -125,8 +129,9 @@ int run_compare(const CompareOptions& options, const Context& ctx) {
   }
   progress.step("");
 
-  const bool wanted_reference = options.methods.empty() ||
-      std::find(options.methods.begin(), options.methods.end(), "raytrace") != options.methods.end();
+  const bool wanted_reference =
+      options.methods.empty() || std::find(options.methods.begin(), options.methods.end(),
+                                           "raytrace") != options.methods.end();
   nlohmann::json out = nlohmann::json::array();
   if (!options.json) print_header(scene, pass, true);
   for (const ComparedMethod& cm : compared) {

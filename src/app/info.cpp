@@ -1,7 +1,6 @@
-#include <nlohmann/json.hpp>
-
 #include <cstdio>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "shadowkit/app/commands.h"
 #include "shadowkit/scene/scene_file.h"
@@ -9,7 +8,9 @@
 namespace shadowkit {
 namespace {
 
-nlohmann::json vec_json(Vec3 v) { return {v.x, v.y, v.z}; }
+nlohmann::json vec_json(Vec3 v) {
+  return {v.x, v.y, v.z};
+}
 
 nlohmann::json scene_info(const Scene& scene) {
   nlohmann::json j;
@@ -21,10 +22,10 @@ nlohmann::json scene_info(const Scene& scene) {
                  {"width", scene.camera.width},
                  {"height", scene.camera.height}};
   for (const Light& l : scene.lights) {
-    j["lights"].push_back(l.type == Light::Type::point
-                              ? nlohmann::json{{"type", "point"}, {"position", vec_json(l.position)}}
-                              : nlohmann::json{{"type", "directional"},
-                                               {"direction", vec_json(l.direction)}});
+    j["lights"].push_back(
+        l.type == Light::Type::point
+            ? nlohmann::json{{"type", "point"}, {"position", vec_json(l.position)}}
+            : nlohmann::json{{"type", "directional"}, {"direction", vec_json(l.direction)}});
   }
   std::size_t closed = 0, boundary = 0, nonmanifold = 0;
   for (const SceneObject& o : scene.objects) {
@@ -62,11 +63,11 @@ void print_info(const nlohmann::json& j) {
   std::printf("%-24s %9s %9s %9s %-8s %-9s %9s %12s\n", "object", "polygons", "vertices", "edges",
               "closed", "manifold", "boundary", "non-manifold");
   for (const auto& o : j.value("objects", nlohmann::json::array())) {
-    std::printf("%-24s %9zu %9zu %9zu %-8s %-9s %9zu %12zu\n",
-                o["name"].get<std::string>().c_str(), o["polygons"].get<std::size_t>(),
-                o["vertices"].get<std::size_t>(), o["edges"].get<std::size_t>(),
-                o["closed"].get<bool>() ? "yes" : "no", o["manifold"].get<bool>() ? "yes" : "no",
-                o["boundary_edges"].get<std::size_t>(), o["nonmanifold_edges"].get<std::size_t>());
+    std::printf("%-24s %9zu %9zu %9zu %-8s %-9s %9zu %12zu\n", o["name"].get<std::string>().c_str(),
+                o["polygons"].get<std::size_t>(), o["vertices"].get<std::size_t>(),
+                o["edges"].get<std::size_t>(), o["closed"].get<bool>() ? "yes" : "no",
+                o["manifold"].get<bool>() ? "yes" : "no", o["boundary_edges"].get<std::size_t>(),
+                o["nonmanifold_edges"].get<std::size_t>());
   }
 }
 

@@ -54,7 +54,8 @@ void write_report(const fs::path& dir, const Scene& scene, const CameraPass& pas
       write_png(dir / (stem + ".mask.png"), m.runs[l].mask);
       per_light += figure(stem + ".mask.png", m.name + " mask");
       if (&m == &reference) continue;
-      write_png(dir / (stem + ".diff.png"), difference_image(reference.runs[l].mask, m.runs[l].mask));
+      write_png(dir / (stem + ".diff.png"),
+                difference_image(reference.runs[l].mask, m.runs[l].mask));
       per_light += figure(stem + ".diff.png", m.name + " vs " + reference.name);
     }
     per_light += "</div>\n";
@@ -68,15 +69,16 @@ void write_report(const fs::path& dir, const Scene& scene, const CameraPass& pas
           "text-align:right}.row{display:flex;flex-wrap:wrap;gap:12px}figure{margin:0}"
           "img{width:480px;border:1px solid #ccc}figcaption{text-align:center}</style>\n"
        << "<h1>shadowkit compare: " << scene.name << "</h1>\n<p>" << pass.surfaces.width << "x"
-       << pass.surfaces.height << ", " << scene.face_count() << " polygons, "
-       << scene.lights.size() << " light(s); scan conversion " << format("%.2f", pass.scan_ms)
+       << pass.surfaces.height << ", " << scene.face_count() << " polygons, " << scene.lights.size()
+       << " light(s); scan conversion " << format("%.2f", pass.scan_ms)
        << " ms. Mismatch is against <b>" << reference.name
        << "</b>; interior pixels have a uniform 3x3 neighbourhood (mask and object) in the "
           "reference. Difference images: red = shadow where the reference is lit, blue = lit "
           "where it is in shadow.</p>\n"
        << "<table><tr><th>method</th><th>light</th><th>build ms</th><th>shade ms</th>"
           "<th>memory MB</th><th>mismatch %</th><th>interior %</th></tr>\n"
-       << rows << "</table>\n<h2>Shaded</h2>\n<div class=\"row\">\n" << shaded << "</div>\n"
+       << rows << "</table>\n<h2>Shaded</h2>\n<div class=\"row\">\n"
+       << shaded << "</div>\n"
        << per_light;
 }
 

@@ -1,11 +1,11 @@
 // The command line end to end: exit statuses, error messages, files written.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "shadowkit/core/image.h"
@@ -24,7 +24,8 @@ class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("shadowkit_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+           ("shadowkit_cli_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::create_directories(dir_);
   }
   void TearDown() override { fs::remove_all(dir_); }
@@ -41,8 +42,8 @@ class Cli : public ::testing::Test {
   }
   Result run(const std::string& args) {
     const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = std::string(SHADOWKIT_EXE) + " " + args + " >" + out.string() +
-                            " 2>" + err.string();
+    const std::string cmd =
+        std::string(SHADOWKIT_EXE) + " " + args + " >" + out.string() + " 2>" + err.string();
     const int raw = std::system(cmd.c_str());
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
   }
@@ -111,23 +112,26 @@ TEST_F(Cli, BadInputIsOneLineAndExitStatusTwo) {
   write("broken.json", "{\"camera\": {\"position\": [0, 1, 2]\n\"look_at\": [0, 0, 0]}}\n");
   expect_bad_input("info " + (dir_ / "missing.json").string(), "missing.json");
   expect_bad_input("info " + (dir_ / "broken.json").string(), "broken.json:2: malformed JSON");
-  expect_bad_input("info " + scene(R"({"mesh": "ground.obj"})",
-                                   R"("position": [0, 6, 8], "look_at": [0, 0, 0], "fov_y_deg": "x")")
-                                 .string(),
-                   "key 'camera.fov_y_deg': expected a number");
+  expect_bad_input(
+      "info " + scene(R"({"mesh": "ground.obj"})",
+                      R"("position": [0, 6, 8], "look_at": [0, 0, 0], "fov_y_deg": "x")")
+                    .string(),
+      "key 'camera.fov_y_deg': expected a number");
   expect_bad_input("info " + scene(R"({"mesh": "bad-line.obj"})").string(), "bad-line.obj:3");
   expect_bad_input("info " + scene(R"({"mesh": "nan.obj"})").string(), "nan.obj:3");
-  expect_bad_input("info " + scene(R"({"mesh": "ground.obj"})",
-                                   R"("position": [0, 6, 8], "look_at": [0, 6, 8])")
-                                 .string(),
-                   "key 'camera.look_at': equals camera.position");
+  expect_bad_input(
+      "info " + scene(R"({"mesh": "ground.obj"})", R"("position": [0, 6, 8], "look_at": [0, 6, 8])")
+                    .string(),
+      "key 'camera.look_at': equals camera.position");
   expect_bad_input("render " + scene(R"({"mesh": "ground.obj"})").string() +
                        " --method nosuch --mask " + (dir_ / "m").string(),
                    "method 'nosuch': unknown method");
-  expect_bad_input("compare " + scene(R"({"mesh": "ground.obj"})").string() + " --methods raytrace,x",
-                   "method 'x': unknown method");
+  expect_bad_input(
+      "compare " + scene(R"({"mesh": "ground.obj"})").string() + " --methods raytrace,x",
+      "method 'x': unknown method");
   expect_bad_input("render " + scene(R"({"mesh": "ground.obj"})").string() +
-                       " --method shadowmap --set shadowmap.nosuch=1 --mask " + (dir_ / "m").string(),
+                       " --method shadowmap --set shadowmap.nosuch=1 --mask " +
+                       (dir_ / "m").string(),
                    "shadowmap.nosuch");
   expect_bad_input("bench", "SCENE");
 }

@@ -25,8 +25,7 @@ struct Shared {
 void add_shared(CLI::App* cmd, CommandOptions& options, Shared& shared) {
   std::string scenes;
   for (const std::string& s : builtin_scene_names()) scenes += (scenes.empty() ? "" : ", ") + s;
-  cmd->add_option("SCENE", options.scene, "scene file, or a built-in scene: " + scenes)
-      ->required();
+  cmd->add_option("SCENE", options.scene, "scene file, or a built-in scene: " + scenes)->required();
   cmd->add_option("--threads", shared.threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--set", shared.settings,
@@ -48,8 +47,9 @@ std::vector<std::string> split_list(const std::string& s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"shadowkit: classic hard-shadow algorithms side by side, against an exact "
-               "Embree reference"};
+  CLI::App app{
+      "shadowkit: classic hard-shadow algorithms side by side, against an exact "
+      "Embree reference"};
   app.require_subcommand(1);
   Shared shared;
 
@@ -120,8 +120,9 @@ int main(int argc, char** argv) {
     return kBadInput;
   } catch (const std::bad_alloc&) {
     // Only a setting can ask for this much (image size, map resolution): say so.
-    std::fprintf(stderr, "shadowkit: error: out of memory; lower the image size or a method's "
-                         "resolution setting\n");
+    std::fprintf(stderr,
+                 "shadowkit: error: out of memory; lower the image size or a method's "
+                 "resolution setting\n");
     return kBadInput;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadowkit: internal error: %s\n", e.what());

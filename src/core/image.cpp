@@ -23,8 +23,8 @@ File open_file(const std::filesystem::path& path, const char* mode) {
 }
 
 // libpng reports errors by longjmp; the simplified API avoids that hazard entirely.
-void write_png_rows(const std::filesystem::path& path, int width, int height,
-                    png_uint_32 format, const void* data) {
+void write_png_rows(const std::filesystem::path& path, int width, int height, png_uint_32 format,
+                    const void* data) {
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
   image.width = png_uint_32(width);

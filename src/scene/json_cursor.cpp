@@ -6,7 +6,9 @@
 namespace shadowkit {
 namespace {
 
-std::string type_name(const nlohmann::json& v) { return v.type_name(); }
+std::string type_name(const nlohmann::json& v) {
+  return v.type_name();
+}
 
 }  // namespace
 

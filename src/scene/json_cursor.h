@@ -1,7 +1,6 @@
 #pragma once
 // A JSON value together with its key path, so that every type error names the file and key.
 #include <nlohmann/json.hpp>
-
 #include <string>
 #include <vector>
 

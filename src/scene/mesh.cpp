@@ -35,9 +35,9 @@ void PolygonSoup::append(const PolygonSoup& other) {
 namespace {
 
 // Tolerances are relative to the mesh's size so that tiny and huge models behave alike.
-constexpr double kWeldTolerance = 1e-9;      // of the bounding-box diagonal
-constexpr double kPlanarTolerance = 1e-5;    // of the face's own diameter
-constexpr double kDegenerateArea = 1e-14;    // of the face's squared diameter
+constexpr double kWeldTolerance = 1e-9;    // of the bounding-box diagonal
+constexpr double kPlanarTolerance = 1e-5;  // of the face's own diameter
+constexpr double kDegenerateArea = 1e-14;  // of the face's squared diameter
 
 struct CellKey {
   std::int64_t x, y, z;
@@ -211,8 +211,7 @@ void Mesh::build_adjacency() {
   for (const MeshEdge& e : edges) {
     if (e.use_count == 1) ++boundary_edges_;
     if (e.use_count > 2) ++nonmanifold_edges_;
-    if (e.use_count == 2 &&
-        edge_uses[e.first_use].forward == edge_uses[e.first_use + 1].forward) {
+    if (e.use_count == 2 && edge_uses[e.first_use].forward == edge_uses[e.first_use + 1].forward) {
       consistently_oriented_ = false;
     }
   }

@@ -111,9 +111,9 @@ TEST(Mesh, ReversedFaceBreaksConsistentOrientation) {
 TEST(Mesh, DegenerateFacesAreDroppedWithAWarning) {
   PolygonSoup s = polygon({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
   s.positions.push_back({2, 0, 0});
-  s.add_face({0, 1, 3});     // collinear: zero area
-  s.add_face({0, 0, 1});     // two distinct vertices
-  s.add_face({0, 1});        // too few
+  s.add_face({0, 1, 3});  // collinear: zero area
+  s.add_face({0, 0, 1});  // two distinct vertices
+  s.add_face({0, 1});     // too few
   Warnings w;
   const Mesh m = Mesh::build(s, "bad.obj", w.ctx());
   EXPECT_EQ(m.face_count(), 1u);

@@ -62,7 +62,7 @@ void apply_transform(std::vector<Vec3>& positions, Vec3 scale, Vec3 rotate_deg, 
   const double cz = std::cos(rotate_deg.z * k), sz = std::sin(rotate_deg.z * k);
   for (Vec3& p : positions) {
     Vec3 q{p.x * scale.x, p.y * scale.y, p.z * scale.z};
-    q = {q.x, cx * q.y - sx * q.z, sx * q.y + cx * q.z};  // Rx
+    q = {q.x, cx * q.y - sx * q.z, sx * q.y + cx * q.z};   // Rx
     q = {cy * q.x + sy * q.z, q.y, -sy * q.x + cy * q.z};  // Ry
     q = {cz * q.x - sz * q.y, sz * q.x + cz * q.y, q.z};   // Rz
     p = q + translate;

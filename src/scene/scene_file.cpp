@@ -1,9 +1,8 @@
 #include "shadowkit/scene/scene_file.h"
 
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "json_cursor.h"
@@ -52,7 +51,8 @@ void warn_unknown(const JsonCursor& c, const std::vector<std::string>& known, co
   }
 }
 
-Camera read_camera(const JsonCursor& c, Camera camera, const Context& ctx, const std::string& file) {
+Camera read_camera(const JsonCursor& c, Camera camera, const Context& ctx,
+                   const std::string& file) {
   warn_unknown(c, {"position", "look_at", "up", "fov_y_deg", "width", "height"}, ctx, file);
   if (c.has("position")) camera.position = position(c["position"]);
   if (c.has("look_at")) camera.look_at = position(c["look_at"]);

@@ -17,8 +17,9 @@ class SceneFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("shadowkit_scene_file_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+           ("shadowkit_scene_file_" +
+            std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(dir_);
     write("ground.obj", "v -5 0 -5\nv 5 0 -5\nv 5 0 5\nv -5 0 5\nf 1 4 3 2\n");
   }
@@ -52,9 +53,10 @@ class SceneFileTest : public ::testing::Test {
 };
 
 TEST_F(SceneFileTest, LoadsCameraLightsAndTransformedMeshes) {
-  const fs::path p = write("scene.json", scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
-                                               R"({"type": "directional", "direction": [0, -2, 0]})",
-                                               R"({"mesh": "ground.obj", "transform": {"scale": 2,
+  const fs::path p =
+      write("scene.json", scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                                R"({"type": "directional", "direction": [0, -2, 0]})",
+                                R"({"mesh": "ground.obj", "transform": {"scale": 2,
                                                   "translate": [0, 1, 0]}})"));
   const Scene s = load_scene_file(p, quiet_);
   EXPECT_EQ(s.camera.width, 64);
@@ -81,8 +83,9 @@ TEST_F(SceneFileTest, MalformedJsonNamesTheLine) {
 }
 
 TEST_F(SceneFileTest, WrongKeyTypeNamesTheKey) {
-  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0], "fov_y_deg": "wide")")),
-              HasSubstr("key 'camera.fov_y_deg': expected a number, got string"));
+  EXPECT_THAT(
+      error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0], "fov_y_deg": "wide")")),
+      HasSubstr("key 'camera.fov_y_deg': expected a number, got string"));
   EXPECT_THAT(error_of(scene(R"("position": [0, 4], "look_at": [0, 0, 0])")),
               HasSubstr("key 'camera.position': expected an array of three numbers"));
   EXPECT_THAT(error_of(R"({"camera": {"position": [0, 4, 12], "look_at": [0, 0, 0],
@@ -104,21 +107,21 @@ TEST_F(SceneFileTest, BadLightsAreRejected) {
   EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
                              R"({"type": "directional", "direction": [0, 0, 0]})")),
               HasSubstr("key 'lights[0].direction': is the zero vector"));
-  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
-                             R"({"type": "point"})")),
-              HasSubstr("key 'lights[0].position': is missing"));
+  EXPECT_THAT(
+      error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])", R"({"type": "point"})")),
+      HasSubstr("key 'lights[0].position': is missing"));
 }
 
 TEST_F(SceneFileTest, MeshErrorsNameTheMeshFileAndLine) {
   write("nan.obj", "v 0 0 0\nv 1 0 nan\nv 0 0 1\nf 1 2 3\n");
-  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
-                             R"({"type": "point", "position": [3, 10, 4]})",
-                             R"({"mesh": "nan.obj"})")),
-              HasSubstr("nan.obj:2"));
-  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
-                             R"({"type": "point", "position": [3, 10, 4]})",
-                             R"({"mesh": "missing.obj"})")),
-              HasSubstr("missing.obj"));
+  EXPECT_THAT(
+      error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                     R"({"type": "point", "position": [3, 10, 4]})", R"({"mesh": "nan.obj"})")),
+      HasSubstr("nan.obj:2"));
+  EXPECT_THAT(
+      error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                     R"({"type": "point", "position": [3, 10, 4]})", R"({"mesh": "missing.obj"})")),
+      HasSubstr("missing.obj"));
   EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
                              R"({"type": "point", "position": [3, 10, 4]})", R"({"size": 3})")),
               HasSubstr("key 'objects[0]': needs a \"mesh\" file or a \"generator\""));
@@ -133,8 +136,9 @@ TEST_F(SceneFileTest, OverflowingTransformIsRejected) {
                              R"({"type": "point", "position": [3, 10, 4]})",
                              R"({"mesh": "ground.obj", "transform": {"scale": [1, 0, 1]}})")),
               HasSubstr("key 'objects[0].transform.scale': a zero scale"));
-  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0], "fov_y_deg": 1e-300)")),
-              HasSubstr("key 'camera.fov_y_deg': must lie between"));
+  EXPECT_THAT(
+      error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0], "fov_y_deg": 1e-300)")),
+      HasSubstr("key 'camera.fov_y_deg': must lie between"));
 }
 
 TEST_F(SceneFileTest, SubdivisionSurfacesAreRefusedRatherThanDrawnWrong) {
@@ -145,10 +149,12 @@ TEST_F(SceneFileTest, SubdivisionSurfacesAreRefusedRatherThanDrawnWrong) {
 }
 
 TEST_F(SceneFileTest, TopLevelGeneratorTakesItsParametersFromTheFile) {
-  const Scene s = load_scene_file(write("scene.json", R"({"generator": "cubes", "count": 8})"), quiet_);
+  const Scene s =
+      load_scene_file(write("scene.json", R"({"generator": "cubes", "count": 8})"), quiet_);
   EXPECT_EQ(s.face_count(), 8u * 6 + 1);
-  EXPECT_EQ(load_scene_file(write("scene.json", R"({"generator": "tetra:2"})"), quiet_).face_count(),
-            66u);
+  EXPECT_EQ(
+      load_scene_file(write("scene.json", R"({"generator": "tetra:2"})"), quiet_).face_count(),
+      66u);
   EXPECT_THAT(error_of(R"({"generator": "cubes", "cuont": 8})"), HasSubstr("cuont"));
 }
 

@@ -48,9 +48,9 @@ TEST(Transform, AppliesScaleThenRotateXYZThenTranslate) {
 }
 
 TEST(Scene, FinalizeNumbersFacesAndTriangulates) {
-  const Scene s = testing::make_scene(testing::camera({0, 5, 5}, {0, 0, 0}, 8, 8), {},
-                                      {testing::box({0, 0, 0}, {1, 1, 1}),
-                                       testing::horizontal_quad(-5, 5, -5, 5, 0)});
+  const Scene s = testing::make_scene(
+      testing::camera({0, 5, 5}, {0, 0, 0}, 8, 8), {},
+      {testing::box({0, 0, 0}, {1, 1, 1}), testing::horizontal_quad(-5, 5, -5, 5, 0)});
   EXPECT_EQ(s.face_count(), 7u);
   EXPECT_EQ(s.objects[1].first_face, 6u);
   EXPECT_EQ(s.object_of_face(6), 1u);
@@ -61,17 +61,18 @@ TEST(Scene, FinalizeNumbersFacesAndTriangulates) {
   EXPECT_DOUBLE_EQ(s.bounds().hi.y, 1);
 }
 
-double triangles_area(const std::vector<Vec3>& p, const std::vector<std::array<std::uint32_t, 3>>& t) {
+double triangles_area(const std::vector<Vec3>& p,
+                      const std::vector<std::array<std::uint32_t, 3>>& t) {
   double area = 0;
-  for (const auto& tri : t) area += 0.5 * length(cross(p[tri[1]] - p[tri[0]], p[tri[2]] - p[tri[0]]));
+  for (const auto& tri : t)
+    area += 0.5 * length(cross(p[tri[1]] - p[tri[0]], p[tri[2]] - p[tri[0]]));
   return area;
 }
 
 TEST(Triangulate, EarClippingCoversANonConvexPolygonExactly) {
   // A comb: a 5 x 3 rectangle with two 1 x 2 notches, area 11.
-  const std::vector<Vec3> p{{0, 0, 0}, {5, 0, 0}, {5, 3, 0}, {4, 3, 0}, {4, 1, 0},
-                            {3, 1, 0}, {3, 3, 0}, {2, 3, 0}, {2, 1, 0}, {1, 1, 0},
-                            {1, 3, 0}, {0, 3, 0}};
+  const std::vector<Vec3> p{{0, 0, 0}, {5, 0, 0}, {5, 3, 0}, {4, 3, 0}, {4, 1, 0}, {3, 1, 0},
+                            {3, 3, 0}, {2, 3, 0}, {2, 1, 0}, {1, 1, 0}, {1, 3, 0}, {0, 3, 0}};
   std::vector<std::uint32_t> loop(p.size());
   for (std::uint32_t i = 0; i < loop.size(); ++i) loop[i] = i;
   std::vector<std::array<std::uint32_t, 3>> tris;

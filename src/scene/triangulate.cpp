@@ -79,7 +79,8 @@ void triangulate_polygon(std::span<const Vec3> positions, std::span<const std::u
                          Vec3 normal, std::vector<std::array<std::uint32_t, 3>>& out) {
   const Projector pr(normal);
   if (loop.size() == 3 || is_convex(positions, loop, pr)) {
-    for (std::size_t i = 1; i + 1 < loop.size(); ++i) out.push_back({loop[0], loop[i], loop[i + 1]});
+    for (std::size_t i = 1; i + 1 < loop.size(); ++i)
+      out.push_back({loop[0], loop[i], loop[i + 1]});
     return;
   }
   clip_ears(positions, {loop.begin(), loop.end()}, pr, out);

@@ -50,8 +50,12 @@ inline Camera camera(Vec3 position, Vec3 look_at, int width, int height, double 
   return c;
 }
 
-inline Light point_light(Vec3 p) { return Light::point(p); }
-inline Light directional_light(Vec3 d) { return Light::directional(d); }
+inline Light point_light(Vec3 p) {
+  return Light::point(p);
+}
+inline Light directional_light(Vec3 d) {
+  return Light::directional(d);
+}
 
 /// A finalized scene with one object per soup.
 inline Scene make_scene(const Camera& cam, std::vector<Light> lights,

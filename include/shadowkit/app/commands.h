@@ -12,7 +12,7 @@ namespace shadowkit {
 
 /// \brief What every command shares.
 struct CommandOptions {
-  std::string scene;                               ///< file or built-in scene name
+  std::string scene;                              ///< file or built-in scene name
   std::map<std::string, MethodOptions> settings;  ///< per method name
   bool json = false;
 };

@@ -59,8 +59,8 @@ class ShadowMethod {
   virtual void build(const Scene& scene, std::size_t light, const Context& ctx) = 0;
   /// Writes kMaskLit or kMaskShadow at every covered pixel of \p surfaces for the light of
   /// the last build(); \p mask arrives sized and cleared to kMaskBackground.
-  virtual void shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
-                     ShadowMask& mask, const Context& ctx) = 0;
+  virtual void shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
+                     const Context& ctx) = 0;
   /// Bytes held by the structures of prepare() and the last build().
   virtual std::size_t memory_bytes() const = 0;
   /// Counters of the last build()/shade().

@@ -22,15 +22,17 @@ struct RasterProjection {
   /// The camera's own view; \p near is a view-space depth.
   static RasterProjection from_camera(const Camera& camera, double near);
   /// A square perspective view of \p fov_y_deg looking along \p forward.
-  static RasterProjection perspective(Vec3 eye, Vec3 forward, Vec3 up, double fov_y_deg,
-                                      int width, int height, double near);
+  static RasterProjection perspective(Vec3 eye, Vec3 forward, Vec3 up, double fov_y_deg, int width,
+                                      int height, double near);
   /// An orthographic view along \p forward covering [-half_w, half_w] x [-half_h, half_h]
   /// around \p center; geometry behind eye = center - forward * depth_back is clipped.
   static RasterProjection orthographic_view(Vec3 center, Vec3 forward, Vec3 up, double half_w,
                                             double half_h, double depth_back, int width,
                                             int height);
 
-  Vec3 to_view(Vec3 p) const { return {dot(p - eye, right), dot(p - eye, up), dot(p - eye, forward)}; }
+  Vec3 to_view(Vec3 p) const {
+    return {dot(p - eye, right), dot(p - eye, up), dot(p - eye, forward)};
+  }
   /// Continuous pixel coordinates of a view-space point (zv > 0 for perspective).
   double pixel_x(Vec3 v) const { return offset_x + scale_x * (orthographic ? v.x : v.x / v.z); }
   double pixel_y(Vec3 v) const { return offset_y - scale_y * (orthographic ? v.y : v.y / v.z); }

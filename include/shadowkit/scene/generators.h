@@ -1,9 +1,8 @@
 #pragma once
 /// \brief Procedural scenes reproducing the papers' test scenes.
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json_fwd.hpp>
 
 #include "shadowkit/core/context.h"
 #include "shadowkit/scene/mesh.h"

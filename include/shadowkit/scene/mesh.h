@@ -52,8 +52,8 @@ class Mesh {
   std::vector<Vec3> vertices;
   std::vector<std::uint32_t> face_start{0};  ///< compressed rows, as in PolygonSoup
   std::vector<std::uint32_t> face_vertices;
-  std::vector<Plane> planes;                 ///< per face; normal follows the vertex order
-  std::vector<double> areas;                 ///< per face
+  std::vector<Plane> planes;  ///< per face; normal follows the vertex order
+  std::vector<double> areas;  ///< per face
 
   std::vector<MeshEdge> edges;
   std::vector<EdgeUse> edge_uses;

@@ -61,9 +61,9 @@ struct SceneObject {
 
 /// \brief Every face of every object, triangulated once for the scan converter and Embree.
 struct TriangleList {
-  std::vector<Vec3> positions;                       ///< all objects' vertices, concatenated
+  std::vector<Vec3> positions;  ///< all objects' vertices, concatenated
   std::vector<std::array<std::uint32_t, 3>> triangles;
-  std::vector<std::uint32_t> triangle_face;          ///< global face id per triangle
+  std::vector<std::uint32_t> triangle_face;  ///< global face id per triangle
 };
 
 /// \brief The whole scene. Build it with finalize() after filling camera, lights, objects.

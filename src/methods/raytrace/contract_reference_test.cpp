@@ -27,14 +27,14 @@ class ContractCaster {
     rtc_ = rtcNewScene(device_);
     const TriangleList& t = scene.triangles();
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                          RTC_FORMAT_FLOAT3, 12, t.positions.size()));
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 12, t.positions.size()));
     for (std::size_t i = 0; i < t.positions.size(); ++i) {
       v[3 * i] = float(t.positions[i].x), v[3 * i + 1] = float(t.positions[i].y);
       v[3 * i + 2] = float(t.positions[i].z);
     }
-    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0,
-                                                               RTC_FORMAT_UINT3, 12, t.triangles.size()));
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 12, t.triangles.size()));
     for (std::size_t i = 0; i < t.triangles.size(); ++i) {
       for (int k = 0; k < 3; ++k) idx[3 * i + k] = t.triangles[i][k];
     }
@@ -75,16 +75,19 @@ class ContractCaster {
         out.object[i] = scene_.object_of_face(face);
         const Vec3 n = normalize(Vec3{hit.hit.Ng_x, hit.hit.Ng_y, hit.hit.Ng_z});
         const Vec3 p = c.position + d * double(hit.ray.tfar);
-        const Vec3 to_light = light.type == Light::Type::point ? light.position - p : -light.direction;
+        const Vec3 to_light =
+            light.type == Light::Type::point ? light.position - p : -light.direction;
         const double eye_side = dot(n, c.position - p), light_side = dot(n, to_light);
         if (eye_side * light_side <= 0) {
           out.mask.pixels[i] = kMaskShadow;
           continue;
         }
         const Vec3 o = p + n * (eye_side > 0 ? eps : -eps);
-        const double dist = light.type == Light::Type::point ? length(light.position - o) : INFINITY;
+        const double dist =
+            light.type == Light::Type::point ? length(light.position - o) : INFINITY;
         RTCRay shadow{};
-        set_ray(shadow, o, light.type == Light::Type::point ? normalize(light.position - o) : -light.direction,
+        set_ray(shadow, o,
+                light.type == Light::Type::point ? normalize(light.position - o) : -light.direction,
                 float(dist));
         rtcOccluded1(rtc_, &ctx, &shadow);
         out.mask.pixels[i] = shadow.tfar < 0 ? kMaskShadow : kMaskLit;

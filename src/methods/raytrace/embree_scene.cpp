@@ -37,18 +37,18 @@ EmbreeScene::EmbreeScene(const Scene& scene) {
   origin_ = scene.bounds().empty() ? Vec3{} : scene.bounds().center();
   if (!list.triangles.empty()) {
     RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-        list.positions.size()));
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                          RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                          list.positions.size()));
     for (std::size_t i = 0; i < list.positions.size(); ++i) {
       const Vec3 p = list.positions[i] - origin_;
       v[3 * i] = float(p.x);
       v[3 * i + 1] = float(p.y);
       v[3 * i + 2] = float(p.z);
     }
-    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
-        list.triangles.size()));
+    auto* idx = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(unsigned), list.triangles.size()));
     std::memcpy(idx, list.triangles.data(), list.triangles.size() * 3 * sizeof(unsigned));
     rtcCommitGeometry(geom);
     rtcAttachGeometry(scene_, geom);

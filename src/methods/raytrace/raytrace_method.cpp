@@ -63,11 +63,13 @@ double face_offset(const Mesh& mesh, std::size_t face, Vec3 origin) {
 }
 
 double shadow_ray_offset(Vec3 p, double face_part) {
-  return std::max({kOffsetUlps * max_abs_component(p), face_part,
-                   double(std::numeric_limits<float>::min())});
+  return std::max(
+      {kOffsetUlps * max_abs_component(p), face_part, double(std::numeric_limits<float>::min())});
 }
 
-RaytraceMethod::RaytraceMethod(const MethodOptions& options) { options.expect_only("raytrace", {}); }
+RaytraceMethod::RaytraceMethod(const MethodOptions& options) {
+  options.expect_only("raytrace", {});
+}
 
 void RaytraceMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
   embree_ = std::make_unique<EmbreeScene>(scene);
@@ -115,7 +117,8 @@ void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfa
         continue;
       }
       const Vec3 p = surfaces.point(i) - origin;
-      const double offset = std::copysign(shadow_ray_offset(p, std::abs(signed_offset)), signed_offset);
+      const double offset =
+          std::copysign(shadow_ray_offset(p, std::abs(signed_offset)), signed_offset);
       const Vec3 o = p + scene.face_plane(surfaces.face[i]).normal * offset;
       packet.set(k, o, point_light ? light_position - o : -light_.direction, tfar);
     }
@@ -150,6 +153,8 @@ std::size_t RaytraceMethod::memory_bytes() const {
          (face_offset_.size() + lit_side_offset_.size()) * sizeof(float);
 }
 
-MethodCounters RaytraceMethod::counters() const { return {{"shadow_rays", rays_}}; }
+MethodCounters RaytraceMethod::counters() const {
+  return {{"shadow_rays", rays_}};
+}
 
 }  // namespace shadowkit

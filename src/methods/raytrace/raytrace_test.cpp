@@ -1,10 +1,9 @@
-#include "raytrace_method.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "../../testing/test_scenes.h"
+#include "raytrace_method.h"
 
 namespace shadowkit {
 namespace {
@@ -80,10 +79,9 @@ TEST(Raytrace, LightInAFacesPlaneShadowsThatFace) {
 }
 
 TEST(Raytrace, ClosedBoxShadowsTheGroundAndItsOwnFarSide) {
-  const Scene scene = testing::make_scene(testing::camera({4, 5, 6}, {0, 0.5, 0}, 120, 90),
-                                          {testing::point_light({0, 6, 0})},
-                                          {testing::horizontal_quad(-10, 10, -10, 10, 0),
-                                           testing::box({-1, 0, -1}, {1, 1, 1})});
+  const Scene scene = testing::make_scene(
+      testing::camera({4, 5, 6}, {0, 0.5, 0}, 120, 90), {testing::point_light({0, 6, 0})},
+      {testing::horizontal_quad(-10, 10, -10, 10, 0), testing::box({-1, 0, -1}, {1, 1, 1})});
   const ShadowMask mask = shade(scene);
   const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
   for (std::size_t i = 0; i < mask.size(); ++i) {
@@ -104,10 +102,11 @@ TEST(Raytrace, ClosedBoxShadowsTheGroundAndItsOwnFarSide) {
 TEST(Raytrace, WorksAtTinyAndHugeScales) {
   for (double s : {1e-4, 1e5}) {
     auto scaled = [s](Vec3 v) { return v * s; };
-    Scene scene = testing::make_scene(
-        testing::camera(scaled({0, 9, 6}), {0, 0, 0}, 120, 90), {testing::point_light(scaled({0, 4, 0}))},
-        {testing::horizontal_quad(-10 * s, 10 * s, -10 * s, 10 * s, 0),
-         testing::horizontal_quad(-s, s, -s, s, s)});
+    Scene scene =
+        testing::make_scene(testing::camera(scaled({0, 9, 6}), {0, 0, 0}, 120, 90),
+                            {testing::point_light(scaled({0, 4, 0}))},
+                            {testing::horizontal_quad(-10 * s, 10 * s, -10 * s, 10 * s, 0),
+                             testing::horizontal_quad(-s, s, -s, s, s)});
     const ShadowMask mask = shade(scene);
     expect_ground_shadow(scene, mask, [s](Vec3 p) {
       const double edge = (std::max(std::abs(p.x), std::abs(p.z)) - 4.0 / 3.0 * s) / s;

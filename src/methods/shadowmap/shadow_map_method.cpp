@@ -1,6 +1,5 @@
 #include "shadow_map_method.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <functional>

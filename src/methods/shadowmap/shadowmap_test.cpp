@@ -274,8 +274,7 @@ TEST(ShadowMap, CubeMapEdgesAndCornersLookUpCorrectly) {
     const std::vector<bool> occluded = depth_tests(box_scene(true), method, pts);
     for (std::size_t k = 0; k < pts.size(); ++k) {
       const bool behind = pts[k] == Vec3{5, 5, 5};
-      EXPECT_EQ(occluded[k], !behind)
-          << pts[k].x << " " << pts[k].y << " " << pts[k].z;
+      EXPECT_EQ(occluded[k], !behind) << pts[k].x << " " << pts[k].y << " " << pts[k].z;
     }
   }
 }

@@ -210,8 +210,8 @@ Scene make_builtin_scene(const nlohmann::json& params, const std::string& where,
   const std::string name = name_it->get<std::string>();
   const SceneEntry* entry = find_scene(name);
   if (entry == nullptr) {
-    reader.fail("generator", "unknown built-in scene '" + name + "' (known: " +
-                                 joined_names(false) + ")");
+    reader.fail("generator",
+                "unknown built-in scene '" + name + "' (known: " + joined_names(false) + ")");
   }
   SceneParts parts = entry->build(reader);
 
