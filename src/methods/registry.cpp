@@ -1,18 +1,23 @@
+#include "raytrace/raytrace_method.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/shadow_method.h"
-#include "raytrace/raytrace_method.h"
 #include "shadowmap/shadow_map_method.h"
+#include "volume/volume_method.h"
 
 namespace shadowkit {
 
-std::vector<std::string> method_names() { return {"raytrace", "shadowmap"}; }
+std::vector<std::string> method_names() {
+  return {"raytrace", "shadowmap", "volume"};
+}
 
 std::unique_ptr<ShadowMethod> make_method(std::string_view name, const MethodOptions& options) {
   if (name == "raytrace") return std::make_unique<RaytraceMethod>(options);
   if (name == "shadowmap") return std::make_unique<ShadowMapMethod>(options);
+  if (name == "volume") return std::make_unique<VolumeMethod>(options);
   std::string list;
   for (const auto& m : method_names()) list += (list.empty() ? "" : ", ") + m;
-  throw InputError("method '" + std::string(name) + "'", "unknown method (available: " + list + ")");
+  throw InputError("method '" + std::string(name) + "'",
+                   "unknown method (available: " + list + ")");
 }
 
 }  // namespace shadowkit

@@ -27,8 +27,8 @@ RasterProjection RasterProjection::perspective(Vec3 eye, Vec3 forward, Vec3 up, 
 }
 
 RasterProjection RasterProjection::from_camera(const Camera& camera, double near) {
-  return perspective(camera.position, camera.look_at - camera.position, camera.up,
-                     camera.fov_y_deg, camera.width, camera.height, near);
+  return perspective(camera.position, camera.look_at - camera.position, camera.up, camera.fov_y_deg,
+                     camera.width, camera.height, near);
 }
 
 RasterProjection RasterProjection::orthographic_view(Vec3 center, Vec3 forward, Vec3 up,

@@ -7,7 +7,7 @@
 #include <limits>
 
 #include "shadowkit/core/error.h"
-
+#include "tile_bins.h"
 #include "triangle_setup.h"
 
 namespace shadowkit {
@@ -15,40 +15,8 @@ namespace {
 
 using raster::kSubpixel;
 using raster::ScreenTriangle;
+using raster::TileBins;
 constexpr int kTile = ScanConverter::kTileSize;
-
-// Counting sort of triangle indices into the tiles their bounds overlap; each bin keeps
-// triangle order.
-struct TileBins {
-  int tiles_x = 0, tiles_y = 0;
-  std::vector<std::uint32_t> start;
-  std::vector<std::uint32_t> items;
-
-  TileBins(const std::vector<ScreenTriangle>& tris, int width, int height)
-      : tiles_x((width + kTile - 1) / kTile), tiles_y((height + kTile - 1) / kTile) {
-    std::vector<std::uint32_t> count(std::size_t(tiles_x) * tiles_y + 1, 0);
-    for_each_tile(tris, [&](std::size_t tile, std::uint32_t) { ++count[tile + 1]; });
-    std::uint64_t total = 0;
-    for (std::size_t i = 1; i < count.size(); ++i) total += count[i];
-    SHADOWKIT_CHECK(total < std::numeric_limits<std::uint32_t>::max());
-    for (std::size_t i = 1; i < count.size(); ++i) count[i] += count[i - 1];
-    start = count;
-    items.resize(count.back());
-    for_each_tile(tris, [&](std::size_t tile, std::uint32_t t) { items[count[tile]++] = t; });
-  }
-
-  template <class Fn>
-  void for_each_tile(const std::vector<ScreenTriangle>& tris, Fn&& fn) const {
-    for (std::uint32_t t = 0; t < tris.size(); ++t) {
-      const ScreenTriangle& s = tris[t];
-      for (int ty = s.min_y / kTile; ty <= s.max_y / kTile; ++ty) {
-        for (int tx = s.min_x / kTile; tx <= s.max_x / kTile; ++tx) {
-          fn(std::size_t(ty) * tiles_x + tx, t);
-        }
-      }
-    }
-  }
-};
 
 struct TileBuffers {
   double key[kTile * kTile];
@@ -109,7 +77,8 @@ DepthFaceBuffer ScanConverter::rasterize(const RasterProjection& view, const Con
     for (int y = 0; y < tile.height; ++y) {
       const std::size_t dst = std::size_t(tile.y0 + y) * view.width + tile.x0;
       std::transform(tile.depth_key + y * tile.width, tile.depth_key + (y + 1) * tile.width,
-                     out.depth_key.begin() + std::ptrdiff_t(dst), [](double k) { return float(k); });
+                     out.depth_key.begin() + std::ptrdiff_t(dst),
+                     [](double k) { return float(k); });
       std::copy_n(tile.face + y * tile.width, tile.width, out.face.begin() + dst);
     }
   });

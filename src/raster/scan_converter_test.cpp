@@ -74,8 +74,8 @@ TEST(ScanConverter, EdgesThroughPixelCentresAreOwnedOnce) {
   // triangles around a vertex exactly on a pixel centre, axis-aligned and diagonal edges
   // through pixel centres.
   PolygonSoup s;
-  s.positions = {{0, 0, 0}, {8, 0, 0}, {8, 8, 0}, {0, 8, 0}, {3.5, 4.5, 0}, {3.5, 0, 0},
-                 {8, 4.5, 0}, {3.5, 8, 0}, {0, 4.5, 0}};
+  s.positions = {{0, 0, 0},   {8, 0, 0},   {8, 8, 0},   {0, 8, 0},  {3.5, 4.5, 0},
+                 {3.5, 0, 0}, {8, 4.5, 0}, {3.5, 8, 0}, {0, 4.5, 0}};
   const std::uint32_t c = 4;
   s.add_face({0, 5, c});
   s.add_face({5, 1, c});
@@ -99,8 +99,8 @@ TEST(ScanConverter, NearPlaneClippingLeavesNoCracks) {
   // is clipped, and the clipped pieces must still tile the image below the horizon.
   PolygonSoup sheet = jittered_sheet(31, 50, 7);
   for (Vec3& p : sheet.positions) p = {p.x, 0, p.y};
-  const Scene scene = testing::make_scene(testing::camera({0.3, 1, 0}, {0.3, 0.2, -5}, 120, 90, 100),
-                                          {}, {sheet});
+  const Scene scene =
+      testing::make_scene(testing::camera({0.3, 1, 0}, {0.3, 0.2, -5}, 120, 90, 100), {}, {sheet});
   const RasterProjection view = RasterProjection::from_camera(scene.camera, 0.05);
   const Image<int> count = coverage(scene, view);
   int doubles = 0, gaps_below_horizon = 0;

@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
+
+#include "shadowkit/core/error.h"
 
 namespace shadowkit::raster {
 namespace {
@@ -101,8 +104,7 @@ class TriangleBuilder {
   TriangleBuilder(const RasterProjection& view, std::vector<ScreenTriangle>& out)
       : view_(view), out_(out) {}
 
-  void emit(FixedPoint v0, FixedPoint v1, FixedPoint v2, const DepthPlane& k,
-            std::uint32_t face) {
+  void emit(FixedPoint v0, FixedPoint v1, FixedPoint v2, const DepthPlane& k, std::uint32_t face) {
     std::int64_t area = (v1.x - v0.x) * (v2.y - v0.y) - (v1.y - v0.y) * (v2.x - v0.x);
     if (area == 0) return;
     if (area < 0) std::swap(v1, v2);
@@ -116,7 +118,9 @@ class TriangleBuilder {
       // owns the pixel centres lying on it.
       t.bias[i] = (d.y < 0 || (d.y == 0 && d.x > 0)) ? 0 : 1;
     }
-    const auto lo = [](std::int64_t a) { return int((a - kSubpixel / 2 + kSubpixel - 1) >> kSubpixelBits); };
+    const auto lo = [](std::int64_t a) {
+      return int((a - kSubpixel / 2 + kSubpixel - 1) >> kSubpixelBits);
+    };
     const auto hi = [](std::int64_t a) { return int((a - kSubpixel / 2) >> kSubpixelBits); };
     t.min_x = std::max(0, lo(std::min({v0.x, v1.x, v2.x})));
     t.min_y = std::max(0, lo(std::min({v0.y, v1.y, v2.y})));
@@ -135,7 +139,64 @@ class TriangleBuilder {
   std::vector<ScreenTriangle>& out_;
 };
 
+// A view-space point in homogeneous coordinates.
+struct Vec4 {
+  double x, y, z, w;
+  Vec3 xyz() const { return {x, y, z}; }
+};
+
+double eval(const ClipPlane& plane, const Vec4& v) {
+  return plane.a * v.x + plane.b * v.y + plane.c * v.z + plane.e * v.w;
+}
+
+// As crossing() above, in homogeneous coordinates.
+Vec4 crossing(Vec4 p, double dp, Vec4 q, double dq) {
+  if (std::tie(q.x, q.y, q.z, q.w) < std::tie(p.x, p.y, p.z, p.w))
+    std::swap(p, q), std::swap(dp, dq);
+  const double t = dp / (dp - dq);
+  return {p.x + (q.x - p.x) * t, p.y + (q.y - p.y) * t, p.z + (q.z - p.z) * t,
+          p.w + (q.w - p.w) * t};
+}
+
+std::vector<Vec4> clip(std::vector<Vec4> poly, const std::array<ClipPlane, kClipPlanes>& planes) {
+  std::vector<Vec4> next;
+  for (int i = 0; i < kClipPlanes && poly.size() >= 3; ++i) {
+    next.clear();
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+      const Vec4 a = poly[k], b = poly[(k + 1) % poly.size()];
+      const double da = eval(planes[i], a), db = eval(planes[i], b);
+      if (da >= 0) next.push_back(a);
+      if ((da >= 0) != (db >= 0)) next.push_back(crossing(a, da, b, db));
+    }
+    poly.swap(next);
+  }
+  return poly;
+}
+
 }  // namespace
+
+void setup_polygon(std::span<const HomogeneousPoint> corners, std::uint32_t id,
+                   const RasterProjection& view, std::vector<ScreenTriangle>& out) {
+  // Points at infinity project like any other: pixel = offset + scale * x / z needs no w.
+  SHADOWKIT_CHECK(!view.orthographic);
+  std::vector<Vec4> poly;
+  poly.reserve(corners.size());
+  for (const HomogeneousPoint& c : corners) {
+    const Vec3 v = c.xyz - view.eye * c.w;
+    poly.push_back({dot(v, view.right), dot(v, view.up), dot(v, view.forward), c.w});
+  }
+  poly = clip(std::move(poly), clip_planes(view));
+  if (poly.size() < 3) return;
+  TriangleBuilder builder(view, out);
+  const DepthPlane none{0, 0, 0, true};
+  const FixedPoint f0 = to_fixed(view, poly[0].xyz());
+  FixedPoint prev = to_fixed(view, poly[1].xyz());
+  for (std::size_t i = 2; i < poly.size(); ++i) {
+    const FixedPoint cur = to_fixed(view, poly[i].xyz());
+    builder.emit(f0, prev, cur, none, id);
+    prev = cur;
+  }
+}
 
 // The pixel columns of row `py` whose centres satisfy all three edge functions.
 EdgeWalker::EdgeWalker(const ScreenTriangle& t, int edge, int first_row) {
@@ -168,7 +229,8 @@ void EdgeWalker::split(std::int64_t num, std::int64_t den, std::int64_t& q, std:
 }
 
 SpanWalker::SpanWalker(const ScreenTriangle& t, int first_row)
-    : edges_{EdgeWalker(t, 0, first_row), EdgeWalker(t, 1, first_row), EdgeWalker(t, 2, first_row)} {}
+    : edges_{EdgeWalker(t, 0, first_row), EdgeWalker(t, 1, first_row),
+             EdgeWalker(t, 2, first_row)} {}
 
 std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const RasterProjection& view) {
   const TriangleList& list = scene.triangles();

@@ -2,6 +2,7 @@
 // Triangle setup for the scan converter: clipping in view space and fixed-point edges.
 #include <algorithm>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "shadowkit/raster/projection.h"
@@ -20,9 +21,9 @@ inline constexpr double kGuardBand = 4096;
 /// pixel coordinates, y down; clockwise as seen on screen) with
 /// the top-left rule folded into the edge biases, and the depth-key plane of its face.
 struct ScreenTriangle {
-  std::int64_t x[3], y[3];  ///< fixed point
-  std::int64_t bias[3];     ///< 0 if the edge owns pixel centres on it, 1 otherwise
-  double key_a, key_b, key_c;  ///< depth key = a * px + b * py + c at pixel centre (px, py)
+  std::int64_t x[3], y[3];         ///< fixed point
+  std::int64_t bias[3];            ///< 0 if the edge owns pixel centres on it, 1 otherwise
+  double key_a, key_b, key_c;      ///< depth key = a * px + b * py + c at pixel centre (px, py)
   int min_x, min_y, max_x, max_y;  ///< pixel bounds, clamped to the raster
   std::uint32_t face;
 };
@@ -30,6 +31,21 @@ struct ScreenTriangle {
 /// Clips and sets up every triangle of \p scene for \p view, in triangle order (so that the
 /// tie rule "lower triangle index wins" survives binning). Runs in parallel.
 std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const RasterProjection& view);
+
+/// \brief A world-space point in homogeneous coordinates: w = 1 for a point, w = 0 for a
+/// direction, the point at infinity where parallel lines meet (shadow polygons reach there).
+struct HomogeneousPoint {
+  Vec3 xyz;
+  double w = 1;
+};
+
+/// Clips the convex polygon \p corners (world space, homogeneous) against the near plane and
+/// the guard band of the perspective \p view, fans it into triangles and appends them to
+/// \p out with face = \p id and a zero depth plane: for polygons that are not scene faces
+/// (shadow polygons). Equal corners of two polygons clip and snap bit-identically, so the
+/// fill rule counts a pixel centre on their shared edge once.
+void setup_polygon(std::span<const HomogeneousPoint> corners, std::uint32_t id,
+                   const RasterProjection& view, std::vector<ScreenTriangle>& out);
 
 /// \brief One edge's boundary column, row after row, in exact integer arithmetic.
 class EdgeWalker {
@@ -57,9 +73,9 @@ class EdgeWalker {
 
  private:
   static void split(std::int64_t num, std::int64_t den, std::int64_t& q, std::int64_t& r);
-  std::int64_t a_ = 0, abs_a_ = 0;  // change of the edge function per column
+  std::int64_t a_ = 0, abs_a_ = 0;   // change of the edge function per column
   std::int64_t c_ = 0, step_c_ = 0;  // horizontal edges: the edge function and its row step
-  std::int64_t q_ = 0, r_ = 0;    // boundary as quotient and remainder
+  std::int64_t q_ = 0, r_ = 0;       // boundary as quotient and remainder
   std::int64_t step_q_ = 0, step_r_ = 0;
 };
 

@@ -52,21 +52,23 @@ void render_visible_surfaces(const Scene& scene, const Context& ctx, VisibleSurf
   for (int c = 0; c < cam.width; ++c) column_x2[c] = float(std::pow(grid.x0 + grid.step * c, 2));
 
   const ScanConverter converter(scene);
-  converter.rasterize_tiles(RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position)), ctx,
-                            [&](const RasterTile& tile) {
-    for (int y = 0; y < tile.height; ++y) {
-      const float y2 = float(std::pow(grid.y0 - grid.step * (tile.y0 + y), 2));
-      const std::size_t row = std::size_t(tile.y0 + y) * cam.width + tile.x0;
-      const double* key = tile.depth_key + y * tile.width;
-      const float* x2 = column_x2.data() + tile.x0;
-      float* depth = vsb.depth.data() + row;
-      std::copy_n(tile.face + y * tile.width, tile.width, vsb.face.begin() + std::ptrdiff_t(row));
-      for (int x = 0; x < tile.width; ++x) {
-        // Background keys are -inf and give a depth of +inf.
-        depth[x] = std::sqrt(1.0f + x2[x] + y2) / std::max(float(key[x]), 0.0f);
-      }
-    }
-  });
+  converter.rasterize_tiles(
+      RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position)), ctx,
+      [&](const RasterTile& tile) {
+        for (int y = 0; y < tile.height; ++y) {
+          const float y2 = float(std::pow(grid.y0 - grid.step * (tile.y0 + y), 2));
+          const std::size_t row = std::size_t(tile.y0 + y) * cam.width + tile.x0;
+          const double* key = tile.depth_key + y * tile.width;
+          const float* x2 = column_x2.data() + tile.x0;
+          float* depth = vsb.depth.data() + row;
+          std::copy_n(tile.face + y * tile.width, tile.width,
+                      vsb.face.begin() + std::ptrdiff_t(row));
+          for (int x = 0; x < tile.width; ++x) {
+            // Background keys are -inf and give a depth of +inf.
+            depth[x] = std::sqrt(1.0f + x2[x] + y2) / std::max(float(key[x]), 0.0f);
+          }
+        }
+      });
 }
 
 VisibleSurfaceBuffer render_visible_surfaces(const Scene& scene, const Context& ctx) {

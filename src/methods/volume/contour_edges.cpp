@@ -1,0 +1,85 @@
+#include "contour_edges.h"
+
+#include <algorithm>
+#include <unordered_map>
+
+namespace shadowkit {
+namespace {
+
+int sign(double v) {
+  return (v > 0) - (v < 0);
+}
+
+// The side of the edge's shadow polygon, with normal \p polygon_normal, on which face use
+// \p use lies near the edge: its inward direction in its own plane (left of the edge as the
+// face walks it) against the polygon's normal. Exact for non-convex faces too.
+int face_side(const Mesh& mesh, const MeshEdge& edge, const EdgeUse& use, Vec3 polygon_normal) {
+  const Vec3 walk = mesh.vertices[edge.v1] - mesh.vertices[edge.v0];
+  const Vec3 inward = cross(mesh.planes[use.face].normal, use.forward ? walk : -walk);
+  return sign(dot(polygon_normal, inward));
+}
+
+}  // namespace
+
+double light_side(const Plane& plane, const Light& light) {
+  return light.type == Light::Type::point ? plane.distance(light.position)
+                                          : -dot(plane.normal, light.direction);
+}
+
+Vec3 away_from_light(Vec3 v, const Light& light) {
+  return light.type == Light::Type::point ? v - light.position : light.direction;
+}
+
+std::vector<ContourEdge> find_contour_edges(const Mesh& mesh, const Light& light) {
+  // Crow: mark each face as facing the light or not; a face in the light's plane casts no
+  // volume at all.
+  std::vector<char> casts(mesh.face_count());
+  for (std::size_t f = 0; f < casts.size(); ++f) casts[f] = light_side(mesh.planes[f], light) != 0;
+
+  std::vector<ContourEdge> contour;
+  for (std::uint32_t e = 0; e < mesh.edges.size(); ++e) {
+    const MeshEdge& edge = mesh.edges[e];
+    const Vec3 a = mesh.vertices[edge.v0], b = mesh.vertices[edge.v1];
+    const Vec3 normal = cross(b - a, away_from_light(a, light));
+    int weight = 0;
+    for (std::uint32_t u = edge.first_use; u < edge.first_use + edge.use_count; ++u) {
+      const EdgeUse& use = mesh.edge_uses[u];
+      if (casts[use.face]) weight += face_side(mesh, edge, use, normal);
+    }
+    if (weight > 0) contour.push_back({e, edge.v0, edge.v1, weight});
+    if (weight < 0) contour.push_back({e, edge.v1, edge.v0, -weight});
+  }
+  return contour;
+}
+
+std::vector<ContourLoop> chain_contour_loops(std::span<const ContourEdge> edges) {
+  std::unordered_multimap<std::uint32_t, std::uint32_t> starting_at;
+  for (std::uint32_t i = 0; i < edges.size(); ++i) starting_at.emplace(edges[i].from, i);
+  std::vector<char> used(edges.size(), 0);
+  // An unused edge leaving vertex v, or -1.
+  const auto next_from = [&](std::uint32_t v) -> std::int64_t {
+    auto [lo, hi] = starting_at.equal_range(v);
+    for (auto it = lo; it != hi; ++it) {
+      if (!used[it->second]) return it->second;
+    }
+    return -1;
+  };
+
+  std::vector<ContourLoop> loops;
+  for (std::uint32_t first = 0; first < edges.size(); ++first) {
+    if (used[first]) continue;
+    ContourLoop loop;
+    std::int64_t e = first;
+    while (e >= 0) {
+      used[e] = 1;
+      loop.edges.push_back(std::uint32_t(e));
+      if (edges[e].to == edges[first].from) break;
+      e = next_from(edges[e].to);
+    }
+    loop.closed = edges[loop.edges.back()].to == edges[first].from;
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+}  // namespace shadowkit

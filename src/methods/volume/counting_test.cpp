@@ -1,0 +1,90 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "../../testing/test_scenes.h"
+#include "contour_edges.h"
+#include "eye_count.h"
+#include "mask_test_support.h"
+#include "shadow_polygon.h"
+#include "volume_method.h"
+
+namespace shadowkit {
+namespace {
+
+// The side polygons' jumps for the open square of square_over_plane seen from \p eye.
+std::vector<int> square_jumps(Vec3 eye) {
+  const Mesh square = Mesh::build(testing::horizontal_quad(-1, 1, -1, 1, 1), "square", {});
+  const Light light = Light::point({0, 4, 0});
+  const Reach reach{100};
+  std::vector<int> jumps;
+  for (const ContourEdge& e : find_contour_edges(square, light)) {
+    const auto p = side_polygon(square, e, light, reach, eye, false);
+    EXPECT_TRUE(p.has_value());
+    jumps.push_back(p->jump);
+  }
+  std::sort(jumps.begin(), jumps.end());
+  return jumps;
+}
+
+TEST(Counting, EyeBesideAVolumeSeesTwoFrontAndTwoBackFacingShadowPolygons) {
+  EXPECT_EQ(square_jumps({9, 3, 1}), (std::vector<int>{-1, -1, 1, 1}));
+}
+
+TEST(Counting, EyeInsideAVolumeSeesOnlyBackFacingShadowPolygons) {
+  // Crow: "if the frontmost shadow surface is back-facing, everything before it is in
+  // shadow": the eye starts at count 1, and every polygon it looks through takes 1 away.
+  const Vec3 eye{0.2, 0.5, -0.3};
+  EXPECT_EQ(square_jumps(eye), (std::vector<int>{-1, -1, -1, -1}));
+  const Mesh square = Mesh::build(testing::horizontal_quad(-1, 1, -1, 1, 1), "square", {});
+  EXPECT_EQ(faces_between_eye_and_light(square, eye, Light::point({0, 4, 0})), 1);
+}
+
+TEST(Counting, EyeCountTellsWhenItCannotTell) {
+  const Mesh square = Mesh::build(testing::horizontal_quad(-1, 1, -1, 1, 1), "square", {});
+  // The way to the light passes through the square's edge.
+  EXPECT_FALSE(faces_between_eye_and_light(square, {1, 0, 0}, Light::point({1, 4, 0})));
+  EXPECT_EQ(faces_between_eye_and_light(square, {3, 0, 0}, Light::point({0, 4, 0})), 0);
+}
+
+Scene square_scene(Vec3 eye, Vec3 look_at) {
+  return testing::square_over_plane(testing::camera(eye, look_at, 160, 120),
+                                    testing::point_light({0, 4, 0}));
+}
+
+double depth_fail_objects(const Scene& scene, const MethodOptions& options = {}) {
+  VolumeMethod m(options);
+  m.build(scene, 0, {});
+  return testing::counter(m, "depth_fail_objects");
+}
+
+TEST(Counting, EyeInsideAShadowVolumeCountsDepthPassFromTheEyesCount) {
+  // The camera under the square, in its shadow, looking across the ground.
+  const Scene scene = square_scene({0.3, 0.4, 0.2}, {4, 0, 3});
+  EXPECT_EQ(depth_fail_objects(scene), 0);
+  EXPECT_LE(testing::worst_interior_mismatch(scene), 0.05);
+  EXPECT_LE(testing::worst_interior_mismatch(scene, {"volume", {{"count", "fail"}}}), 0.05);
+}
+
+TEST(Counting, NearPlaneCuttingAShadowVolumeSwitchesToDepthFail) {
+  // The eye on the shadow polygon of the square's edge x = 1 (the plane through the light
+  // and that edge): the near plane cuts it, and the square's volume is counted depth-fail.
+  const Plane plane{normalize(Vec3{3, 1, 0}), -4 / length(Vec3{3, 1, 0})};
+  const Vec3 on_plane{1.25, 0.25, 0.1};
+  ASSERT_NEAR(plane.distance(on_plane), 0, 1e-12);
+  const Scene scene = square_scene(on_plane, {3, 0, 2});
+  EXPECT_EQ(depth_fail_objects(scene), 1);
+  EXPECT_LE(testing::worst_interior_mismatch(scene), 0.05);
+}
+
+TEST(Counting, ForcedDepthPassAndDepthFailAgreeWithTheReference) {
+  const Scene scene = square_scene({0, 9, 6}, {0, 0, 0});
+  EXPECT_EQ(depth_fail_objects(scene, {"volume", {{"count", "pass"}}}), 0);
+  EXPECT_EQ(depth_fail_objects(scene, {"volume", {{"count", "fail"}}}), 2);
+  for (const char* mode : {"pass", "fail"}) {
+    EXPECT_LE(testing::worst_interior_mismatch(scene, {"volume", {{"count", mode}}}), 0.05) << mode;
+  }
+}
+
+}  // namespace
+}  // namespace shadowkit

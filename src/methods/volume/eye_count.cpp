@@ -1,0 +1,59 @@
+#include "eye_count.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "contour_edges.h"
+#include "segment_distance.h"
+
+namespace shadowkit {
+namespace {
+
+enum class Inside { no, yes, unsure };
+
+// Point \p x of face f's plane against the face: even-odd rule in the plane's dominant
+// projection, unsure within \p tolerance of an edge.
+Inside inside_face(const Mesh& mesh, std::size_t f, Vec3 x, double tolerance) {
+  const Vec3 n = mesh.planes[f].normal;
+  const double ax = std::abs(n.x), ay = std::abs(n.y), az = std::abs(n.z);
+  const int drop = ax >= ay && ax >= az ? 0 : (ay >= az ? 1 : 2);
+  const int i = drop == 0 ? 1 : 0, j = drop == 2 ? 1 : 2;
+  bool inside = false;
+  const std::uint32_t size = mesh.face_size(f);
+  for (std::uint32_t k = 0; k < size; ++k) {
+    const Vec3 a = mesh.vertices[mesh.face_vertex(f, k)];
+    const Vec3 b = mesh.vertices[mesh.face_vertex(f, (k + 1) % size)];
+    if (segment_distance(x, a, b) <= tolerance) return Inside::unsure;
+    if ((a[j] > x[j]) != (b[j] > x[j]) &&
+        x[i] < a[i] + (b[i] - a[i]) * (x[j] - a[j]) / (b[j] - a[j])) {
+      inside = !inside;
+    }
+  }
+  return inside ? Inside::yes : Inside::no;
+}
+
+}  // namespace
+
+std::optional<int> faces_between_eye_and_light(const Mesh& mesh, Vec3 eye, const Light& light) {
+  const Bounds3 box = mesh.bounds();
+  // Hazard: a relative tolerance; closer calls are left to depth-fail counting.
+  const double tolerance = 1e-9 * std::max(box.diagonal(), length(eye - box.center()));
+  int count = 0;
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const Plane& plane = mesh.planes[f];
+    const double l = light_side(plane, light);
+    if (l == 0) continue;  // casts no volume
+    const double e = plane.distance(eye);
+    if (std::abs(e) <= tolerance) return std::nullopt;
+    if ((e > 0) == (l > 0)) continue;
+    // Where the way to the light crosses the plane.
+    const Vec3 x = light.type == Light::Type::point ? eye + (light.position - eye) * (e / (e - l))
+                                                    : eye - light.direction * (-e / l);
+    const Inside in = inside_face(mesh, f, x, tolerance);
+    if (in == Inside::unsure) return std::nullopt;
+    count += in == Inside::yes;
+  }
+  return count;
+}
+
+}  // namespace shadowkit

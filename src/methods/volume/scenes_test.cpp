@@ -1,0 +1,84 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "../../testing/test_scenes.h"
+#include "mask_test_support.h"
+#include "shadowkit/scene/scene_file.h"
+#include "volume_method.h"
+
+namespace shadowkit {
+namespace {
+
+// The analytic shadow of the square on the ground; pixels within 1e-4 of its edge skipped.
+template <class InShadow>
+void expect_ground_shadow(const Scene& scene, InShadow in_shadow) {
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  VolumeMethod m({});
+  const ShadowMask mask = testing::method_mask(m, scene, vsb, 0);
+  int shadowed = 0, lit = 0;
+  for (std::size_t i = 0; i < mask.size(); ++i) {
+    if (!vsb.covered(i) || vsb.object(i) != 0) continue;
+    const Vec3 p = vsb.point(i);
+    const int expected = in_shadow(p);
+    if (expected < 0) continue;
+    EXPECT_EQ(mask.pixels[i], expected ? kMaskShadow : kMaskLit) << p.x << " " << p.z;
+    (expected ? shadowed : lit)++;
+  }
+  EXPECT_GT(shadowed, 100);
+  EXPECT_GT(lit, 100);
+}
+
+TEST(VolumeScenes, SquareAbovePlaneCastsTheAnalyticShadowOfAPointLight) {
+  const Scene scene = testing::square_over_plane(testing::camera({0, 9, 6}, {0, 0, 0}, 160, 120),
+                                                 testing::point_light({0, 4, 0}));
+  expect_ground_shadow(scene, [](Vec3 p) {
+    const double edge = std::max(std::abs(p.x), std::abs(p.z)) - 4.0 / 3.0;
+    return std::abs(edge) < 1e-4 ? -1 : int(edge < 0);
+  });
+}
+
+TEST(VolumeScenes, SquareAbovePlaneCastsTheAnalyticShadowOfADirectionalLight) {
+  const Vec3 d = normalize(Vec3{0.5, -1, 0.25});
+  const Scene scene = testing::square_over_plane(testing::camera({0, 9, 6}, {0, 0, 0}, 160, 120),
+                                                 testing::directional_light(d));
+  expect_ground_shadow(scene, [d](Vec3 p) {
+    const Vec3 q = p - d * (1.0 / -d.y);
+    const double edge = std::max(std::abs(q.x), std::abs(q.z)) - 1.0;
+    return std::abs(edge) < 1e-4 ? -1 : int(edge < 0);
+  });
+}
+
+// A scene at the reduced test resolution.
+Scene reduced(Scene scene) {
+  scene.camera.width = 480;
+  scene.camera.height = 270;
+  return scene;
+}
+
+class BuiltInScene : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(BuiltInScene, AgreesWithTheReference) {
+  const Scene scene = reduced(load_scene(GetParam(), {}));
+  EXPECT_LE(testing::worst_interior_mismatch(scene), 0.05);
+}
+
+INSTANTIATE_TEST_SUITE_P(Volume, BuiltInScene,
+                         ::testing::Values("cubes:125", "tetra:3", "room", "table", "three-lights",
+                                           "square"));
+
+TEST(VolumeScenes, EveryExampleAgreesWithTheReference) {
+  const std::filesystem::path dir = std::filesystem::path(SHADOWKIT_SOURCE_DIR) / "examples";
+  int checked = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".json") continue;
+    const Scene scene = reduced(load_scene_file(entry.path(), {}));
+    EXPECT_LE(testing::worst_interior_mismatch(scene), 0.05) << entry.path();
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
+}
+
+}  // namespace
+}  // namespace shadowkit

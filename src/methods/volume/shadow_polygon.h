@@ -1,0 +1,54 @@
+#pragma once
+// Shadow polygons: the invisible boundary of the shadow volumes (Crow 1977, Sec. VII, Fig. 4).
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "../../raster/triangle_setup.h"
+#include "contour_edges.h"
+#include "shadowkit/raster/scan_converter.h"
+#include "shadowkit/scene/scene.h"
+
+namespace shadowkit {
+
+/// \brief The region in which every counted crossing lies: the scene and the eye. A point
+/// light's shadow polygons may stop at the ball around the light holding it; a directional
+/// light's at the half-space dot(x, direction) <= limit.
+struct Reach {
+  double limit = 0;  ///< radius of the ball, or bound of the half-space
+  static Reach of(const Scene& scene, const Light& light);
+};
+
+/// \brief One polygon of a shadow volume's boundary, with the plane test that places a
+/// visible point in front of or behind it.
+struct ShadowPolygon {
+  std::array<raster::HomogeneousPoint, 4> corners{};
+  int corner_count = 0;
+  Vec3 normal;  ///< plane with the eye on its negative side; zero normal, d = -1: at infinity
+  double d = 0;
+  int jump = 0;  ///< change of the count where a pixel ray crosses it, going away from the eye
+  /// Depth-pass: counted when the crossing lies before the visible point. Depth-fail: when it
+  /// lies behind it (the visible point's own face included, for a light cap).
+  bool depth_fail = false;
+  std::uint32_t face = kNoFace;  ///< the scene face of a light cap
+};
+
+/// The shadow polygon of a contour edge: the edge and the rays from the light through its
+/// ends (parallel for a directional light). Depth-pass polygons stop where they leave
+/// \p reach; depth-fail ones go to infinity (homogeneous corners with w = 0). Empty when the
+/// eye lies in its plane (no pixel ray crosses it).
+std::optional<ShadowPolygon> side_polygon(const Mesh& mesh, const ContourEdge& edge,
+                                          const Light& light, const Reach& reach, Vec3 eye,
+                                          bool depth_fail);
+
+/// The depth-fail caps of scene triangle \p t: the triangle itself (the light cap, where its
+/// face's shadow volume begins) and, for a point light, its projection from the light onto
+/// the plane at infinity (the dark cap, where the volume ends). Appended to \p out.
+void cap_polygons(const Scene& scene, std::uint32_t t, const Light& light, Vec3 eye,
+                  std::vector<ShadowPolygon>& out);
+
+/// The plane of a side polygon, unit normal: the light and the edge lie in it.
+Plane side_plane(const Mesh& mesh, const ContourEdge& edge, const Light& light);
+
+}  // namespace shadowkit

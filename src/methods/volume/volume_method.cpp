@@ -1,0 +1,143 @@
+#include "volume_method.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <optional>
+
+#include "contour_edges.h"
+#include "eye_count.h"
+#include "shadowkit/core/error.h"
+#include "stencil_count.h"
+#include "volume_culling.h"
+
+namespace shadowkit {
+namespace {
+
+// What one caster contributes for the current light.
+struct CasterVolume {
+  std::vector<ShadowPolygon> polygons;
+  int eye_count = 0;
+  std::size_t contour_edges = 0, loops = 0, open_loops = 0;
+  bool depth_fail = false, culled = false;
+};
+
+// Depth-pass misses crossings the near plane clips away, so it needs every shadow polygon
+// farther from the eye than the near part of the view; and it needs the eye's own count.
+bool needs_depth_fail(const Mesh& mesh, const std::vector<ContourEdge>& edges, const Light& light,
+                      Vec3 eye, const ViewFrustum& view, std::optional<int> eye_count) {
+  if (!eye_count) return true;
+  return std::any_of(edges.begin(), edges.end(), [&](const ContourEdge& e) {
+    return std::abs(side_plane(mesh, e, light).distance(eye)) <= 2 * view.near_radius;
+  });
+}
+
+// Indices of the scene triangles of object \p o (they follow face order).
+std::pair<std::uint32_t, std::uint32_t> object_triangles(const Scene& scene, std::uint32_t o) {
+  const auto& faces = scene.triangles().triangle_face;
+  const std::uint32_t first = scene.objects[o].first_face;
+  const std::uint32_t last = first + std::uint32_t(scene.objects[o].mesh.face_count());
+  const auto lo = std::lower_bound(faces.begin(), faces.end(), first);
+  const auto hi = std::lower_bound(lo, faces.end(), last);
+  return {std::uint32_t(lo - faces.begin()), std::uint32_t(hi - faces.begin())};
+}
+
+CasterVolume caster_volume(const Scene& scene, std::uint32_t o, const Light& light,
+                           const Reach& reach, const ViewFrustum& view,
+                           VolumeMethod::Counting counting) {
+  CasterVolume v;
+  const Mesh& mesh = scene.objects[o].mesh;
+  const Vec3 eye = scene.camera.position;
+  // Crow's bounding box: a caster whose volume misses the view shadows nothing visible.
+  if (!shadow_volume_reaches_view(mesh.bounds(), light, reach, view)) {
+    v.culled = true;
+    return v;
+  }
+  // Contour edges and their loops (Fig. 2).
+  const std::vector<ContourEdge> edges = find_contour_edges(mesh, light);
+  const std::vector<ContourLoop> loops = chain_contour_loops(edges);
+  v.contour_edges = edges.size();
+  v.loops = loops.size();
+  v.open_loops = std::size_t(
+      std::count_if(loops.begin(), loops.end(), [](const ContourLoop& l) { return !l.closed; }));
+  // Depth-pass or depth-fail for this caster.
+  const std::optional<int> eye_count = faces_between_eye_and_light(mesh, eye, light);
+  v.depth_fail = counting == VolumeMethod::Counting::depth_fail ||
+                 (counting == VolumeMethod::Counting::automatic &&
+                  needs_depth_fail(mesh, edges, light, eye, view, eye_count));
+  SHADOWKIT_CHECK(v.depth_fail || eye_count);
+  v.eye_count = v.depth_fail ? 0 : *eye_count;
+  // Shadow polygons (Fig. 4), and the caps that close the volumes for depth-fail.
+  for (const ContourEdge& e : edges) {
+    if (auto p = side_polygon(mesh, e, light, reach, eye, v.depth_fail)) v.polygons.push_back(*p);
+  }
+  if (v.depth_fail) {
+    const auto [t0, t1] = object_triangles(scene, o);
+    for (std::uint32_t t = t0; t < t1; ++t) cap_polygons(scene, t, light, eye, v.polygons);
+  }
+  return v;
+}
+
+VolumeMethod::Counting parse_counting(const MethodOptions& options) {
+  const std::string text = options.text("count", "auto");
+  if (text == "auto") return VolumeMethod::Counting::automatic;
+  if (text == "pass") return VolumeMethod::Counting::depth_pass;
+  if (text == "fail") return VolumeMethod::Counting::depth_fail;
+  throw InputError("option 'volume.count'", "expected auto, pass or fail, got '" + text + "'");
+}
+
+}  // namespace
+
+VolumeMethod::VolumeMethod(const MethodOptions& options) {
+  options.expect_only("volume", {"count"});
+  counting_ = parse_counting(options);
+}
+
+void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
+  light_ = scene.lights.at(light);
+  const Camera& cam = scene.camera;
+  const Reach reach = Reach::of(scene, light_);
+  const ViewFrustum view = ViewFrustum::of(cam, near_plane_for(scene.bounds(), cam.position));
+  std::vector<CasterVolume> casters(scene.objects.size());
+  tbb::parallel_for(std::size_t(0), casters.size(), [&](std::size_t o) {
+    casters[o] = caster_volume(scene, std::uint32_t(o), light_, reach, view, counting_);
+  });
+
+  polygons_.clear();
+  eye_count_ = 0;
+  contour_edges_ = contour_loops_ = open_loops_ = depth_fail_objects_ = culled_objects_ = 0;
+  for (const CasterVolume& v : casters) {
+    polygons_.insert(polygons_.end(), v.polygons.begin(), v.polygons.end());
+    eye_count_ += v.eye_count;
+    contour_edges_ += double(v.contour_edges);
+    contour_loops_ += double(v.loops);
+    open_loops_ += double(v.open_loops);
+    depth_fail_objects_ += v.depth_fail;
+    culled_objects_ += v.culled;
+  }
+}
+
+void VolumeMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
+                         const Context& /*ctx*/) {
+  const StencilStats stats =
+      count_shadow_polygons(polygons_, eye_count_, scene, light_, surfaces, mask);
+  fill_ = double(stats.fill);
+  negative_counts_ = double(stats.negative);
+}
+
+std::size_t VolumeMethod::memory_bytes() const {
+  return polygons_.capacity() * sizeof(ShadowPolygon);
+}
+
+MethodCounters VolumeMethod::counters() const {
+  return {{"contour_edges", contour_edges_},
+          {"contour_loops", contour_loops_},
+          {"open_contour_loops", open_loops_},
+          {"shadow_polygons", double(polygons_.size())},
+          {"depth_fail_objects", depth_fail_objects_},
+          {"culled_objects", culled_objects_},
+          {"fill", fill_},
+          {"negative_counts", negative_counts_}};
+}
+
+}  // namespace shadowkit

@@ -1,0 +1,37 @@
+#pragma once
+// volume: Crow 1977 shadow volumes, counted per pixel against the visible surfaces.
+#include <vector>
+
+#include "shadow_polygon.h"
+#include "shadowkit/methods/shadow_method.h"
+
+namespace shadowkit {
+
+/// \brief Crow's third class (Sec. VII): per light, contour edges chained into loops, one
+/// shadow polygon per contour edge, and a per-pixel count of the shadow polygons between
+/// the eye and the visible point (depth-pass, starting from the eye's own count) or behind
+/// it (depth-fail, with light and dark caps), chosen per object. Option `count`:
+/// auto (default), pass or fail.
+class VolumeMethod final : public ShadowMethod {
+ public:
+  enum class Counting { automatic, depth_pass, depth_fail };
+
+  explicit VolumeMethod(const MethodOptions& options);
+  std::string_view name() const override { return "volume"; }
+  void build(const Scene& scene, std::size_t light, const Context& ctx) override;
+  void shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
+             const Context& ctx) override;
+  std::size_t memory_bytes() const override;
+  MethodCounters counters() const override;
+
+ private:
+  Counting counting_ = Counting::automatic;
+  Light light_;
+  std::vector<ShadowPolygon> polygons_;
+  int eye_count_ = 0;  ///< per-face volumes holding the eye, over depth-pass objects
+  double contour_edges_ = 0, contour_loops_ = 0, open_loops_ = 0;
+  double depth_fail_objects_ = 0, culled_objects_ = 0;
+  double fill_ = 0, negative_counts_ = 0;
+};
+
+}  // namespace shadowkit
