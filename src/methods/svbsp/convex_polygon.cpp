@@ -1,0 +1,109 @@
+#include "convex_polygon.h"
+
+#include <cmath>
+#include <tuple>
+
+namespace shadowkit::svbsp {
+namespace {
+
+int side_of(double d, double eps) {
+  return d > eps ? 1 : (d < -eps ? -1 : 0);
+}
+
+// The point where segment a-b crosses the plane, independent of the segment's direction.
+Vec3 crossing(Vec3 a, double da, Vec3 b, double db) {
+  if (std::tie(b.x, b.y, b.z) < std::tie(a.x, a.y, a.z)) std::swap(a, b), std::swap(da, db);
+  return a + (b - a) * (da / (da - db));
+}
+
+// Sutherland-Hodgman for one side s (+1 or -1), keeping the per-edge flags: each emitted
+// vertex carries the flag of the edge that leaves it.
+void clip_side(const ConvexPolygon& p, const std::vector<double>& d, const std::vector<int>& side,
+               int s, bool mark, ConvexPolygon& out) {
+  out.vertices.clear();
+  out.edge_in_tree.clear();
+  out.face = p.face;
+  const std::size_t n = p.vertices.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t j = (i + 1) % n;
+    const int sa = side[i] * s, sb = side[j] * s;
+    const bool flag = p.edge_in_tree[i];
+    if (sa >= 0) {
+      out.vertices.push_back(p.vertices[i]);
+      // Kept edge: in the plane if both ends are on it. Leaving edge from an on-vertex: the
+      // next vertex emitted is on the plane too, so that edge is the cut.
+      const bool in_plane = sa == 0 && sb == 0;
+      out.edge_in_tree.push_back(sb >= 0 ? (flag || (mark && in_plane)) : (sa == 0 ? mark : flag));
+    }
+    if (sa * sb < 0) {
+      out.vertices.push_back(crossing(p.vertices[i], d[i], p.vertices[j], d[j]));
+      out.edge_in_tree.push_back(sb > 0 ? flag : mark);
+    }
+  }
+}
+
+}  // namespace
+
+ConvexPolygon make_polygon(std::vector<Vec3> vertices, std::uint32_t face) {
+  ConvexPolygon p;
+  p.edge_in_tree.assign(vertices.size(), 0);
+  p.vertices = std::move(vertices);
+  p.face = face;
+  return p;
+}
+
+double area(const ConvexPolygon& p) {
+  Vec3 sum;
+  for (std::size_t i = 1; i + 1 < p.vertices.size(); ++i) {
+    sum += cross(p.vertices[i] - p.vertices[0], p.vertices[i + 1] - p.vertices[0]);
+  }
+  return 0.5 * length(sum);
+}
+
+PlaneSides classify(const ConvexPolygon& p, const Plane& plane, double eps) {
+  PlaneSides s;
+  for (const Vec3& v : p.vertices) {
+    const int k = side_of(plane.distance(v), eps);
+    s.negative = s.negative || k < 0;
+    s.positive = s.positive || k > 0;
+    s.touching = s.touching || k == 0;
+  }
+  return s;
+}
+
+void split_polygon(const ConvexPolygon& p, const Plane& plane, double eps, bool mark_edges,
+                   ConvexPolygon& negative, ConvexPolygon& positive) {
+  const std::size_t n = p.vertices.size();
+  std::vector<double> d(n);
+  std::vector<int> side(n);
+  bool any_negative = false, any_positive = false, any_on = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    d[i] = plane.distance(p.vertices[i]);
+    side[i] = side_of(d[i], eps);
+    any_negative = any_negative || side[i] < 0;
+    any_positive = any_positive || side[i] > 0;
+    any_on = any_on || side[i] == 0;
+  }
+  negative.vertices.clear();
+  positive.vertices.clear();
+  // A sliver within eps of the plane has no edge that bounds the cell: mark nothing.
+  const bool mark = mark_edges && (any_negative || any_positive);
+  if (!any_negative) {
+    if (any_on)
+      clip_side(p, d, side, 1, mark, positive);
+    else
+      positive = p;
+    return;
+  }
+  if (!any_positive) {
+    if (any_on)
+      clip_side(p, d, side, -1, mark, negative);
+    else
+      negative = p;
+    return;
+  }
+  clip_side(p, d, side, -1, mark, negative);
+  clip_side(p, d, side, 1, mark, positive);
+}
+
+}  // namespace shadowkit::svbsp

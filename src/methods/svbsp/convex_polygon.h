@@ -1,0 +1,49 @@
+#pragma once
+// Convex polygons in world space and their splitting by a plane: the one clipping
+// operation of the SVBSP algorithm (§2: "clips a polygon against a plane").
+#include <cstdint>
+#include <vector>
+
+#include "shadowkit/core/vec.h"
+
+namespace shadowkit::svbsp {
+
+/// \brief A convex piece of a scene face. Its plane is always the original face's plane
+/// (§7): it is never recomputed from the piece's vertices.
+struct ConvexPolygon {
+  std::vector<Vec3> vertices;
+  /// Per edge (vertices[i] -> vertices[i + 1]): the edge lies in a shadow plane that already
+  /// bounds the SVBSP cell the polygon has reached, so its own shadow plane would add
+  /// nothing (§6: fewer planes, a smaller tree).
+  std::vector<std::uint8_t> edge_in_tree;
+  std::uint32_t face = 0;  ///< global id of the original face
+};
+
+/// A polygon with the given corners and no edge in the tree.
+ConvexPolygon make_polygon(std::vector<Vec3> vertices, std::uint32_t face);
+
+/// Area of a convex (or any simple planar) polygon.
+double area(const ConvexPolygon& p);
+
+/// \brief Which sides of a plane a polygon reaches; vertices within the tolerance of the
+/// plane belong to both.
+struct PlaneSides {
+  bool negative = false, positive = false;
+  bool touching = false;  ///< some vertex within the tolerance of the plane
+  bool on() const { return !negative && !positive; }
+  bool spanning() const { return negative && positive; }
+};
+
+/// Where \p p lies against \p plane with tolerance \p eps (one tolerance everywhere, §7).
+PlaneSides classify(const ConvexPolygon& p, const Plane& plane, double eps);
+
+/// splitPolygon of Fig. 4: the parts of \p p on the negative and the positive side of
+/// \p plane. A polygon on one side (or wholly within eps of the plane: positive) is copied
+/// to that side only; the other output is left empty. Where \p mark_edges, edges that end up
+/// lying in the plane (the cut and edges with both ends on it) are flagged edge_in_tree.
+/// Cut points are computed from the edge's end points in a canonical order, so the two
+/// polygons sharing an edge are cut at bit-identical points (no cracks, §7).
+void split_polygon(const ConvexPolygon& p, const Plane& plane, double eps, bool mark_edges,
+                   ConvexPolygon& negative, ConvexPolygon& positive);
+
+}  // namespace shadowkit::svbsp

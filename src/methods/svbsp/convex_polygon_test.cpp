@@ -1,0 +1,78 @@
+#include "convex_polygon.h"
+
+#include <gtest/gtest.h>
+
+namespace shadowkit::svbsp {
+namespace {
+
+ConvexPolygon unit_square() {
+  return make_polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, 7);
+}
+
+TEST(ConvexPolygon, SplitConservesAreaAndKeepsTheFace) {
+  ConvexPolygon neg, pos;
+  const Plane plane{normalize(Vec3{1, 0.3, 0}), -0.4};
+  split_polygon(unit_square(), plane, 1e-12, false, neg, pos);
+  ASSERT_GE(neg.vertices.size(), 3u);
+  ASSERT_GE(pos.vertices.size(), 3u);
+  EXPECT_NEAR(area(neg) + area(pos), 1.0, 1e-14);
+  EXPECT_EQ(neg.face, 7u);
+  EXPECT_EQ(pos.face, 7u);
+  for (const Vec3& v : pos.vertices) EXPECT_GE(plane.distance(v), -1e-12);
+  for (const Vec3& v : neg.vertices) EXPECT_LE(plane.distance(v), 1e-12);
+}
+
+TEST(ConvexPolygon, SplitThroughTwoVerticesGivesTwoTrianglesSharingTheFlaggedCut) {
+  ConvexPolygon neg, pos;
+  const Plane diagonal{normalize(Vec3{1, -1, 0}), 0};
+  split_polygon(unit_square(), diagonal, 1e-12, true, neg, pos);
+  ASSERT_EQ(neg.vertices.size(), 3u);
+  ASSERT_EQ(pos.vertices.size(), 3u);
+  EXPECT_NEAR(area(neg), 0.5, 1e-15);
+  EXPECT_NEAR(area(pos), 0.5, 1e-15);
+  // Exactly one edge of each triangle is the diagonal, and only it is flagged.
+  for (const ConvexPolygon* p : {&neg, &pos}) {
+    int flagged = 0;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const Vec3 a = p->vertices[i], b = p->vertices[(i + 1) % 3];
+      const bool on =
+          std::abs(diagonal.distance(a)) < 1e-12 && std::abs(diagonal.distance(b)) < 1e-12;
+      EXPECT_EQ(bool(p->edge_in_tree[i]), on);
+      flagged += p->edge_in_tree[i];
+    }
+    EXPECT_EQ(flagged, 1);
+  }
+}
+
+TEST(ConvexPolygon, AnEdgeLyingInThePlaneIsFlaggedWithoutASplit) {
+  ConvexPolygon neg, pos;
+  const Plane x0{{1, 0, 0}, 0};  // holds the edge (0,1,0) -> (0,0,0)
+  split_polygon(unit_square(), x0, 1e-12, true, neg, pos);
+  EXPECT_TRUE(neg.vertices.empty());
+  ASSERT_EQ(pos.vertices.size(), 4u);
+  EXPECT_EQ(pos.edge_in_tree, (std::vector<std::uint8_t>{0, 0, 0, 1}));
+}
+
+TEST(ConvexPolygon, NeighboursAreCutAtBitIdenticalPoints) {
+  // Two triangles share the edge a-b, walked in opposite directions.
+  const Vec3 a{0.1, 0.2, 0.3}, b{1.7, 0.9, -0.4};
+  const ConvexPolygon t0 = make_polygon({a, b, {0, 2, 0}}, 0);
+  const ConvexPolygon t1 = make_polygon({b, a, {1, -2, 0}}, 1);
+  const Plane plane{normalize(Vec3{1, 0.1, 0.2}), -0.77};
+  ConvexPolygon n0, p0, n1, p1;
+  split_polygon(t0, plane, 1e-12, false, n0, p0);
+  split_polygon(t1, plane, 1e-12, false, n1, p1);
+  std::vector<Vec3> cuts0, cuts1;
+  for (const Vec3& v : p0.vertices)
+    if (v != a && v != b && v != Vec3{0, 2, 0}) cuts0.push_back(v);
+  for (const Vec3& v : p1.vertices)
+    if (v != a && v != b && v != Vec3{1, -2, 0}) cuts1.push_back(v);
+  // The cut on the shared edge appears in both, bit for bit.
+  bool shared = false;
+  for (const Vec3& u : cuts0)
+    for (const Vec3& v : cuts1) shared = shared || u == v;
+  EXPECT_TRUE(shared);
+}
+
+}  // namespace
+}  // namespace shadowkit::svbsp

@@ -1,0 +1,57 @@
+#include "fragment_raster.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+
+#include "../../raster/triangle_setup.h"
+
+namespace shadowkit::svbsp {
+namespace {
+
+// Marks the pixels of \p face owned by one screen triangle of a lit fragment.
+void mark_lit(const raster::ScreenTriangle& t, std::uint32_t face,
+              const VisibleSurfaceBuffer& surfaces, ShadowMask& mask) {
+  raster::SpanWalker walker(t, t.min_y);
+  for (int y = t.min_y; y <= t.max_y; ++y, walker.next_row()) {
+    int x0 = t.min_x, x1 = t.max_x;
+    if (!walker.span(x0, x1)) continue;
+    for (int x = x0; x <= x1; ++x) {
+      const std::size_t i = surfaces.index(x, y);
+      // Fragments of different faces may overlap on screen; only the visible face counts.
+      // Several threads may store the same value here.
+      if (surfaces.face[i] == face) {
+        std::atomic_ref<std::uint8_t>(mask.pixels[i]).store(kMaskLit, std::memory_order_relaxed);
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void shade_fragments(const Scene& scene, const Light& light, const std::vector<Fragment>& fragments,
+                     const VisibleSurfaceBuffer& surfaces, ShadowMask& mask) {
+  for (std::size_t i = 0; i < mask.pixels.size(); ++i) {
+    if (surfaces.covered(i)) mask.pixels[i] = kMaskShadow;
+  }
+  const Camera& cam = scene.camera;
+  const RasterProjection view =
+      RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position));
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, fragments.size(), 64), [&](const auto& r) {
+    std::vector<raster::HomogeneousPoint> corners;
+    std::vector<raster::ScreenTriangle> triangles;
+    for (std::size_t f = r.begin(); f != r.end(); ++f) {
+      const Fragment& fragment = fragments[f];
+      const std::uint32_t face = fragment.polygon.face;
+      if (!fragment.lit || !faces_light(scene.face_plane(face), cam.position, light)) continue;
+      corners.clear();
+      for (const Vec3& v : fragment.polygon.vertices) corners.push_back({v, 1});
+      triangles.clear();
+      raster::setup_polygon(corners, face, view, triangles);
+      for (const auto& t : triangles) mark_lit(t, face, surfaces, mask);
+    }
+  });
+}
+
+}  // namespace shadowkit::svbsp

@@ -1,0 +1,65 @@
+#pragma once
+// The scene BSP tree of Fuchs, Kedem and Naylor (§3): built once per scene, it gives the
+// front-to-back order of the scene polygons from any light in linear time.
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "convex_polygon.h"
+#include "shadowkit/scene/scene.h"
+
+namespace shadowkit::svbsp {
+
+/// \brief A BSP tree over the convex pieces of every scene face. Each node holds the pieces
+/// lying in its plane (the plane of an original face); pieces spanning a node's plane are
+/// split by it.
+class SceneBsp {
+ public:
+  /// Builds the tree from every face of \p scene (non-convex faces as triangles). Root
+  /// choice samples a few candidate planes and keeps the one with the lowest weighted sum of
+  /// splits and imbalance; a node may split by a plane holding no polygon.
+  static SceneBsp build(const Scene& scene);
+
+  /// Calls \p visit with the pieces of each node, nodes in front-to-back order as seen from
+  /// \p light (a directional light sits at infinity against its direction). Pieces of one
+  /// node are coplanar and cannot hide one another.
+  void front_to_back(const Light& light,
+                     const std::function<void(std::span<const ConvexPolygon>)>& visit) const;
+
+  std::size_t node_count() const { return nodes_.size(); }
+  std::size_t piece_count() const { return pieces_.size(); }
+  /// Pieces created by splitting (piece_count minus the convex input polygons).
+  std::size_t split_count() const { return splits_; }
+  std::size_t depth() const { return depth_; }
+  std::size_t memory_bytes() const;
+
+  /// The tolerance of plane tests, relative to the scene's size.
+  static constexpr double kRelativeTolerance = 1e-9;
+
+ private:
+  struct Node {
+    Plane plane;
+    std::uint32_t first = 0, count = 0;  ///< pieces in the plane, into pieces_
+    std::int32_t front = -1, back = -1;  ///< children, -1: empty half-space
+  };
+  std::pair<Plane, std::size_t> choose_splitter(const std::vector<ConvexPolygon>& polygons,
+                                                const Scene& scene) const;
+  std::int32_t build_node(std::vector<ConvexPolygon> polygons, const Scene& scene,
+                          std::size_t depth);
+  void visit(std::int32_t node, const Light& light,
+             const std::function<void(std::span<const ConvexPolygon>)>& fn) const;
+
+  std::vector<Node> nodes_;
+  std::vector<ConvexPolygon> pieces_;
+  std::int32_t root_ = -1;
+  double eps_ = 0;
+  std::size_t splits_ = 0, depth_ = 0;
+};
+
+/// The convex pieces of every face of \p scene: the face itself when it is convex, its
+/// triangles otherwise.
+std::vector<ConvexPolygon> convex_faces(const Scene& scene);
+
+}  // namespace shadowkit::svbsp

@@ -1,0 +1,36 @@
+#pragma once
+// svbsp: Chin & Feiner 1989 shadow volume BSP trees, shadows as object-space fragments.
+#include <optional>
+#include <vector>
+
+#include "scene_bsp.h"
+#include "shadow_generator.h"
+#include "shadowkit/methods/shadow_method.h"
+
+namespace shadowkit {
+
+/// \brief Chin & Feiner 1989: a scene BSP tree built once (prepare), per light an SVBSP
+/// tree grown from the light-facing pieces in front-to-back order, which splits every piece
+/// into lit and shadowed fragments (build); the mask renders the lit fragments with the
+/// shared scan converter (shade). No options.
+class SvbspMethod final : public ShadowMethod {
+ public:
+  explicit SvbspMethod(const MethodOptions& options);
+  std::string_view name() const override { return "svbsp"; }
+  void prepare(const Scene& scene, const Context& ctx) override;
+  void build(const Scene& scene, std::size_t light, const Context& ctx) override;
+  void shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
+             const Context& ctx) override;
+  std::size_t memory_bytes() const override;
+  MethodCounters counters() const override;
+
+  /// The fragments of the last build(), each tied to its original face.
+  const std::vector<svbsp::Fragment>& fragments() const { return result_.fragments; }
+
+ private:
+  std::optional<svbsp::SceneBsp> bsp_;
+  Light light_;
+  svbsp::LightFragments result_;
+};
+
+}  // namespace shadowkit

@@ -1,0 +1,98 @@
+#include "svbsp_tree.h"
+
+#include <cmath>
+#include <utility>
+
+namespace shadowkit::svbsp {
+
+bool make_shadow_plane(const Light& light, Vec3 a, Vec3 b, Vec3 inside, ShadowPlane& out) {
+  const bool point = light.type == Light::Type::point;
+  const Vec3 n =
+      point ? cross(a - light.position, b - light.position) : cross(b - a, light.direction);
+  const double len = length(n);
+  // Hazard: an edge (nearly) aligned with the light ray has no plane; its polygon is seen
+  // edge-on and the neighbouring edges' planes close the volume.
+  const double scale =
+      point ? length(a - light.position) * length(b - light.position) : length(b - a);
+  if (!(len > 1e-12 * scale)) return false;
+  Plane plane{n / len, 0};
+  plane.d = -dot(plane.normal, a);
+  if (plane.distance(inside) < 0) plane = {-plane.normal, -plane.d};
+  out.plane = plane;
+  return true;
+}
+
+// The shadow volume of a lit fragment as a chain of its shadow planes (buildSVBSPtree of
+// Fig. 4 for a convex polygon): outside any plane is OUT, inside all of them IN.
+std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p) {
+  Vec3 centroid;
+  for (const Vec3& v : p.vertices) centroid += v;
+  centroid = centroid / double(p.vertices.size());
+  const std::size_t n = p.vertices.size();
+  std::int32_t first = kIn, last = -1;
+  bool undefined = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    // §6: an edge in a plane that already bounds this cell needs no plane of its own.
+    if (p.edge_in_tree[i]) continue;
+    ShadowPlane s;
+    if (!make_shadow_plane(light_, p.vertices[i], p.vertices[(i + 1) % n], centroid, s)) {
+      undefined = true;
+      continue;
+    }
+    const std::int32_t index = std::int32_t(nodes_.size());
+    nodes_.push_back({s, kOut, kIn});
+    if (last >= 0)
+      nodes_[last].positive = index;
+    else
+      first = index;
+    last = index;
+  }
+  // Every edge on the cell's walls: the volume fills the cell. No plane at all because the
+  // fragment is degenerate: it casts nothing.
+  return first == kIn && undefined ? kOut : first;
+}
+
+void SvbspTree::filter(const ConvexPolygon& p, std::vector<Fragment>* out, bool enlarge) {
+  // Pieces still to filter, and the slot (parent node, side; -1: the root) they start at.
+  struct Pending {
+    ConvexPolygon polygon;
+    std::int32_t parent;
+    bool positive;
+  };
+  const auto slot = [&](std::int32_t parent, bool pos) -> std::int32_t& {
+    return parent < 0 ? root_ : (pos ? nodes_[parent].positive : nodes_[parent].negative);
+  };
+  std::vector<Pending> pending{{p, -1, false}};
+  ConvexPolygon negative, positive;
+  while (!pending.empty()) {
+    Pending item = std::move(pending.back());
+    pending.pop_back();
+    std::int32_t at = slot(item.parent, item.positive);
+    // Down the tree, splitting at each node the piece spans (Fig. 4).
+    while (at >= 0) {
+      const Plane& plane = nodes_[at].shadow_plane.plane;
+      const PlaneSides sides = svbsp::classify(item.polygon, plane, eps_);
+      if (!sides.touching && !sides.spanning()) {  // wholly on one side: no copy
+        item.parent = at;
+        item.positive = sides.positive;
+        at = sides.positive ? nodes_[at].positive : nodes_[at].negative;
+        continue;
+      }
+      split_polygon(item.polygon, plane, eps_, true, negative, positive);
+      const bool has_neg = !negative.vertices.empty(), has_pos = !positive.vertices.empty();
+      if (has_neg && has_pos) pending.push_back({std::move(negative), at, false});
+      item.polygon = std::move(has_pos ? positive : negative);
+      item.parent = at;
+      item.positive = has_pos;
+      at = has_pos ? nodes_[at].positive : nodes_[at].negative;
+    }
+    const bool lit = at == kOut;
+    if (lit && enlarge) {
+      const std::int32_t volume = shadow_volume(item.polygon);
+      slot(item.parent, item.positive) = volume;
+    }
+    if (out) out->push_back({std::move(item.polygon), lit});
+  }
+}
+
+}  // namespace shadowkit::svbsp
