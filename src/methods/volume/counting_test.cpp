@@ -16,7 +16,7 @@ namespace {
 std::vector<int> square_jumps(Vec3 eye) {
   const Mesh square = Mesh::build(testing::horizontal_quad(-1, 1, -1, 1, 1), "square", {});
   const Light light = Light::point({0, 4, 0});
-  const Reach reach{100};
+  const Reach reach{100, {}};  // no bounding box: polygons unclipped
   std::vector<int> jumps;
   for (const ContourEdge& e : find_contour_edges(square, light)) {
     const auto p = side_polygon(square, e, light, reach, eye, false);

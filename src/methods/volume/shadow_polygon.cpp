@@ -2,8 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-
-#include "segment_distance.h"
+#include <tuple>
 
 namespace shadowkit {
 namespace {
@@ -18,6 +17,39 @@ std::optional<ShadowPolygon> oriented(ShadowPolygon poly, int jump_to_positive, 
   poly.jump = eye_side < 0 ? jump_to_positive : -jump_to_positive;
   if (eye_side > 0) poly.normal = -poly.normal, poly.d = -poly.d;
   return poly;
+}
+
+// Where edge (p, q) crosses a plane at signed values dp, dq: endpoints in a canonical order so
+// that polygons sharing the edge get bit-identical points (as the raster's clipper).
+HomogeneousPoint crossing(HomogeneousPoint p, double dp, HomogeneousPoint q, double dq) {
+  if (std::tie(q.xyz.x, q.xyz.y, q.xyz.z, q.w) < std::tie(p.xyz.x, p.xyz.y, p.xyz.z, p.w))
+    std::swap(p, q), std::swap(dp, dq);
+  const double t = dp / (dp - dq);
+  return {p.xyz + (q.xyz - p.xyz) * t, p.w + (q.w - p.w) * t};
+}
+
+// Clips \p poly to \p box (Sutherland-Hodgman on the six faces, homogeneous); false if
+// nothing remains. Keeps depth-pass polygons from reaching past the receivers (Crow's volumes
+// need not extend beyond the scene), which is most of their area on screen.
+bool clip_to_box(ShadowPolygon& poly, const Bounds3& box) {
+  for (int face = 0; face < 6 && poly.corner_count >= 3; ++face) {
+    const int axis = face % 3;
+    const double sign = face < 3 ? 1 : -1, bound = face < 3 ? box.lo[axis] : box.hi[axis];
+    // Keeps sign (x[axis] - bound w) >= 0.
+    const auto eval = [&](const HomogeneousPoint& p) { return sign * (p.xyz[axis] - bound * p.w); };
+    std::array<HomogeneousPoint, 10> out;
+    int n = 0;
+    for (int k = 0; k < poly.corner_count; ++k) {
+      const HomogeneousPoint& p = poly.corners[k];
+      const HomogeneousPoint& q = poly.corners[(k + 1) % poly.corner_count];
+      const double dp = eval(p), dq = eval(q);
+      if (dp >= 0) out[n++] = p;
+      if ((dp >= 0) != (dq >= 0)) out[n++] = crossing(p, dp, q, dq);
+    }
+    poly.corners = out;
+    poly.corner_count = n;
+  }
+  return poly.corner_count >= 3;
 }
 
 }  // namespace
@@ -37,6 +69,9 @@ Reach Reach::of(const Scene& scene, const Light& light) {
   } else {
     r.limit *= 1.01;
   }
+  // A margin keeps the box's faces off the receivers lying on them (the ground).
+  const Vec3 margin = Vec3{1, 1, 1} * (0.01 * box.diagonal() + 1e-300);
+  r.box = {box.lo - margin, box.hi + margin};
   return r;
 }
 
@@ -53,28 +88,16 @@ std::optional<ShadowPolygon> side_polygon(const Mesh& mesh, const ContourEdge& e
   const Vec3 da = away_from_light(a, light), db = away_from_light(b, light);
   ShadowPolygon poly;
   poly.depth_fail = depth_fail;
-  if (depth_fail) {
-    // To infinity: the rays meet the plane at infinity at (da, 0) and (db, 0); a directional
-    // light's meet in one point, and the polygon is a triangle.
-    poly.corners = {HomogeneousPoint{a, 1}, {b, 1}, {db, 0}, {da, 0}};
-    poly.corner_count = light.type == Light::Type::point ? 4 : 3;
-  } else if (light.type == Light::Type::point) {
-    // Beyond T times the light's distance to the edge, every point of the polygon is farther
-    // from the light than the reach.
-    const double gap = segment_distance(light.position, a, b);
-    if (gap == 0) return std::nullopt;
-    const double t = std::max(1.0, reach.limit / gap);
-    poly.corners = {
-        HomogeneousPoint{a, 1}, {b, 1}, {light.position + db * t, 1}, {light.position + da * t, 1}};
-    poly.corner_count = 4;
-  } else {
-    const Vec3 dir = light.direction;
-    poly.corners = {HomogeneousPoint{a, 1},
-                    {b, 1},
-                    {b + dir * (reach.limit - dot(b, dir)), 1},
-                    {a + dir * (reach.limit - dot(a, dir)), 1}};
-    poly.corner_count = 4;
-  }
+  // To infinity: the rays meet the plane at infinity at (da, 0) and (db, 0); a directional
+  // light's meet in one point, and the polygon is a triangle. The far corners depend on the
+  // vertex alone, so neighbouring polygons share their rays bit for bit and the fill rule
+  // counts a pixel centre on a shared ray once.
+  poly.corners[0] = {a, 1};
+  poly.corners[1] = {b, 1};
+  poly.corners[2] = {db, 0};
+  poly.corners[3] = {da, 0};
+  poly.corner_count = light.type == Light::Type::point ? 4 : 3;
+  if (!depth_fail && !reach.box.empty() && !clip_to_box(poly, reach.box)) return std::nullopt;
   const Plane plane = side_plane(mesh, edge, light);
   if (!is_finite(plane.normal)) return std::nullopt;
   poly.normal = plane.normal;

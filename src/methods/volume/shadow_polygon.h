@@ -12,18 +12,20 @@
 
 namespace shadowkit {
 
-/// \brief The region in which every counted crossing lies: the scene and the eye. A point
-/// light's shadow polygons may stop at the ball around the light holding it; a directional
-/// light's at the half-space dot(x, direction) <= limit.
+/// \brief The region in which every counted crossing lies: the scene and the eye. It lies in
+/// the ball of radius `limit` around a point light, or in the half-space
+/// dot(x, direction) <= limit of a directional one; and in `box`.
 struct Reach {
   double limit = 0;  ///< radius of the ball, or bound of the half-space
+  Bounds3 box;       ///< the scene and the eye with a margin; empty: unbounded
   static Reach of(const Scene& scene, const Light& light);
 };
 
 /// \brief One polygon of a shadow volume's boundary, with the plane test that places a
 /// visible point in front of or behind it.
 struct ShadowPolygon {
-  std::array<raster::HomogeneousPoint, 4> corners{};
+  /// A convex polygon: up to 4 corners, plus one for each face of the reach's box clipping it.
+  std::array<raster::HomogeneousPoint, 10> corners{};
   int corner_count = 0;
   Vec3 normal;  ///< plane with the eye on its negative side; zero normal, d = -1: at infinity
   double d = 0;
@@ -35,9 +37,10 @@ struct ShadowPolygon {
 };
 
 /// The shadow polygon of a contour edge: the edge and the rays from the light through its
-/// ends (parallel for a directional light). Depth-pass polygons stop where they leave
-/// \p reach; depth-fail ones go to infinity (homogeneous corners with w = 0). Empty when the
-/// eye lies in its plane (no pixel ray crosses it).
+/// ends (parallel for a directional light), to infinity (homogeneous corners with w = 0).
+/// Depth-pass polygons are clipped to the box of \p reach: crossings between the eye and a
+/// visible point lie in it. Empty when the eye lies in its plane (no pixel ray crosses it) or
+/// nothing of it is in the box.
 std::optional<ShadowPolygon> side_polygon(const Mesh& mesh, const ContourEdge& edge,
                                           const Light& light, const Reach& reach, Vec3 eye,
                                           bool depth_fail);

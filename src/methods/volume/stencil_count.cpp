@@ -16,6 +16,10 @@ using raster::ScreenTriangle;
 using raster::TileBins;
 constexpr int kTile = TileBins::kTile;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Relative slack of the depth-key bounds below. Rounding in the keys and in the exact plane
+// test is about 1e-15 relative; keys closer than this fall back to the exact test.
+constexpr double kKeySlack = 1e-7;
 
 // Shadow polygons as screen triangles, face = polygon index. Order does not matter: counts
 // add up.
@@ -35,6 +39,72 @@ std::vector<ScreenTriangle> setup_shadow_polygons(const std::vector<ShadowPolygo
   return all;
 }
 
+// The depth key of a plane along the pixel rays: key = 1 / s where the ray eye + s dir meets
+// it (dir = forward + x right + y up, so s is the view depth). Linear in the pixel column and
+// row; a point is nearer than another on the same ray when its key is larger, and a plane the
+// ray meets behind the eye (or never) has key <= 0. The exact plane test "the visible point
+// lies beyond the polygon's plane" is key(polygon) > key(visible point): comparing keys
+// settles whole spans and tiles at once (Crow's scan-line coherence).
+struct KeyPlane {
+  double a = 0, b = 0, c = 0;  ///< key = a column + b row + c
+  double slack = 0;            ///< bound on its rounding, with kKeySlack to spare
+  double at(double column, double row) const { return a * column + b * row + c; }
+};
+
+// The camera's pixel-ray grid, computed once.
+struct RayGrid {
+  Vec3 eye, forward, right, up;
+  Camera::PixelGrid grid;
+  double x_extent, y_extent;  ///< bounds of |x| and |y| over the raster
+  explicit RayGrid(const Camera& cam)
+      : eye(cam.position),
+        forward(cam.forward()),
+        right(cam.right()),
+        up(cam.true_up()),
+        grid(cam.pixel_grid()),
+        x_extent(std::abs(grid.x0) + grid.step * cam.width),
+        y_extent(std::abs(grid.y0) + grid.step * cam.height) {}
+};
+
+KeyPlane key_plane(Vec3 normal, double d, const RayGrid& rays) {
+  const Camera::PixelGrid& g = rays.grid;
+  const double nf = dot(normal, rays.forward), nr = dot(normal, rays.right),
+               nu = dot(normal, rays.up);
+  const double e = dot(normal, rays.eye) + d;  // nonzero: the eye is off every plane it sees
+  KeyPlane k;
+  k.a = -g.step * nr / e;
+  k.b = g.step * nu / e;
+  k.c = -(nf + g.x0 * nr + g.y0 * nu) / e;
+  k.slack = kKeySlack *
+            (std::abs(nf) + rays.x_extent * std::abs(nr) + rays.y_extent * std::abs(nu)) /
+            std::abs(e);
+  return k;
+}
+
+std::vector<KeyPlane> polygon_keys(const std::vector<ShadowPolygon>& polygons,
+                                   const RayGrid& rays) {
+  std::vector<KeyPlane> keys(polygons.size());
+  tbb::parallel_for(std::size_t(0), polygons.size(), [&](std::size_t i) {
+    keys[i] = key_plane(polygons[i].normal, polygons[i].d, rays);
+  });
+  return keys;
+}
+
+// Per scene face: its depth key plane (the visible keys of its pixels) and whether its
+// visible side faces the light (contract condition 1).
+struct FaceTable {
+  std::vector<KeyPlane> keys;
+  std::vector<char> lit_side;
+  FaceTable(const Scene& scene, const Light& light, const RayGrid& rays)
+      : keys(scene.face_count()), lit_side(scene.face_count()) {
+    tbb::parallel_for(std::uint32_t(0), scene.face_count(), [&](std::uint32_t f) {
+      const Plane& plane = scene.face_plane(f);
+      keys[f] = key_plane(plane.normal, plane.d, rays);
+      lit_side[f] = faces_light(plane, rays.eye, light);
+    });
+  }
+};
+
 // Whether triangle \p s may own a pixel centre of the tile [x0, x1] x [y0, y1]: no edge has
 // all four corner centres outside. Long thin shadow polygons cross few of the tiles their
 // bounds overlap; this keeps the span walk off the rest.
@@ -52,11 +122,79 @@ bool overlaps_tile(const ScreenTriangle& s, int x0, int y0, int x1, int y1) {
   return true;
 }
 
-// One tile's visible points (NaN for background, so that no plane test passes) and counts.
+// Narrows rows [ya, yb] to those where triangle \p s can own pixel centres in columns
+// [xa, xb]: the y extent of the triangle within that column strip, widened by a pixel. A thin
+// slanted shadow polygon spans many more rows of a tile than it crosses within its columns.
+void narrow_rows(const ScreenTriangle& s, int xa, int xb, int& ya, int& yb) {
+  constexpr double kSub = double(raster::kSubpixel);
+  const double lo = (xa - 0.5) * kSub, hi = (xb + 1.5) * kSub;  // centres +- one pixel
+  double y_min = kInf, y_max = -kInf;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    double x0 = double(s.x[i]), y0 = double(s.y[i]), x1 = double(s.x[j]), y1 = double(s.y[j]);
+    if (x0 > x1) std::swap(x0, x1), std::swap(y0, y1);
+    if (x1 < lo || x0 > hi) continue;
+    // The part of the edge inside the strip; y is linear in x along it.
+    const double slope = x1 > x0 ? (y1 - y0) / (x1 - x0) : 0;
+    const double ya_edge = x0 < lo ? y0 + slope * (lo - x0) : y0;
+    const double yb_edge = x1 > hi ? y0 + slope * (hi - x0) : y1;
+    y_min = std::min({y_min, ya_edge, yb_edge});
+    y_max = std::max({y_max, ya_edge, yb_edge});
+  }
+  ya = std::max(ya, int(std::floor(y_min / kSub)) - 1);
+  yb = std::min(yb, int(std::ceil(y_max / kSub)) + 1);
+}
+
+// The range of visible keys over some covered pixels, widened by the slack; empty (lo = +inf,
+// hi = -inf) when none is covered.
+struct KeyRange {
+  double lo = kInf, hi = -kInf;
+  void add(double key) { lo = std::min(lo, key), hi = std::max(hi, key); }
+  void add(const KeyRange& r) { lo = std::min(lo, r.lo), hi = std::max(hi, r.hi); }
+  void widen() { lo -= kKeySlack * std::abs(lo), hi += kKeySlack * std::abs(hi); }
+};
+
+// Where the crossings of a polygon over some pixels lie, from its key range there.
+enum class Crossing { all_before, all_behind, mixed };
+
+Crossing classify(double key_lo, double key_hi, double slack, const KeyRange& visible) {
+  if (key_lo - slack > visible.hi) return Crossing::all_before;
+  if (key_hi + slack < visible.lo) return Crossing::all_behind;
+  return Crossing::mixed;
+}
+
+// What a polygon adds to every pixel of a span settled as a whole: depth-pass counts the
+// crossings before the visible point, depth-fail those behind it.
+int settled_jump(const ShadowPolygon& p, Crossing c) {
+  if (!p.depth_fail) return c == Crossing::all_before ? p.jump : 0;
+  return c == Crossing::all_behind ? -p.jump : 0;
+}
+
+// Visible keys are kept per run of kBlock pixels of a row: a span is settled against the
+// runs it touches, so a polygon in front of the near cubes of one part of a row is not tested
+// pixel by pixel because the row also shows the far ground elsewhere.
+constexpr int kBlock = 8;
+// Rows of a band: the Hi-Z test between the whole tile and single spans.
+constexpr int kBand = 8;
+
+// One tile: visible faces, keys and counts; visible points (NaN for background, so that no
+// plane test passes) loaded per row when an unsettled span first needs them. Whole-span jumps
+// go into `delta` (+jump at the first column, -jump past the last) and are summed along each
+// row at the end: O(1) per span.
 struct TileCounts {
   double x[kTile * kTile], y[kTile * kTile], z[kTile * kTile];
   std::uint32_t face[kTile * kTile];
   int count[kTile * kTile];
+  int delta[kTile * (kTile + 1)];
+  KeyRange block[kTile][kTile / kBlock], band[kTile / kBand], all;
+  bool points_loaded[kTile];
+  int x0, y0, w, h;
+
+  KeyRange span_keys(int row, int first, int last) const {
+    KeyRange r;
+    for (int b = first / kBlock; b <= last / kBlock; ++b) r.add(block[row][b]);
+    return r;
+  }
 };
 
 // Adds one polygon's crossings on one span of a row. The plane test is exact in double on
@@ -83,6 +221,140 @@ void count_span(const ShadowPolygon& p, const TileCounts& t, int* count, int fir
   }
 }
 
+// Counts the shadow polygons over the tiles of one frame.
+class TileCounter {
+ public:
+  TileCounter(const std::vector<ShadowPolygon>& polygons, const std::vector<KeyPlane>& keys,
+              const FaceTable& faces, const VisibleSurfaceBuffer& surfaces, int eye_count)
+      : polygons_(polygons),
+        keys_(keys),
+        faces_(faces),
+        surfaces_(surfaces),
+        eye_count_(eye_count) {}
+
+  // Loads the faces and keys of the tile at (x0, y0), w x h pixels; false if it shows only
+  // background.
+  bool load(int x0, int y0, int w, int h, TileCounts& t) const {
+    t.x0 = x0, t.y0 = y0, t.w = w, t.h = h;
+    t.all = {};
+    std::fill_n(t.band, kTile / kBand, KeyRange{});
+    std::fill_n(t.delta, h * (kTile + 1), 0);
+    std::fill_n(t.points_loaded, h, false);
+    for (int y = 0; y < h; ++y) {
+      for (int b = 0; b < kTile / kBlock; ++b) t.block[y][b] = {};
+      for (int x = 0; x < w; ++x) {
+        const std::uint32_t f = surfaces_.face[surfaces_.index(x0 + x, y0 + y)];
+        t.face[y * w + x] = f;
+        t.count[y * w + x] = eye_count_;
+        if (f != kNoFace) t.block[y][x / kBlock].add(faces_.keys[f].at(x0 + x, y0 + y));
+      }
+      for (KeyRange& b : t.block[y]) b.widen(), t.band[y / kBand].add(b);
+    }
+    for (const KeyRange& b : t.band) t.all.add(b);
+    return t.all.lo <= t.all.hi;
+  }
+
+  // Walks one triangle's spans over the tile; settles each span by keys where it can and
+  // tests pixel by pixel where the polygon passes through the visible surfaces. Returns the
+  // pixels tested one by one.
+  std::size_t count_triangle(const ScreenTriangle& s, TileCounts& t) const {
+    const ShadowPolygon& poly = polygons_[s.face];
+    const KeyPlane& key = keys_[s.face];
+    int ya = std::max(t.y0, s.min_y), yb = std::min(t.y0 + t.h - 1, s.max_y);
+    const int xa0 = std::max(t.x0, s.min_x), xb0 = std::min(t.x0 + t.w - 1, s.max_x);
+    // Hi-Z: over the tile the key is bounded by its corners; polygons wholly in front of or
+    // behind every visible point of the tile settle without a span walk when they add nothing.
+    const double k00 = key.at(xa0, ya), k10 = key.at(xb0, ya), k01 = key.at(xa0, yb),
+                 k11 = key.at(xb0, yb);
+    const Crossing whole =
+        classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}), key.slack, t.all);
+    if (whole != Crossing::mixed && settled_jump(poly, whole) == 0) return 0;
+    if (!overlaps_tile(s, xa0, ya, xb0, yb)) return 0;
+    narrow_rows(s, xa0, xb0, ya, yb);
+    if (ya > yb) return 0;
+    std::size_t tested = 0;
+    for (int first = ya; first <= yb;) {
+      const int next = t.y0 + ((first - t.y0) / kBand + 1) * kBand;  // the next band's first row
+      tested += count_band(s, poly, key, first, std::min(yb, next - 1), xa0, xb0, t);
+      first = next;
+    }
+    return tested;
+  }
+
+  // Adds the walked pixels and spans of rows [first, last] of one triangle: the span walk
+  // restarts per band, so that bands which settle as a whole (Hi-Z on kBand rows) are skipped.
+  std::size_t count_band(const ScreenTriangle& s, const ShadowPolygon& poly, const KeyPlane& key,
+                         int first, int last, int xa0, int xb0, TileCounts& t) const {
+    const double k00 = key.at(xa0, first), k10 = key.at(xb0, first), k01 = key.at(xa0, last),
+                 k11 = key.at(xb0, last);
+    const Crossing whole = classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}),
+                                    key.slack, t.band[(first - t.y0) / kBand]);
+    if (whole != Crossing::mixed && settled_jump(poly, whole) == 0) return 0;
+    std::size_t tested = 0;
+    raster::SpanWalker walker(s, first);
+    for (int py = first; py <= last; ++py, walker.next_row()) {
+      int xa = xa0, xb = xb0;
+      if (!walker.span(xa, xb)) continue;
+      const int row = py - t.y0;
+      const double ka = key.at(xa, py), kb = key.at(xb, py);
+      const Crossing c = whole != Crossing::mixed
+                             ? whole
+                             : classify(std::min(ka, kb), std::max(ka, kb), key.slack,
+                                        t.span_keys(row, xa - t.x0, xb - t.x0));
+      if (c == Crossing::mixed) {
+        tested += std::size_t(xb - xa + 1);
+        load_points(row, t);
+        const int first_pixel = row * t.w - t.x0;
+        count_span(poly, t, t.count, first_pixel + xa, first_pixel + xb);
+      } else if (const int jump = settled_jump(poly, c)) {
+        int* delta = t.delta + row * (kTile + 1) - t.x0;
+        delta[xa] += jump;
+        delta[xb + 1] -= jump;
+      }
+    }
+    return tested;
+  }
+
+  // Adds the whole-span jumps to the counts; writes the tile's mask pixels (shadow where the
+  // count is positive, or where the camera sees the face's unlit side: contract condition 1)
+  // and returns the number of negative counts.
+  std::size_t finish(TileCounts& t, ShadowMask& mask) const {
+    std::size_t negative = 0;
+    for (int y = 0; y < t.h; ++y) {
+      int jump = 0;
+      for (int x = 0; x < t.w; ++x) {
+        jump += t.delta[y * (kTile + 1) + x];
+        const int k = y * t.w + x;
+        if (t.face[k] == kNoFace) continue;
+        const int c = t.count[k] + jump;
+        negative += c < 0;
+        const bool lit = c <= 0 && faces_.lit_side[t.face[k]];
+        mask.pixels[surfaces_.index(t.x0 + x, t.y0 + y)] = lit ? kMaskLit : kMaskShadow;
+      }
+    }
+    return negative;
+  }
+
+ private:
+  // The exact visible points of one row, on first use: most rows settle by keys alone.
+  void load_points(int row, TileCounts& t) const {
+    if (t.points_loaded[row]) return;
+    t.points_loaded[row] = true;
+    for (int x = 0; x < t.w; ++x) {
+      const std::size_t i = surfaces_.index(t.x0 + x, t.y0 + row);
+      const Vec3 p = surfaces_.covered(i) ? surfaces_.point(i) : Vec3{kNaN, kNaN, kNaN};
+      const int k = row * t.w + x;
+      t.x[k] = p.x, t.y[k] = p.y, t.z[k] = p.z;
+    }
+  }
+
+  const std::vector<ShadowPolygon>& polygons_;
+  const std::vector<KeyPlane>& keys_;
+  const FaceTable& faces_;
+  const VisibleSurfaceBuffer& surfaces_;
+  int eye_count_;
+};
+
 }  // namespace
 
 StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, int eye_count,
@@ -92,60 +364,26 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   const RasterProjection view =
       RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position));
   const std::vector<ScreenTriangle> tris = setup_shadow_polygons(polygons, view);
+  const RayGrid rays(cam);
+  const std::vector<KeyPlane> keys = polygon_keys(polygons, rays);
+  const FaceTable faces(scene, light, rays);
   const TileBins bins(tris, view.width, view.height);
+  const TileCounter counter(polygons, keys, faces, surfaces, eye_count);
   std::atomic<std::size_t> fill = 0, negative = 0;
 
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
     thread_local TileCounts t;
     const int x0 = (tile % bins.tiles_x) * kTile, y0 = (tile / bins.tiles_x) * kTile;
-    const int w = std::min(kTile, view.width - x0), h = std::min(kTile, view.height - y0);
-    bool any = false;
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const std::size_t i = surfaces.index(x0 + x, y0 + y);
-        const int k = y * w + x;
-        const Vec3 p = surfaces.covered(i) ? surfaces.point(i) : Vec3{kNaN, kNaN, kNaN};
-        t.x[k] = p.x, t.y[k] = p.y, t.z[k] = p.z;
-        t.face[k] = surfaces.face[i];
-        t.count[k] = eye_count;
-        any = any || surfaces.covered(i);
-      }
+    if (!counter.load(x0, y0, std::min(kTile, view.width - x0), std::min(kTile, view.height - y0),
+                      t)) {
+      return;
     }
-    if (!any) return;
-
     std::size_t tile_fill = 0;
     for (std::uint32_t b = bins.start[tile]; b < bins.start[tile + 1]; ++b) {
-      const ScreenTriangle& s = tris[bins.items[b]];
-      const ShadowPolygon& poly = polygons[s.face];
-      const int ya = std::max(y0, s.min_y), yb = std::min(y0 + h - 1, s.max_y);
-      const int xa0 = std::max(x0, s.min_x), xb0 = std::min(x0 + w - 1, s.max_x);
-      if (!overlaps_tile(s, xa0, ya, xb0, yb)) continue;
-      raster::SpanWalker walker(s, ya);
-      for (int py = ya; py <= yb; ++py, walker.next_row()) {
-        int xa = std::max(x0, s.min_x), xb = std::min(x0 + w - 1, s.max_x);
-        if (!walker.span(xa, xb)) continue;
-        tile_fill += std::size_t(xb - xa + 1);
-        const int row = (py - y0) * w - x0;
-        count_span(poly, t, t.count, row + xa, row + xb);
-      }
-    }
-
-    // Shadow where the count is positive, or where the camera sees the face's unlit side
-    // (contract condition 1).
-    std::size_t tile_negative = 0;
-    for (int y = 0; y < h; ++y) {
-      for (int x = 0; x < w; ++x) {
-        const std::size_t i = surfaces.index(x0 + x, y0 + y);
-        if (!surfaces.covered(i)) continue;
-        const int c = t.count[y * w + x];
-        tile_negative += c < 0;
-        const bool lit =
-            c <= 0 && faces_light(scene.face_plane(surfaces.face[i]), cam.position, light);
-        mask.pixels[i] = lit ? kMaskLit : kMaskShadow;
-      }
+      tile_fill += counter.count_triangle(tris[bins.items[b]], t);
     }
     fill += tile_fill;
-    negative += tile_negative;
+    negative += counter.finish(t, mask);
   });
   return {fill.load(), negative.load()};
 }
