@@ -136,6 +136,31 @@ TEST_F(Cli, BadInputIsOneLineAndExitStatusTwo) {
   expect_bad_input("bench", "SCENE");
 }
 
+TEST_F(Cli, FragmentsWritesPlyAndAreasThatSumToEachPolygon) {
+  const fs::path ply = dir_ / "square.ply";
+  const Result r = run("fragments square --threads 1 --out " + ply.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(slurp(ply).rfind("ply\nformat ascii 1.0\n", 0), 0u);
+  EXPECT_THAT(slurp(ply), HasSubstr("property uint polygon\nproperty uchar lit_L0\n"));
+  const auto j = nlohmann::json::parse(slurp(dir_ / "square.json"));
+  double ground_shadowed = 0;
+  for (const auto& p : j["polygons"]) {
+    const double area = p["area"];
+    ASSERT_EQ(p["lit_area"].size(), 1u);
+    EXPECT_NEAR(double(p["lit_area"][0]) + double(p["shadowed_area"][0]), area, 1e-9 * area);
+    if (p["object"] == "ground") ground_shadowed += double(p["shadowed_area"][0]);
+  }
+  // The 2x2 square 1 above the ground, the light 4 above: a shadow square of side 8/3.
+  const double expected = (8.0 / 3.0) * (8.0 / 3.0);
+  EXPECT_NEAR(ground_shadowed, expected, 1e-9 * expected);
+  expect_bad_input("fragments square --out " + (dir_ / "areas.json").string(),
+                   "cannot end in .json");
+  expect_bad_input("fragments square", "--out");
+  expect_bad_input("fragments square --set svbsp.nosuch=1 --out " + ply.string(), "svbsp.nosuch");
+  expect_bad_input("fragments square --set svbsp.shadowed_only=1 --out " + ply.string(),
+                   "svbsp.shadowed_only");
+}
+
 TEST_F(Cli, DegenerateFacesAreAWarningNotAnError) {
   write("degenerate.obj", std::string(kGround) + "v 9 9 9\nf 5 5 5\n");
   const Result r = run("info " + scene(R"({"mesh": "degenerate.obj"})").string());

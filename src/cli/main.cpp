@@ -83,6 +83,13 @@ int main(int argc, char** argv) {
   add_shared(info_cmd, info, shared);
   info_cmd->add_flag("--json", info.json, "print JSON");
 
+  FragmentsOptions fragments;
+  auto* fragments_cmd = app.add_subcommand(
+      "fragments", "svbsp: write the scene split into lit and shadowed fragments (PLY + JSON)");
+  add_shared(fragments_cmd, fragments, shared);
+  fragments_cmd->add_option("--out", fragments.out, "PLY file; areas per polygon go to F.json")
+      ->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -112,6 +119,10 @@ int main(int argc, char** argv) {
       bench.settings = settings;
       bench.methods = split_list(bench_methods);
       return run_bench(bench, ctx);
+    }
+    if (*fragments_cmd) {
+      fragments.settings = settings;
+      return run_fragments(fragments, ctx);
     }
     info.settings = settings;
     return run_info(info, ctx);

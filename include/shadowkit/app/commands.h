@@ -34,6 +34,12 @@ struct BenchOptions : CommandOptions {
   int repeats = 5;
 };
 
+/// \brief svbsp's object-space output (Chin & Feiner §5): the fragmented scene over all
+/// lights.
+struct FragmentsOptions : CommandOptions {
+  std::string out;  ///< the PLY file; the areas go to the same path with extension .json
+};
+
 /// Parses "method.key=value" settings into per-method options; InputError if malformed.
 std::map<std::string, MethodOptions> parse_settings(const std::vector<std::string>& settings);
 
@@ -41,5 +47,6 @@ int run_render(const RenderOptions& options, const Context& ctx);
 int run_compare(const CompareOptions& options, const Context& ctx);
 int run_bench(const BenchOptions& options, const Context& ctx);
 int run_info(const CommandOptions& options, const Context& ctx);
+int run_fragments(const FragmentsOptions& options, const Context& ctx);
 
 }  // namespace shadowkit

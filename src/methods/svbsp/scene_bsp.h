@@ -30,6 +30,9 @@ class SceneBsp {
 
   std::size_t node_count() const { return nodes_.size(); }
   std::size_t piece_count() const { return pieces_.size(); }
+  /// Every piece; front_to_back() visits spans of this array, so a piece's index is its
+  /// address minus pieces().data().
+  std::span<const ConvexPolygon> pieces() const { return pieces_; }
   /// Pieces created by splitting (piece_count minus the convex input polygons).
   std::size_t split_count() const { return splits_; }
   std::size_t depth() const { return depth_; }

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "shadowkit/app/mask_compare.h"
@@ -44,6 +45,34 @@ TEST_P(BuiltInScene, AgreesWithTheReference) {
 INSTANTIATE_TEST_SUITE_P(Svbsp, BuiltInScene,
                          ::testing::Values("cubes:125", "tetra:3", "room", "table", "three-lights",
                                            "square"));
+
+// §6's shadowed-fragments-only mode draws the shadowed fragments over the lit faces: the
+// same mask from fewer fragments, but for pixel centres on snapped slivers of an outline.
+TEST(SvbspScenes, ShadowedFragmentsOnlyGiveTheSameMasks) {
+  for (const char* name : {"table", "three-lights", "room"}) {
+    Scene scene = load_scene(name, {});
+    scene.camera.width = 320;
+    scene.camera.height = 180;
+    const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+    SvbspMethod both({}), shadowed({"svbsp", {{"shadowed_only", "1"}}});
+    both.prepare(scene, {});
+    shadowed.prepare(scene, {});
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+      const ShadowMask expected = mask_of(both, scene, vsb, l);
+      const ShadowMask got = mask_of(shadowed, scene, vsb, l);
+      std::size_t differing = 0;
+      for (std::size_t i = 0; i < got.pixels.size(); ++i) {
+        differing += got.pixels[i] != expected.pixels[i];
+      }
+      // Only centres that no fragment of their face owns may differ: where a cut point on
+      // the face's outline snaps off it (1/256 pixel), a sliver of the face has no fragment.
+      EXPECT_LE(differing, got.pixels.size() / 10000) << name << " L" << l;
+      EXPECT_LT(shadowed.fragments().size(), both.fragments().size()) << name << " L" << l;
+      EXPECT_TRUE(std::none_of(shadowed.fragments().begin(), shadowed.fragments().end(),
+                               [](const svbsp::Fragment& f) { return f.lit; }));
+    }
+  }
+}
 
 TEST(SvbspScenes, EveryExampleAgreesWithTheReference) {
   const std::filesystem::path dir = std::filesystem::path(SHADOWKIT_SOURCE_DIR) / "examples";

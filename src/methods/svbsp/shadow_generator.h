@@ -1,5 +1,6 @@
 #pragma once
 // shadowGenerator of Fig. 3: one light's SVBSP tree and the fragments of every scene piece.
+#include <span>
 #include <vector>
 
 #include "scene_bsp.h"
@@ -14,6 +15,41 @@ struct LightFragments {
   std::size_t light_facing = 0;  ///< pieces filtered (the light is off their plane)
   std::size_t svbsp_nodes = 0;
   std::size_t svbsp_bytes = 0;
+};
+
+/// \brief Table 1's "front-facing polygons" and "front-facing edges": the scene faces whose
+/// front (the side their normal points to) sees the light, and their edges, each face
+/// counting its own (the paper processes polygons individually, §7).
+struct FrontFacing {
+  std::size_t polygons = 0, edges = 0;
+};
+FrontFacing front_facing(const Scene& scene, const Light& light);
+
+/// \brief The body of Fig. 3 for one light: fed the scene pieces one BSP node at a time in
+/// front-to-back order, it grows the light's SVBSP tree and gives each piece's fragments.
+class ShadowGenerator {
+ public:
+  ShadowGenerator(const Scene& scene, const Light& light);
+
+  /// Whether the light lies in the plane of \p piece's face: the piece is shadowed and
+  /// casts nothing (Fig. 3).
+  bool in_light_plane(const ConvexPolygon& piece) const;
+  /// Processes the coplanar pieces of one BSP node: appends their fragments to \p out and
+  /// unions the shadow volumes of the lit ones into the tree.
+  void process(std::span<const ConvexPolygon> coplanar, std::vector<Fragment>& out);
+  /// The verdicts of the tree as it stands, without enlarging it: used for fragments of
+  /// earlier lights (§5), which must not add planes of their own.
+  void classify(const ConvexPolygon& p, std::vector<Fragment>& out) { tree_.classify(p, out); }
+
+  std::size_t light_facing() const { return light_facing_; }
+  const SvbspTree& tree() const { return tree_; }
+
+ private:
+  const Scene& scene_;
+  Light light_;
+  double in_plane_;
+  SvbspTree tree_;
+  std::size_t light_facing_ = 0;
 };
 
 /// Filters the pieces of \p bsp in front-to-back order from \p light down a new SVBSP tree.

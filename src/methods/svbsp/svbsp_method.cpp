@@ -8,7 +8,12 @@
 namespace shadowkit {
 
 SvbspMethod::SvbspMethod(const MethodOptions& options) {
-  options.expect_only("svbsp", {});
+  options.expect_only("svbsp", {"shadowed_only"});
+  const double shadowed_only = options.number("shadowed_only", 0);
+  if (shadowed_only != 0 && shadowed_only != 1) {
+    throw InputError("option 'svbsp.shadowed_only'", "expected 0 or 1");
+  }
+  shadowed_only_ = shadowed_only == 1;
 }
 
 void SvbspMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
@@ -19,11 +24,16 @@ void SvbspMethod::build(const Scene& scene, std::size_t light, const Context& /*
   SHADOWKIT_CHECK(bsp_.has_value());
   light_ = scene.lights[light];
   result_ = svbsp::generate_shadows(*bsp_, scene, light_);
+  if (shadowed_only_) {  // §6: one light at a time, the lit fragments are thrown away
+    std::erase_if(result_.fragments, [](const svbsp::Fragment& f) { return f.lit; });
+  }
+  input_polygons_ = scene.face_count();
+  front_facing_ = svbsp::front_facing(scene, light_);
 }
 
 void SvbspMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
                         const Context& /*ctx*/) {
-  svbsp::shade_fragments(scene, light_, result_.fragments, surfaces, mask);
+  svbsp::shade_fragments(scene, light_, result_.fragments, surfaces, shadowed_only_, mask);
 }
 
 std::size_t SvbspMethod::memory_bytes() const {
@@ -41,6 +51,9 @@ MethodCounters SvbspMethod::counters() const {
   return {{"bsp_nodes", double(bsp_ ? bsp_->node_count() : 0)},
           {"bsp_pieces", double(bsp_ ? bsp_->piece_count() : 0)},
           {"bsp_splits", double(bsp_ ? bsp_->split_count() : 0)},
+          {"input_polygons", double(input_polygons_)},
+          {"front_facing_polygons", double(front_facing_.polygons)},
+          {"front_facing_edges", double(front_facing_.edges)},
           {"light_facing", double(result_.light_facing)},
           {"svbsp_nodes", double(result_.svbsp_nodes)},
           {"fragments", double(result_.fragments.size())},

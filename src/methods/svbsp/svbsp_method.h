@@ -12,7 +12,9 @@ namespace shadowkit {
 /// \brief Chin & Feiner 1989: a scene BSP tree built once (prepare), per light an SVBSP
 /// tree grown from the light-facing pieces in front-to-back order, which splits every piece
 /// into lit and shadowed fragments (build); the mask renders the lit fragments with the
-/// shared scan converter (shade). No options.
+/// shared scan converter (shade). Option shadowed_only=1 (§6): keep only the shadowed
+/// fragments and draw them over the lit faces; the same mask but at a rare pixel on a
+/// face's outline (see shade_fragments), less memory.
 class SvbspMethod final : public ShadowMethod {
  public:
   explicit SvbspMethod(const MethodOptions& options);
@@ -24,13 +26,18 @@ class SvbspMethod final : public ShadowMethod {
   std::size_t memory_bytes() const override;
   MethodCounters counters() const override;
 
-  /// The fragments of the last build(), each tied to its original face.
+  /// The fragments of the last build() (shadowed ones only with shadowed_only), each tied to
+  /// its original face.
   const std::vector<svbsp::Fragment>& fragments() const { return result_.fragments; }
 
  private:
+  bool shadowed_only_ = false;
   std::optional<svbsp::SceneBsp> bsp_;
   Light light_;
   svbsp::LightFragments result_;
+  // Table 1's columns for the last light.
+  std::size_t input_polygons_ = 0;
+  svbsp::FrontFacing front_facing_;
 };
 
 }  // namespace shadowkit

@@ -2,6 +2,7 @@
 // Shared by the svbsp tests: one light's fragments and their areas per face.
 #include <map>
 
+#include "multi_light.h"
 #include "shadow_generator.h"
 
 namespace shadowkit::testing {
@@ -25,6 +26,22 @@ inline std::map<std::uint32_t, FaceAreas> face_areas(
     (f.lit ? areas[f.polygon.face].lit : areas[f.polygon.face].shadowed) += area(f.polygon);
   }
   return areas;
+}
+
+/// Lit and shadowed area per global face id for light \p light of a multi-light result.
+inline std::map<std::uint32_t, FaceAreas> face_areas(
+    const std::vector<svbsp::MaskedFragment>& fragments, std::size_t light) {
+  std::map<std::uint32_t, FaceAreas> areas;
+  for (const svbsp::MaskedFragment& f : fragments) {
+    FaceAreas& a = areas[f.polygon.face];
+    ((f.lit_mask >> light) & 1 ? a.lit : a.shadowed) += area(f.polygon);
+  }
+  return areas;
+}
+
+/// Area of global face \p face of \p scene.
+inline double face_area(const Scene& scene, std::uint32_t face) {
+  return scene.objects[scene.object_of_face(face)].mesh.areas[scene.local_face(face)];
 }
 
 }  // namespace shadowkit::testing

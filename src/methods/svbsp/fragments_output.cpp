@@ -1,0 +1,86 @@
+#include "fragments_output.h"
+
+#include <fstream>
+
+#include "shadowkit/core/error.h"
+
+namespace shadowkit::svbsp {
+namespace {
+
+double polygon_area(const Scene& scene, std::uint32_t face) {
+  return scene.objects[scene.object_of_face(face)].mesh.areas[scene.local_face(face)];
+}
+
+void write_header(std::ostream& out, const Scene& scene, const MultiLightFragments& result) {
+  std::size_t corners = 0;
+  for (const MaskedFragment& f : result.fragments) corners += f.polygon.vertices.size();
+  out << "ply\nformat ascii 1.0\ncomment shadowkit svbsp fragments of " << scene.name << "\n"
+      << "element vertex " << corners << "\n"
+      << "property double x\nproperty double y\nproperty double z\n"
+      << "element face " << result.fragments.size() << "\n"
+      << "property list uchar uint vertex_indices\nproperty uint polygon\n";
+  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+    out << "property uchar lit_L" << l << "\n";
+  }
+  out << "end_header\n";
+}
+
+}  // namespace
+
+void write_fragments_ply(const std::filesystem::path& path, const Scene& scene,
+                         const MultiLightFragments& result) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path.string(), "cannot open for writing");
+  out.precision(17);
+  write_header(out, scene, result);
+  for (const MaskedFragment& f : result.fragments) {
+    for (const Vec3& v : f.polygon.vertices) out << v.x << ' ' << v.y << ' ' << v.z << '\n';
+  }
+  std::size_t next = 0;
+  for (const MaskedFragment& f : result.fragments) {
+    out << f.polygon.vertices.size();
+    for (std::size_t k = 0; k < f.polygon.vertices.size(); ++k) out << ' ' << next++;
+    out << ' ' << f.polygon.face;
+    for (std::size_t l = 0; l < scene.lights.size(); ++l) out << ' ' << ((f.lit_mask >> l) & 1);
+    out << '\n';
+  }
+  if (!out) throw InputError(path.string(), "write failed");
+}
+
+nlohmann::json fragment_areas_json(const Scene& scene, const MultiLightFragments& result) {
+  const std::size_t lights = scene.lights.size();
+  std::vector<std::vector<double>> lit(scene.face_count(), std::vector<double>(lights));
+  std::vector<std::vector<double>> shadowed = lit;
+  std::vector<std::size_t> count(scene.face_count());
+  for (const MaskedFragment& f : result.fragments) {
+    const double a = area(f.polygon);
+    ++count[f.polygon.face];
+    for (std::size_t l = 0; l < lights; ++l) {
+      ((f.lit_mask >> l) & 1 ? lit : shadowed)[f.polygon.face][l] += a;
+    }
+  }
+  nlohmann::json j;
+  j["scene"] = scene.name;
+  j["lights"] = lights;
+  j["fragments"] = result.fragments.size();
+  j["passes"] = nlohmann::json::array();
+  for (const LightPass& p : result.passes) {
+    j["passes"].push_back({{"light", p.light},
+                           {"front_facing_polygons", p.front_facing.polygons},
+                           {"front_facing_edges", p.front_facing.edges},
+                           {"svbsp_nodes", p.svbsp_nodes},
+                           {"fragments", p.fragments}});
+  }
+  j["polygons"] = nlohmann::json::array();
+  for (std::uint32_t face = 0; face < scene.face_count(); ++face) {
+    j["polygons"].push_back({{"polygon", face},
+                             {"object", scene.objects[scene.object_of_face(face)].name},
+                             {"area", polygon_area(scene, face)},
+                             {"fragments", count[face]},
+                             {"lit_area", lit[face]},
+                             {"shadowed_area", shadowed[face]}});
+  }
+  return j;
+}
+
+}  // namespace shadowkit::svbsp
