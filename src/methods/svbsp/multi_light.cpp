@@ -49,7 +49,8 @@ std::vector<std::size_t> light_order(const Scene& scene) {
   return order;
 }
 
-MultiLightFragments generate_multi_light_shadows(const SceneBsp& bsp, const Scene& scene) {
+MultiLightFragments generate_multi_light_shadows(const SceneBsp& bsp, const Scene& scene,
+                                                 bool merge_siblings) {
   if (scene.lights.size() > kMaxLights) {
     throw InputError(scene.name, "svbsp keeps one bit per light: at most " +
                                      std::to_string(kMaxLights) + " lights, not " +
@@ -66,7 +67,7 @@ MultiLightFragments generate_multi_light_shadows(const SceneBsp& bsp, const Scen
   for (const std::size_t l : light_order(scene)) {
     const Light& light = scene.lights[l];
     const std::uint64_t bit = std::uint64_t(1) << l;
-    ShadowGenerator generator(scene, light);
+    ShadowGenerator generator(scene, light, merge_siblings);
     bsp.front_to_back(light, [&](std::span<const ConvexPolygon> coplanar) {
       // Classified before the node's own volumes join the tree, as its pieces are.
       for (const ConvexPolygon& piece : coplanar) {

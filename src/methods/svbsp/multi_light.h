@@ -41,6 +41,8 @@ std::vector<std::size_t> light_order(const Scene& scene);
 /// Each light's tree grows exactly as in generate_shadows() (from the original pieces: §6's
 /// "more coherent" fragments), so its lit region is the one of the single-light run; the
 /// fragments of the earlier lights are only classified by it.
-MultiLightFragments generate_multi_light_shadows(const SceneBsp& bsp, const Scene& scene);
+/// \p merge_siblings: see SvbspTree.
+MultiLightFragments generate_multi_light_shadows(const SceneBsp& bsp, const Scene& scene,
+                                                 bool merge_siblings = true);
 
 }  // namespace shadowkit::svbsp

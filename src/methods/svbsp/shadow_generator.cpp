@@ -54,11 +54,11 @@ FrontFacing front_facing(const Scene& scene, const Light& light) {
   return count;
 }
 
-ShadowGenerator::ShadowGenerator(const Scene& scene, const Light& light)
+ShadowGenerator::ShadowGenerator(const Scene& scene, const Light& light, bool merge_siblings)
     : scene_(scene),
       light_(light),
       in_plane_(in_plane_tolerance(scene, light)),
-      tree_(light, plane_tolerance(scene, light)) {}
+      tree_(light, plane_tolerance(scene, light), merge_siblings) {}
 
 bool ShadowGenerator::in_light_plane(const ConvexPolygon& piece) const {
   return std::abs(light_side(scene_.face_plane(piece.face), light_)) <= in_plane_;
@@ -88,8 +88,9 @@ void ShadowGenerator::process(std::span<const ConvexPolygon> coplanar, std::vect
   }
 }
 
-LightFragments generate_shadows(const SceneBsp& bsp, const Scene& scene, const Light& light) {
-  ShadowGenerator generator(scene, light);
+LightFragments generate_shadows(const SceneBsp& bsp, const Scene& scene, const Light& light,
+                                bool merge_siblings) {
+  ShadowGenerator generator(scene, light, merge_siblings);
   LightFragments result;
   bsp.front_to_back(light, [&](std::span<const ConvexPolygon> coplanar) {
     generator.process(coplanar, result.fragments);

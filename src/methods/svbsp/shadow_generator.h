@@ -29,7 +29,8 @@ FrontFacing front_facing(const Scene& scene, const Light& light);
 /// front-to-back order, it grows the light's SVBSP tree and gives each piece's fragments.
 class ShadowGenerator {
  public:
-  ShadowGenerator(const Scene& scene, const Light& light);
+  /// \p merge_siblings: see SvbspTree.
+  ShadowGenerator(const Scene& scene, const Light& light, bool merge_siblings = true);
 
   /// Whether the light lies in the plane of \p piece's face: the piece is shadowed and
   /// casts nothing (Fig. 3).
@@ -56,6 +57,8 @@ class ShadowGenerator {
 /// Surfaces are two-sided: a piece faces the light from whichever side the light is; a
 /// piece whose plane holds the light is shadowed and casts nothing. Where all fragments of
 /// a piece agree, the piece itself replaces them (§6).
-LightFragments generate_shadows(const SceneBsp& bsp, const Scene& scene, const Light& light);
+/// \p merge_siblings: fragments split by a node but in the same state are merged back (§6).
+LightFragments generate_shadows(const SceneBsp& bsp, const Scene& scene, const Light& light,
+                                bool merge_siblings = true);
 
 }  // namespace shadowkit::svbsp

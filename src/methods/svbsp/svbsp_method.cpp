@@ -8,12 +8,17 @@
 namespace shadowkit {
 
 SvbspMethod::SvbspMethod(const MethodOptions& options) {
-  options.expect_only("svbsp", {"shadowed_only"});
+  options.expect_only("svbsp", {"shadowed_only", "merge_siblings"});
   const double shadowed_only = options.number("shadowed_only", 0);
   if (shadowed_only != 0 && shadowed_only != 1) {
     throw InputError("option 'svbsp.shadowed_only'", "expected 0 or 1");
   }
   shadowed_only_ = shadowed_only == 1;
+  const double merge_siblings = options.number("merge_siblings", 1);
+  if (merge_siblings != 0 && merge_siblings != 1) {
+    throw InputError("option 'svbsp.merge_siblings'", "expected 0 or 1");
+  }
+  merge_siblings_ = merge_siblings == 1;
 }
 
 void SvbspMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
@@ -23,7 +28,7 @@ void SvbspMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
 void SvbspMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
   SHADOWKIT_CHECK(bsp_.has_value());
   light_ = scene.lights[light];
-  result_ = svbsp::generate_shadows(*bsp_, scene, light_);
+  result_ = svbsp::generate_shadows(*bsp_, scene, light_, merge_siblings_);
   if (shadowed_only_) {  // §6: one light at a time, the lit fragments are thrown away
     std::erase_if(result_.fragments, [](const svbsp::Fragment& f) { return f.lit; });
   }

@@ -14,7 +14,8 @@ namespace shadowkit {
 /// into lit and shadowed fragments (build); the mask renders the lit fragments with the
 /// shared scan converter (shade). Option shadowed_only=1 (§6): keep only the shadowed
 /// fragments and draw them over the lit faces; the same mask but at a rare pixel on a
-/// face's outline (see shade_fragments), less memory.
+/// face's outline (see shade_fragments), less memory. Option merge_siblings=0 turns off
+/// §6's merging of sibling fragments in the same state (for measuring it).
 class SvbspMethod final : public ShadowMethod {
  public:
   explicit SvbspMethod(const MethodOptions& options);
@@ -32,6 +33,7 @@ class SvbspMethod final : public ShadowMethod {
 
  private:
   bool shadowed_only_ = false;
+  bool merge_siblings_ = true;
   std::optional<svbsp::SceneBsp> bsp_;
   Light light_;
   svbsp::LightFragments result_;

@@ -53,46 +53,56 @@ std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p) {
 }
 
 void SvbspTree::filter(const ConvexPolygon& p, std::vector<Fragment>* out, bool enlarge) {
-  // Pieces still to filter, and the slot (parent node, side; -1: the root) they start at.
-  struct Pending {
-    ConvexPolygon polygon;
-    std::int32_t parent;
-    bool positive;
+  descend(p, -1, false, out, enlarge);
+}
+
+void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive,
+                        std::vector<Fragment>* out, bool enlarge) {
+  const auto slot = [&](std::int32_t node, bool pos) -> std::int32_t& {
+    return node < 0 ? root_ : (pos ? nodes_[node].positive : nodes_[node].negative);
   };
-  const auto slot = [&](std::int32_t parent, bool pos) -> std::int32_t& {
-    return parent < 0 ? root_ : (pos ? nodes_[parent].positive : nodes_[parent].negative);
-  };
-  std::vector<Pending> pending{{p, -1, false}};
-  ConvexPolygon negative, positive;
-  while (!pending.empty()) {
-    Pending item = std::move(pending.back());
-    pending.pop_back();
-    std::int32_t at = slot(item.parent, item.positive);
-    // Down the tree, splitting at each node the piece spans (Fig. 4).
-    while (at >= 0) {
-      const Plane& plane = nodes_[at].shadow_plane.plane;
-      const PlaneSides sides = svbsp::classify(item.polygon, plane, eps_);
-      if (!sides.touching && !sides.spanning()) {  // wholly on one side: no copy
-        item.parent = at;
-        item.positive = sides.positive;
-        at = sides.positive ? nodes_[at].positive : nodes_[at].negative;
-        continue;
+  std::int32_t at = slot(parent, positive);
+  ConvexPolygon negative_part, positive_part;
+  // Down the tree, splitting at each node the piece spans (Fig. 4).
+  while (at >= 0) {
+    const Plane& plane = nodes_[at].shadow_plane.plane;
+    const PlaneSides sides = svbsp::classify(p, plane, eps_);
+    if (!sides.touching && !sides.spanning()) {  // wholly on one side: no copy
+      parent = at;
+      positive = sides.positive;
+      at = sides.positive ? nodes_[at].positive : nodes_[at].negative;
+      continue;
+    }
+    split_polygon(p, plane, eps_, true, negative_part, positive_part);
+    const bool has_neg = !negative_part.vertices.empty();
+    const bool has_pos = !positive_part.vertices.empty();
+    if (has_neg && has_pos) {
+      // Each side in its own subtree; the tree may grow (and nodes_ move) meanwhile.
+      const std::size_t first = out ? out->size() : 0;
+      const std::int32_t node = at;
+      descend(std::move(negative_part), node, false, out, enlarge);
+      descend(std::move(positive_part), node, true, out, enlarge);
+      // §6: two sibling fragments in the same state are the polygon before the split. The
+      // pieces are exactly its halves (the cut shares its points), so no area changes; the
+      // verdicts and the tree are those of the halves.
+      if (merge_siblings_ && out && out->size() == first + 2 &&
+          (*out)[first].lit == (*out)[first + 1].lit) {
+        (*out)[first].polygon = std::move(p);
+        out->pop_back();
       }
-      split_polygon(item.polygon, plane, eps_, true, negative, positive);
-      const bool has_neg = !negative.vertices.empty(), has_pos = !positive.vertices.empty();
-      if (has_neg && has_pos) pending.push_back({std::move(negative), at, false});
-      item.polygon = std::move(has_pos ? positive : negative);
-      item.parent = at;
-      item.positive = has_pos;
-      at = has_pos ? nodes_[at].positive : nodes_[at].negative;
+      return;
     }
-    const bool lit = at == kOut;
-    if (lit && enlarge) {
-      const std::int32_t volume = shadow_volume(item.polygon);
-      slot(item.parent, item.positive) = volume;
-    }
-    if (out) out->push_back({std::move(item.polygon), lit});
+    p = std::move(has_pos ? positive_part : negative_part);
+    parent = at;
+    positive = has_pos;
+    at = has_pos ? nodes_[at].positive : nodes_[at].negative;
   }
+  const bool lit = at == kOut;
+  if (lit && enlarge) {
+    const std::int32_t volume = shadow_volume(p);
+    slot(parent, positive) = volume;
+  }
+  if (out) out->push_back({std::move(p), lit});
 }
 
 }  // namespace shadowkit::svbsp

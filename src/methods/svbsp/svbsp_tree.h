@@ -31,7 +31,11 @@ bool make_shadow_plane(const Light& light, Vec3 a, Vec3 b, Vec3 inside, ShadowPl
 class SvbspTree {
  public:
   /// \p eps: the distance within which a point counts as on a shadow plane.
-  SvbspTree(const Light& light, double eps) : light_(light), eps_(eps) {}
+  /// \p merge_siblings (§6, after Thibault and Naylor): where a node splits a polygon and
+  /// each side yields one fragment with the same verdict, the two give way to the unsplit
+  /// polygon (convex, and their union: they share the cut edge).
+  SvbspTree(const Light& light, double eps, bool merge_siblings = true)
+      : light_(light), eps_(eps), merge_siblings_(merge_siblings) {}
 
   /// determineShadow of Fig. 4: filters \p p down the tree, appends its shadowed (IN) and
   /// lit (OUT) fragments to \p out, and replaces each OUT cell reached by the shadow volume
@@ -54,10 +58,14 @@ class SvbspTree {
     std::int32_t negative = kOut, positive = kOut;
   };
   void filter(const ConvexPolygon& p, std::vector<Fragment>* out, bool enlarge);
+  // Filters \p p from the slot (parent node, side; parent -1: the root) down to the leaves.
+  void descend(ConvexPolygon p, std::int32_t parent, bool positive, std::vector<Fragment>* out,
+               bool enlarge);
   std::int32_t shadow_volume(const ConvexPolygon& p);
 
   Light light_;
   double eps_;
+  bool merge_siblings_;
   std::int32_t root_ = kOut;
   std::vector<Node> nodes_;
 };
