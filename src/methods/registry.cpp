@@ -1,3 +1,4 @@
+#include "angular/angular_method.h"
 #include "raytrace/raytrace_method.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/shadow_method.h"
@@ -8,7 +9,7 @@
 namespace shadowkit {
 
 std::vector<std::string> method_names() {
-  return {"raytrace", "shadowmap", "volume", "svbsp"};
+  return {"raytrace", "shadowmap", "volume", "svbsp", "angular"};
 }
 
 std::unique_ptr<ShadowMethod> make_method(std::string_view name, const MethodOptions& options) {
@@ -16,6 +17,7 @@ std::unique_ptr<ShadowMethod> make_method(std::string_view name, const MethodOpt
   if (name == "shadowmap") return std::make_unique<ShadowMapMethod>(options);
   if (name == "volume") return std::make_unique<VolumeMethod>(options);
   if (name == "svbsp") return std::make_unique<SvbspMethod>(options);
+  if (name == "angular") return std::make_unique<AngularMethod>(options);
   std::string list;
   for (const auto& m : method_names()) list += (list.empty() ? "" : ", ") + m;
   throw InputError("method '" + std::string(name) + "'",

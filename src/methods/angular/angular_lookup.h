@@ -1,0 +1,33 @@
+#pragma once
+// The shadow query of the discretized-shadow-volume paper, Sec. 7, step 2.
+#include <cstdint>
+
+#include "angular_table.h"
+#include "scan_line_run.h"
+
+namespace shadowkit {
+
+/// \brief The answer of one lookup and the column where it may stop holding (nextX).
+struct LookupResult {
+  bool shadowed = false;
+  double next_x = 0;
+};
+
+/// \brief What a lookup needs to know about the queried visible point.
+struct LookupQuery {
+  int entry = -1;              ///< table entry of its theta
+  double phi = 0;              ///< eq. 3, as AngularPoint keeps it
+  Vec3 local;                  ///< light-frame coordinates
+  std::uint32_t face = 0;      ///< its face: a planar face never shadows itself
+  double column = 0;           ///< its pixel column on the scan line
+  bool phi_increasing = true;  ///< phi grows with the column along this run
+  double depth_tolerance = 0;  ///< distance from a hidden face's plane still counted on it
+};
+
+/// Sec. 7: scans entry theta's pairs holding phi, stops at the first pair that shadows the
+/// point (shadow is a logical OR) and returns the column where the answer may change (nextX):
+/// the pair's end, the start of the next pair, or where the run crosses the plane or an edge's
+/// light plane of the triangle of a pair holding phi.
+LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const LookupQuery& query);
+
+}  // namespace shadowkit

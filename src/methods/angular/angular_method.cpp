@@ -1,0 +1,107 @@
+#include "angular_method.h"
+
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "angular_lookup.h"
+#include "occluders.h"
+#include "ridge_edges.h"
+#include "scan_line_run.h"
+#include "shadowkit/core/error.h"
+
+namespace shadowkit {
+
+AngularMethod::AngularMethod(const MethodOptions& options) {
+  options.expect_only("angular", {"resolution"});
+  const double r = options.number("resolution", 0);
+  if (r < 0 || r != std::floor(r) || r > 1e7) {
+    throw InputError("option 'angular.resolution'", "expected a whole number of theta entries");
+  }
+  resolution_ = int(r);
+}
+
+void AngularMethod::build(const Scene& scene, std::size_t light, const Context& ctx) {
+  light_ = scene.lights[light];
+  const Bounds3& box = scene.bounds();
+  frame_.emplace(light_, scene.camera, (box.lo + box.hi) * 0.5, light);
+  // Sec. 7, steps 1.1-1.2: ridge edges and their loops, per object.
+  loops_ = ridge_edge_stats(scene, light_);
+  // Steps 1.3-1.7: the hidden faces' spans, entry by entry.
+  AngularTableInput input{occluding_faces(scene, light_), resolution_};
+  table_ = AngularTable::build(scene, *frame_, input, ctx);
+  depth_tolerance_ = 1e-7 * std::max(box.diagonal(), 1e-12);
+  lookup_calls_ = 0;
+}
+
+std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
+                                     ShadowMask& mask, int row) const {
+  const Camera& cam = scene.camera;
+  const ThetaQuantization& quant = table_.theta();
+  std::size_t lookups = 0;
+  int x = 0;
+  while (x < surfaces.width) {
+    const std::size_t i = surfaces.index(x, row);
+    if (!surfaces.covered(i)) {
+      ++x;
+      continue;
+    }
+    // One face's stretch of the scan line.
+    const std::uint32_t face = surfaces.face[i];
+    int face_end = x + 1;
+    while (face_end < surfaces.width && surfaces.face[surfaces.index(face_end, row)] == face) {
+      ++face_end;
+    }
+    const Plane& plane = scene.face_plane(face);
+    if (!faces_light(plane, cam.position, light_)) {  // contract condition 1
+      std::fill_n(&mask.pixels[i], face_end - x, kMaskShadow);
+      x = face_end;
+      continue;
+    }
+    const ScanLineRun run(*frame_, cam, plane, row);
+    while (x < face_end) {
+      // Sec. 7, step 2: query the first pixel of the run.
+      const std::size_t j = surfaces.index(x, row);
+      LookupQuery query;
+      query.local = frame_->local(surfaces.point(j));
+      const AngularPoint a = frame_->angular_local(query.local);
+      const int k = quant.index(a.theta);
+      query.entry = quant.entry(k);
+      query.phi = a.phi;
+      query.face = face;
+      query.column = x;
+      query.phi_increasing = frame_->angular_local(run.local(x + 1.0)).phi >= a.phi;
+      query.depth_tolerance = depth_tolerance_;
+      const LookupResult result = lookup(table_, run, query);
+      ++lookups;
+      // Steps 3-4: hold the answer until nextX or the end of the maximum run (eq. 7).
+      const double end = std::min(result.next_x, max_run_end(run, *frame_, quant, k, x));
+      const int stop = int(std::clamp(std::ceil(end), double(x + 1), double(face_end)));
+      std::fill_n(&mask.pixels[j], stop - x, result.shadowed ? kMaskShadow : kMaskLit);
+      x = stop;
+    }
+  }
+  return lookups;
+}
+
+void AngularMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
+                          ShadowMask& mask, const Context& /*ctx*/) {
+  tbb::combinable<std::size_t> lookups;
+  tbb::parallel_for(0, surfaces.height,
+                    [&](int row) { lookups.local() += shade_row(scene, surfaces, mask, row); });
+  lookup_calls_ = double(lookups.combine(std::plus<>()));
+}
+
+MethodCounters AngularMethod::counters() const {
+  return {{"ridge_edges", loops_.ridge_edges},
+          {"re_loops", loops_.loops},
+          {"open_re_loops", loops_.open_loops},
+          {"hidden_edges_at_loops", loops_.hidden_edges},
+          {"theta_resolution", double(table_.theta().resolution)},
+          {"table_pairs", double(table_.pair_count())},
+          {"lookup_calls", lookup_calls_}};
+}
+
+}  // namespace shadowkit

@@ -1,0 +1,39 @@
+#pragma once
+// angular: Thakur, Cheng & Miura, RE loops in an angular lookup table.
+#include <optional>
+
+#include "angular_table.h"
+#include "light_frame.h"
+#include "ridge_edges.h"
+#include "shadowkit/methods/shadow_method.h"
+
+namespace shadowkit {
+
+/// \brief Per light: the hidden faces' spans in a table indexed by the scan-line angle theta
+/// (option `resolution` = R, 0 or absent: eq. 4); per scan line: one lookup per run of
+/// pixels, the answer held until nextX or the maximum run length of eq. 7.
+class AngularMethod final : public ShadowMethod {
+ public:
+  explicit AngularMethod(const MethodOptions& options);
+  std::string_view name() const override { return "angular"; }
+  void build(const Scene& scene, std::size_t light, const Context& ctx) override;
+  void shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
+             const Context& ctx) override;
+  std::size_t memory_bytes() const override { return table_.memory_bytes(); }
+  MethodCounters counters() const override;
+
+ private:
+  // Shades one scan line; returns its lookup calls.
+  std::size_t shade_row(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
+                        int row) const;
+
+  int resolution_ = 0;
+  Light light_;
+  std::optional<LightFrame> frame_;
+  AngularTable table_;
+  double depth_tolerance_ = 0;
+  RidgeEdgeStats loops_;  ///< of the last build, over all objects
+  double lookup_calls_ = 0;
+};
+
+}  // namespace shadowkit

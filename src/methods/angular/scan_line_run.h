@@ -1,0 +1,36 @@
+#pragma once
+// Runs along a scan line (discretized-shadow-volume paper, Secs. 6-7): where the answer of
+// one lookup stops holding.
+#include "angular_table.h"
+#include "light_frame.h"
+
+namespace shadowkit {
+
+/// \brief The visible points of one receiver face along one scan line. The point seen at
+/// column c is W(c) / D(c) in light-frame coordinates, with W and D linear in c, so every
+/// plane condition is solved for c in closed form.
+class ScanLineRun {
+ public:
+  ScanLineRun(const LightFrame& frame, const Camera& camera, const Plane& receiver, int row);
+
+  /// Light-frame coordinates of the visible point at column \p c.
+  Vec3 local(double c) const { return (m_ + n_ * c) / (dm_ + dn_ * c); }
+  /// The column after \p c0 where the affine function \p f changes sign; +inf if none.
+  double crossing(const FrameAffine& f, double c0) const;
+  /// The column after \p c0 where phi takes the value \p phi (xEquivalentOf, Sec. 7); +inf.
+  /// \p phi as AngularPoint keeps it (tan(phi) for a point light).
+  double phi_crossing(double phi, double c0) const;
+
+ private:
+  bool point_light_;
+  Vec3 m_, n_;
+  double dm_ = 0, dn_ = 0;
+};
+
+/// Eq. 7, the maximum run length, solved exactly on the receiver's scan line instead of to
+/// first order: the column after \p c0 where the visible point leaves theta entry \p k
+/// (crosses the constant-theta plane at either end of the entry).
+double max_run_end(const ScanLineRun& run, const LightFrame& frame, const ThetaQuantization& q,
+                   int k, double c0);
+
+}  // namespace shadowkit

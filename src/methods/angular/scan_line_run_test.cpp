@@ -1,0 +1,103 @@
+#include "scan_line_run.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "../../testing/test_scenes.h"
+
+namespace shadowkit {
+namespace {
+
+// A receiver through the origin tilted against the scan lines, so theta changes along them.
+const Plane kGround{normalize(Vec3{0.6, 1, 0.2}), 0};
+// The horizontal ground: its scan lines are constant-theta lines.
+const Plane kFlat{{0, 1, 0}, 0};
+
+// The visible point of \p plane at pixel (c, row), from the contract's ray.
+Vec3 ground_point(const Camera& cam, int c, int row, const Plane& plane = kGround) {
+  const Vec3 d = cam.pixel_ray(c, row);
+  return cam.position + d * (-plane.distance(cam.position) / dot(plane.normal, d));
+}
+
+struct Case {
+  Light light;
+  ThetaQuantization q;
+};
+
+std::vector<Case> cases() {
+  ThetaQuantization turn{-std::numbers::pi, 2 * std::numbers::pi / 3000, 3000, true};
+  ThetaQuantization parallel{-20, 0.013, 3000, false};
+  return {{Light::point({1, 5, 2}), turn},
+          {Light::point({-3, 2, -4}), turn},
+          {Light::directional({0.4, -1, -0.3}), parallel}};
+}
+
+TEST(ScanLineRun, VisiblePointsFollowThePixelRays) {
+  const Camera cam = testing::camera({0, 4, 8}, {0, 0, 0}, 200, 100);
+  for (const Case& test : cases()) {
+    const LightFrame frame(test.light, cam, {}, 0);
+    const ScanLineRun run(frame, cam, kGround, 70);
+    for (int c : {0, 57, 199}) {
+      const Vec3 expected = frame.local(ground_point(cam, c, 70));
+      EXPECT_NEAR(length(run.local(c) - expected), 0, 1e-12);
+    }
+  }
+}
+
+// Eq. 7: the run ends where theta first leaves its entry, as found pixel by pixel.
+TEST(ScanLineRun, MaximumRunLengthAgreesWithBruteForce) {
+  const Camera cam = testing::camera({0, 4, 8}, {0, 0, 0}, 400, 200);
+  int compared = 0;
+  for (const Case& test : cases()) {
+    const LightFrame frame(test.light, cam, {}, 0);
+    for (int row = 110; row < 200; row += 7) {
+      const ScanLineRun run(frame, cam, kGround, row);
+      for (int c0 = 0; c0 < 400; c0 += 13) {
+        const int k = test.q.index(frame.angular(ground_point(cam, c0, row)).theta);
+        int brute = c0 + 1;
+        while (brute < 400 &&
+               test.q.index(frame.angular(ground_point(cam, brute, row)).theta) == k) {
+          ++brute;
+        }
+        const double end = max_run_end(run, frame, test.q, k, c0);
+        const int predicted = int(std::min(std::ceil(end), 400.0));
+        EXPECT_EQ(predicted, brute) << "row " << row << " c0 " << c0;
+        compared += brute < 400;
+      }
+    }
+  }
+  EXPECT_GT(compared, 100);
+}
+
+// xEquivalentOf (Sec. 7): the column where phi reaches a value, against pixel stepping.
+TEST(ScanLineRun, PhiCrossingAgreesWithBruteForce) {
+  const Camera cam = testing::camera({0, 4, 8}, {0, 0, 0}, 400, 200);
+  int compared = 0;
+  for (const Case& test : cases()) {
+    for (const Plane& plane : {kGround, kFlat}) {
+      const LightFrame frame(test.light, cam, {}, 0);
+      for (int row = 110; row < 200; row += 11) {
+        const ScanLineRun run(frame, cam, plane, row);
+        const auto phi_at = [&](int c) {
+          return frame.angular(ground_point(cam, c, row, plane)).phi;
+        };
+        const double phi0 = phi_at(10), phi1 = phi_at(390);
+        for (double t : {0.1234, 0.3771, 0.8123}) {  // columns off the pixel centres
+          const double target = phi0 + t * (phi1 - phi0);
+          int brute = 11;
+          while ((phi_at(brute) - target) * (phi1 - phi0) < 0) {
+            ++brute;
+          }
+          EXPECT_EQ(int(std::ceil(run.phi_crossing(target, 10))), brute) << "row " << row;
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 20);
+}
+
+}  // namespace
+}  // namespace shadowkit

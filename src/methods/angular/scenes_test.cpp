@@ -1,0 +1,89 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "../raytrace/raytrace_method.h"
+#include "angular_method.h"
+#include "angular_test_support.h"
+#include "shadowkit/core/error.h"
+#include "shadowkit/scene/scene_file.h"
+
+namespace shadowkit {
+namespace {
+
+Scene reduced(Scene scene) {
+  scene.camera.width = 480;
+  scene.camera.height = 270;
+  return scene;
+}
+
+// Worst interior mismatch (percent) of `angular` against `raytrace` over the lights.
+double worst_interior_mismatch(const Scene& scene, const std::string& label,
+                               const MethodOptions& options = {}) {
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  const std::vector<std::uint32_t> ids = vsb.object_ids();
+  RaytraceMethod reference({});
+  AngularMethod angular(options);
+  double worst = 0;
+  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+    const MaskComparison c = compare_masks(testing::angular_mask(reference, scene, vsb, l),
+                                           testing::angular_mask(angular, scene, vsb, l), ids);
+    std::printf("%s light %zu: interior mismatch %.4f%% (%zu px), lookups %.0f, R %.0f\n",
+                label.c_str(), l, c.interior_pct(), c.interior_mismatched,
+                testing::angular_counter(angular, "lookup_calls"),
+                testing::angular_counter(angular, "theta_resolution"));
+    worst = std::max(worst, c.interior_pct());
+  }
+  return worst;
+}
+
+class AngularBuiltInScene : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(AngularBuiltInScene, AgreesWithTheReference) {
+  EXPECT_LE(worst_interior_mismatch(reduced(load_scene(GetParam(), {})), GetParam()), 0.2);
+}
+
+INSTANTIATE_TEST_SUITE_P(Angular, AngularBuiltInScene,
+                         ::testing::Values("cubes:125", "tetra:3", "table", "three-lights",
+                                           "square", "room"));
+
+// The pairs hold each triangle's whole cut within an entry, so a coarse theta only lengthens
+// the entries (the paper's 99 / 299 / 599 trade quality; here only speed).
+TEST(AngularScenes, ACoarseThetaResolutionStaysExact) {
+  const Scene scene = reduced(load_scene("table", {}));
+  for (const char* r : {"99", "299", "599"}) {
+    const MethodOptions options("angular", {{"resolution", r}});
+    EXPECT_LE(worst_interior_mismatch(scene, std::string("table R=") + r, options), 0.01) << r;
+  }
+}
+
+// Sec. 7: one lookup serves a run of pixels.
+TEST(AngularScenes, OneLookupServesManyPixels) {
+  const Scene scene = reduced(load_scene("cubes:125", {}));
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  AngularMethod angular({});
+  testing::angular_mask(angular, scene, vsb, 0);
+  const double lookups = testing::angular_counter(angular, "lookup_calls");
+  EXPECT_GT(lookups, 0);
+  EXPECT_LT(lookups * 4, double(vsb.covered_count()));
+}
+
+TEST(AngularScenes, RejectsAResolutionThatIsNotAWholeNumber) {
+  EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"resolution", "2.5"}})), InputError);
+  EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"bias", "1"}})), InputError);
+}
+
+TEST(AngularScenes, EveryExampleAgreesWithTheReference) {
+  const std::filesystem::path dir = std::filesystem::path(SHADOWKIT_SOURCE_DIR) / "examples";
+  int checked = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.path().extension() != ".json") continue;
+    const Scene scene = reduced(load_scene_file(entry.path(), {}));
+    EXPECT_LE(worst_interior_mismatch(scene, entry.path().filename().string()), 0.2);
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
+}
+
+}  // namespace
+}  // namespace shadowkit
