@@ -5,10 +5,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "../../testing/method_testing.h"
 #include "../../testing/test_scenes.h"
 #include "../raytrace/raytrace_method.h"
 #include "angular_method.h"
-#include "angular_test_support.h"
 #include "occluders.h"
 #include "shadowkit/core/error.h"
 
@@ -129,9 +129,9 @@ TEST(AngularTable, AHoleLetsTheLightThroughAndDepthIsExactInsideSpans) {
   const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
   AngularMethod angular({});
   RaytraceMethod reference({});
-  const ShadowMask mask = testing::angular_mask(angular, scene, vsb, 0);
+  const ShadowMask mask = testing::method_mask(angular, scene, vsb, 0);
   const MaskComparison c =
-      compare_masks(testing::angular_mask(reference, scene, vsb, 0), mask, vsb.object_ids());
+      compare_masks(testing::method_mask(reference, scene, vsb, 0), mask, vsb.object_ids());
   EXPECT_EQ(c.interior_mismatched, 0u);
   int hole = 0, under_frame = 0;
   for (std::size_t i = 0; i < mask.size(); ++i) {
@@ -144,7 +144,7 @@ TEST(AngularTable, AHoleLetsTheLightThroughAndDepthIsExactInsideSpans) {
   }
   EXPECT_GT(hole, 20);
   EXPECT_GT(under_frame, 20);
-  EXPECT_GT(testing::angular_counter(angular, "re_loops"), 1);  // outer and hole loops
+  EXPECT_GT(testing::counter(angular, "re_loops"), 1);  // outer and hole loops
 }
 
 }  // namespace

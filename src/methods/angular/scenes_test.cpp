@@ -2,9 +2,9 @@
 
 #include <filesystem>
 
+#include "../../testing/method_testing.h"
 #include "../raytrace/raytrace_method.h"
 #include "angular_method.h"
-#include "angular_test_support.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/scene/scene_file.h"
 
@@ -26,12 +26,12 @@ double worst_interior_mismatch(const Scene& scene, const std::string& label,
   AngularMethod angular(options);
   double worst = 0;
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-    const MaskComparison c = compare_masks(testing::angular_mask(reference, scene, vsb, l),
-                                           testing::angular_mask(angular, scene, vsb, l), ids);
+    const MaskComparison c = compare_masks(testing::method_mask(reference, scene, vsb, l),
+                                           testing::method_mask(angular, scene, vsb, l), ids);
     std::printf("%s light %zu: interior mismatch %.4f%% (%zu px), lookups %.0f, R %.0f\n",
                 label.c_str(), l, c.interior_pct(), c.interior_mismatched,
-                testing::angular_counter(angular, "lookup_calls"),
-                testing::angular_counter(angular, "theta_resolution"));
+                testing::counter(angular, "lookup_calls"),
+                testing::counter(angular, "theta_resolution"));
     worst = std::max(worst, c.interior_pct());
   }
   return worst;
@@ -62,8 +62,8 @@ TEST(AngularScenes, OneLookupServesManyPixels) {
   const Scene scene = reduced(load_scene("cubes:125", {}));
   const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
   AngularMethod angular({});
-  testing::angular_mask(angular, scene, vsb, 0);
-  const double lookups = testing::angular_counter(angular, "lookup_calls");
+  testing::method_mask(angular, scene, vsb, 0);
+  const double lookups = testing::counter(angular, "lookup_calls");
   EXPECT_GT(lookups, 0);
   EXPECT_LT(lookups * 4, double(vsb.covered_count()));
 }

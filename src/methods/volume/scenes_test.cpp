@@ -3,8 +3,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include "../../testing/method_testing.h"
 #include "../../testing/test_scenes.h"
-#include "mask_test_support.h"
 #include "shadowkit/scene/scene_file.h"
 #include "volume_method.h"
 
@@ -61,7 +61,7 @@ class BuiltInScene : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(BuiltInScene, AgreesWithTheReference) {
   const Scene scene = reduced(load_scene(GetParam(), {}));
-  EXPECT_LE(testing::worst_interior_mismatch(scene), 0.05);
+  EXPECT_LE(testing::worst_interior_mismatch(scene, "volume"), 0.05);
 }
 
 INSTANTIATE_TEST_SUITE_P(Volume, BuiltInScene,
@@ -74,7 +74,7 @@ TEST(VolumeScenes, EveryExampleAgreesWithTheReference) {
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.path().extension() != ".json") continue;
     const Scene scene = reduced(load_scene_file(entry.path(), {}));
-    EXPECT_LE(testing::worst_interior_mismatch(scene), 0.05) << entry.path();
+    EXPECT_LE(testing::worst_interior_mismatch(scene, "volume"), 0.05) << entry.path();
     ++checked;
   }
   EXPECT_GE(checked, 5);
