@@ -4,7 +4,6 @@
 #include <tbb/parallel_for.h>
 
 #include <cstdlib>
-#include <unordered_map>
 #include <unordered_set>
 
 namespace shadowkit {
@@ -71,29 +70,7 @@ std::vector<RidgeEdge> find_ridge_edges(const Mesh& mesh, const Light& light) {
 }
 
 std::vector<RidgeEdgeLoop> chain_ridge_edge_loops(std::span<const RidgeEdge> edges) {
-  std::unordered_multimap<std::uint32_t, std::uint32_t> starting_at;
-  for (std::uint32_t i = 0; i < edges.size(); ++i) starting_at.emplace(edges[i].from, i);
-  std::vector<char> used(edges.size(), 0);
-  const auto next_from = [&](std::uint32_t v) -> std::int64_t {
-    auto [lo, hi] = starting_at.equal_range(v);
-    for (auto it = lo; it != hi; ++it) {
-      if (!used[it->second]) return it->second;
-    }
-    return -1;
-  };
-  std::vector<RidgeEdgeLoop> loops;
-  for (std::uint32_t first = 0; first < edges.size(); ++first) {
-    if (used[first]) continue;
-    RidgeEdgeLoop loop;
-    for (std::int64_t e = first; e >= 0; e = next_from(edges[e].to)) {
-      used[e] = 1;
-      loop.edges.push_back(std::uint32_t(e));
-      if (edges[e].to == edges[first].from) break;
-    }
-    loop.closed = edges[loop.edges.back()].to == edges[first].from;
-    loops.push_back(std::move(loop));
-  }
-  return loops;
+  return chain_edge_loops(edges);
 }
 
 std::vector<std::uint32_t> hidden_edges_at_loops(const Mesh& mesh, const Light& light,

@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "shadowkit/scene/edge_loops.h"
 #include "shadowkit/scene/scene.h"
 
 namespace shadowkit {
@@ -29,10 +30,7 @@ struct RidgeEdge {
 };
 
 /// \brief An RE loop: ridge edges chained end to start (Sec. 2 proves they close).
-struct RidgeEdgeLoop {
-  std::vector<std::uint32_t> edges;  ///< indices into the ridge-edge list, in walking order
-  bool closed = false;
-};
+using RidgeEdgeLoop = EdgeLoop;
 
 /// Visible (1) or hidden (0) per face of \p mesh for \p light.
 std::vector<char> visible_faces(const Mesh& mesh, const Light& light);

@@ -1,7 +1,6 @@
 #include "contour_edges.h"
 
 #include <algorithm>
-#include <unordered_map>
 
 namespace shadowkit {
 namespace {
@@ -53,33 +52,7 @@ std::vector<ContourEdge> find_contour_edges(const Mesh& mesh, const Light& light
 }
 
 std::vector<ContourLoop> chain_contour_loops(std::span<const ContourEdge> edges) {
-  std::unordered_multimap<std::uint32_t, std::uint32_t> starting_at;
-  for (std::uint32_t i = 0; i < edges.size(); ++i) starting_at.emplace(edges[i].from, i);
-  std::vector<char> used(edges.size(), 0);
-  // An unused edge leaving vertex v, or -1.
-  const auto next_from = [&](std::uint32_t v) -> std::int64_t {
-    auto [lo, hi] = starting_at.equal_range(v);
-    for (auto it = lo; it != hi; ++it) {
-      if (!used[it->second]) return it->second;
-    }
-    return -1;
-  };
-
-  std::vector<ContourLoop> loops;
-  for (std::uint32_t first = 0; first < edges.size(); ++first) {
-    if (used[first]) continue;
-    ContourLoop loop;
-    std::int64_t e = first;
-    while (e >= 0) {
-      used[e] = 1;
-      loop.edges.push_back(std::uint32_t(e));
-      if (edges[e].to == edges[first].from) break;
-      e = next_from(edges[e].to);
-    }
-    loop.closed = edges[loop.edges.back()].to == edges[first].from;
-    loops.push_back(std::move(loop));
-  }
-  return loops;
+  return chain_edge_loops(edges);
 }
 
 }  // namespace shadowkit

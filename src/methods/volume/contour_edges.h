@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "shadowkit/scene/edge_loops.h"
 #include "shadowkit/scene/scene.h"
 
 namespace shadowkit {
@@ -35,10 +36,7 @@ struct ContourEdge {
 };
 
 /// \brief Contour edges chained end to start through shared vertices (Crow's "perimeter").
-struct ContourLoop {
-  std::vector<std::uint32_t> edges;  ///< indices into the contour-edge list, in walking order
-  bool closed = false;               ///< the last edge ends where the first starts
-};
+using ContourLoop = EdgeLoop;
 
 /// The contour edges of \p mesh for \p light, in mesh edge order.
 std::vector<ContourEdge> find_contour_edges(const Mesh& mesh, const Light& light);
