@@ -67,13 +67,19 @@ class ShadowMethod {
   virtual MethodCounters counters() const { return {}; }
 };
 
+/// Which side of \p plane the light is on: the signed distance of a point light, or
+/// -dot(n, direction) for a directional one; 0 when the light lies in the plane.
+inline double light_side(const Plane& plane, const Light& light) {
+  return light.type == Light::Type::point ? plane.distance(light.position)
+                                          : -dot(plane.normal, light.direction);
+}
+
 /// Condition 1 of the contract: the camera at \p eye and the light are strictly on the same
 /// side of a face's \p plane. A light in the plane, or behind it, shadows the face.
 inline bool faces_light(const Plane& plane, Vec3 eye, const Light& light) {
   const double eye_side = plane.distance(eye);
-  const double light_side = light.type == Light::Type::point ? plane.distance(light.position)
-                                                             : -dot(plane.normal, light.direction);
-  return (eye_side > 0 && light_side > 0) || (eye_side < 0 && light_side < 0);
+  const double light_part = light_side(plane, light);
+  return (eye_side > 0 && light_part > 0) || (eye_side < 0 && light_part < 0);
 }
 
 /// Runs \p classify(index) -> bool lit for every covered pixel, rows in parallel, and

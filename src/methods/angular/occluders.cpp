@@ -42,7 +42,7 @@ std::vector<char> occluding_faces(const Scene& scene, const Light& light) {
     const bool hidden_only =
         one_solid(mesh) && !eye_and_light_may_be_apart(scene, light, mesh.bounds());
     for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
-      const double side = face_light_side(mesh.planes[f], light);
+      const double side = light_side(mesh.planes[f], light);
       occluder[object.first_face + f] = hidden_only ? side < 0 : side != 0;
     }
   }

@@ -38,15 +38,10 @@ bool is_hidden_ridge(const Mesh& mesh, const MeshEdge& edge, const std::vector<c
 
 }  // namespace
 
-double face_light_side(const Plane& plane, const Light& light) {
-  return light.type == Light::Type::point ? plane.distance(light.position)
-                                          : -dot(plane.normal, light.direction);
-}
-
 std::vector<char> visible_faces(const Mesh& mesh, const Light& light) {
   std::vector<char> visible(mesh.face_count());
   for (std::size_t f = 0; f < visible.size(); ++f)
-    visible[f] = face_light_side(mesh.planes[f], light) > 0;
+    visible[f] = light_side(mesh.planes[f], light) > 0;
   return visible;
 }
 

@@ -5,14 +5,11 @@
 #include <span>
 #include <vector>
 
+#include "shadowkit/methods/shadow_method.h"
 #include "shadowkit/scene/edge_loops.h"
 #include "shadowkit/scene/scene.h"
 
 namespace shadowkit {
-
-/// Which side of \p plane the light is on: > 0 in front (the face is visible from it, Sec. 2
-/// footnote), < 0 behind (hidden), 0 in the plane.
-double face_light_side(const Plane& plane, const Light& light);
 
 /// \brief A ridge edge: between a face visible from the light and one hidden from it,
 /// oriented as the visible face walks it (so the visible side is on its left).

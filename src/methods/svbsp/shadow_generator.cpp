@@ -3,14 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "shadowkit/methods/shadow_method.h"
+
 namespace shadowkit::svbsp {
 namespace {
-
-// Distance of the light from a face plane; for a directional light, the cosine.
-double light_side(const Plane& plane, const Light& light) {
-  return light.type == Light::Type::point ? plane.distance(light.position)
-                                          : -dot(plane.normal, light.direction);
-}
 
 // The distance within which a point counts as on a shadow plane, relative to how far the
 // planes reach across the scene.

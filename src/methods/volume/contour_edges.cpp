@@ -20,11 +20,6 @@ int face_side(const Mesh& mesh, const MeshEdge& edge, const EdgeUse& use, Vec3 p
 
 }  // namespace
 
-double light_side(const Plane& plane, const Light& light) {
-  return light.type == Light::Type::point ? plane.distance(light.position)
-                                          : -dot(plane.normal, light.direction);
-}
-
 Vec3 away_from_light(Vec3 v, const Light& light) {
   return light.type == Light::Type::point ? v - light.position : light.direction;
 }

@@ -4,14 +4,11 @@
 #include <span>
 #include <vector>
 
+#include "shadowkit/methods/shadow_method.h"
 #include "shadowkit/scene/edge_loops.h"
 #include "shadowkit/scene/scene.h"
 
 namespace shadowkit {
-
-/// Which side of \p plane the light is on: the signed distance of a point light, or
-/// -dot(n, direction) for a directional one. 0: the light lies in the plane.
-double light_side(const Plane& plane, const Light& light);
 
 /// The direction in which a shadow polygon leaves vertex \p v: away from a point light, or
 /// the travel direction of a directional light (then every ray is parallel).
