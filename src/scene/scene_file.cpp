@@ -139,7 +139,7 @@ void read_objects(const JsonCursor& list, const fs::path& dir, Scene& scene, con
       apply_object_transform(c, part.soup.positions);
       check_coordinates(c, part.soup.positions);
       const std::string label = name.empty() ? part.name : name;
-      scene.objects.push_back({label, Mesh::build(part.soup, file + ": " + label, ctx), 0});
+      scene.objects.push_back({label, Mesh::build(part.soup, file + ": " + label, ctx), 0, {}});
     }
   }
 }

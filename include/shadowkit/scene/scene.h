@@ -3,11 +3,13 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "shadowkit/core/vec.h"
 #include "shadowkit/scene/mesh.h"
+#include "shadowkit/scene/subdivision.h"
 
 namespace shadowkit {
 
@@ -57,6 +59,9 @@ struct SceneObject {
   std::string name;
   Mesh mesh;
   std::uint32_t first_face = 0;  ///< global id of the mesh's face 0
+  /// Set when the object is a Catmull-Clark surface: `mesh` is then its crack-free
+  /// tessellation, and methods that work on the limit surface itself (voxel) use this.
+  std::shared_ptr<const SubdivisionSurface> subdivision;
 };
 
 /// \brief Every face of every object, triangulated once for the scan converter and Embree.

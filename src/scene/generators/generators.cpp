@@ -220,7 +220,7 @@ Scene make_builtin_scene(const nlohmann::json& params, const std::string& where,
   scene.camera = parts.camera;
   scene.lights = std::move(parts.lights);
   for (const GeneratedObject& object : parts.objects) {
-    scene.objects.push_back({object.name, Mesh::build(object.soup, object.name, ctx), 0});
+    scene.objects.push_back({object.name, Mesh::build(object.soup, object.name, ctx), 0, {}});
   }
   scene.finalize();
   return scene;
