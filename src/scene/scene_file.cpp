@@ -115,8 +115,9 @@ void check_coordinates(const JsonCursor& c, const std::vector<Vec3>& positions) 
 }
 
 // Segments per patch edge of a Catmull-Clark object's tessellation, 0 for a polygon mesh.
-// The default keeps the polygons within about 1e-3 of a patch's size of the limit surface
-// on smooth shapes (the chord error falls as 1 / segments^2).
+// With the default 8, the polygons of examples/subdivision.json stay within 0.3% of their
+// object's size of the limit surface; the gap shrinks as 1 / segments^2 on regular patches
+// but only about as 1 / segments next to extraordinary vertices.
 int tessellation_segments(const JsonCursor& c) {
   if (!c.has("subdivision")) {
     if (c.has("tessellation")) c["tessellation"].fail("applies only with \"subdivision\"");
