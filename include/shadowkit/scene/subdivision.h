@@ -40,7 +40,9 @@ class SubdivisionSurface {
   std::size_t control_face_count() const;
   /// Patches: the control faces, or the faces of the control mesh subdivided once.
   std::size_t patch_count() const;
-  /// Exact limit position and first derivatives of \p patch at (u, v), both in [0, 1].
+  /// Limit position and first derivatives of \p patch at (u, v), both in [0, 1]: exact,
+  /// except within 2^-10 of an extraordinary vertex, where a Gregory patch matches the limit
+  /// position and tangent plane at its corners (design.md). Safe to call from many threads.
   SurfacePoint evaluate(std::uint32_t patch, double u, double v) const;
   /// The patch's corners as vertex ids of the (once-subdivided) quad mesh, in the order
   /// (u, v) = (0, 0), (1, 0), (1, 1), (0, 1). Two patches share an edge exactly when they

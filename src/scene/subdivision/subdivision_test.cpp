@@ -281,6 +281,21 @@ TEST(SubdivisionSurface, PlanarGridGivesAPlanarSurfaceWithSharpCorners) {
   EXPECT_NEAR(surface->evaluate(1, 0.37, 0).position.y, 0.0, 1e-12);
 }
 
+TEST(SubdivisionSurface, LoneQuadIsItsBilinearPatchAndLoneTriangleHasThreePatches) {
+  PolygonSoup quad;
+  quad.positions = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}};
+  quad.add_face({0, 1, 2, 3});
+  const auto surface = SubdivisionSurface::build(quad, "quad");
+  ASSERT_EQ(surface->patch_count(), 1u);
+  for (const auto& [u, v] : {std::pair{0.0, 0.0}, {0.25, 0.5}, {1.0, 0.75}}) {
+    EXPECT_LE(length(surface->evaluate(0, u, v).position - Vec3{2 * u, v, 0}), 1e-12);
+  }
+  PolygonSoup triangle;
+  triangle.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  triangle.add_face({0, 1, 2});
+  EXPECT_EQ(SubdivisionSurface::build(triangle, "triangle")->patch_count(), 3u);
+}
+
 TEST(SubdivisionSurface, TinyAndHugeCoordinatesScaleTheSurface) {
   const auto unit = SubdivisionSurface::build(test::cube_control(), "cube");
   for (double scale : {1e-9, 1e12}) {
