@@ -67,7 +67,7 @@ inline Scene make_scene(const Camera& cam, std::vector<Light> lights,
   const Context ctx;
   for (std::size_t i = 0; i < soups.size(); ++i) {
     const std::string name = "object" + std::to_string(i);
-    scene.objects.push_back({name, Mesh::build(soups[i], name, ctx), 0});
+    scene.objects.push_back({name, Mesh::build(soups[i], name, ctx), 0, {}});
   }
   scene.finalize();
   return scene;
