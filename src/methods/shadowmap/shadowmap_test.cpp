@@ -34,7 +34,7 @@ void add_object(Scene& scene, const std::string& name, const std::vector<Vec3>& 
   PolygonSoup soup;
   soup.positions = positions;
   for (const auto& f : faces) soup.add_face(f);
-  scene.objects.push_back({name, Mesh::build(soup, name, quiet())});
+  scene.objects.push_back({name, Mesh::build(soup, name, quiet()), 0, {}});
 }
 
 Camera small_camera(Vec3 position, Vec3 look_at, double fov = 60) {
