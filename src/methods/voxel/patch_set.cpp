@@ -1,0 +1,78 @@
+#include "patch_set.h"
+
+#include <utility>
+
+namespace shadowkit::voxel {
+namespace {
+
+// (u, v) of corner k, and of the point at parameter t along side s (from corner s).
+constexpr std::array<std::array<double, 2>, 4> kCornerUv{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+
+std::array<double, 2> side_uv(int side, double t) {
+  const auto& a = kCornerUv[side];
+  const auto& b = kCornerUv[(side + 1) % 4];
+  // Dyadic t: the coordinates come out exact (one of them is constant along the side).
+  return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t};
+}
+
+// The side (and the parameter along it) on which a boundary point (u, v) lies.
+std::pair<int, double> side_of(double u, double v) {
+  if (v == 0) return {0, u};
+  if (u == 1) return {1, v};
+  if (v == 1) return {2, 1 - u};
+  return {3, 1 - v};
+}
+
+int corner_of(double u, double v) {
+  return u == 0 ? (v == 0 ? 0 : 3) : (v == 0 ? 1 : 2);
+}
+
+}  // namespace
+
+PatchSet::PatchSet(const Scene& scene) : scene_(&scene) {
+  const TriangleList& triangles = scene.triangles();
+  for (std::uint32_t t = 0; t < triangles.triangles.size(); ++t) {
+    const auto& [a, b, c] = triangles.triangles[t];
+    patches_.push_back({scene.object_of_face(triangles.triangle_face[t]), t, {a, b, c, c}});
+  }
+  for (std::uint32_t p = 0; p < patches_.size(); ++p) {
+    const auto& ids = patches_[p].corner_ids;
+    for (std::uint8_t k = 0; k < 4; ++k) {
+      corner_owner_.try_emplace(ids[k], Owner{p, k});
+      side_owner_.try_emplace(side_key(ids[k], ids[(k + 1) % 4]), Owner{p, k});
+    }
+  }
+}
+
+std::uint64_t PatchSet::side_key(std::uint32_t a, std::uint32_t b) {
+  return a < b ? (std::uint64_t(a) << 32 | b) : (std::uint64_t(b) << 32 | a);
+}
+
+Vec3 PatchSet::point(std::uint32_t patch, double u, double v) const {
+  const bool u_edge = u == 0 || u == 1, v_edge = v == 0 || v == 1;
+  const auto& ids = patches_[patch].corner_ids;
+  if (u_edge && v_edge) {
+    const Owner& o = corner_owner_.at(ids[corner_of(u, v)]);
+    const auto& uv = kCornerUv[o.side];
+    return evaluate(o.patch, uv[0], uv[1]);
+  }
+  if (!u_edge && !v_edge) return evaluate(patch, u, v);
+  // A side point: the owner evaluates it, measured from the side's lower corner id.
+  const auto [side, t] = side_of(u, v);
+  const std::uint32_t from = ids[side], to = ids[(side + 1) % 4];
+  const Owner& o = side_owner_.at(side_key(from, to));
+  const bool same_way = patches_[o.patch].corner_ids[o.side] == from;
+  const auto uv = side_uv(o.side, same_way ? t : 1 - t);
+  return evaluate(o.patch, uv[0], uv[1]);
+}
+
+Vec3 PatchSet::evaluate(std::uint32_t patch, double u, double v) const {
+  const Patch& p = patches_[patch];
+  const std::vector<Vec3>& positions = scene_->triangles().positions;
+  const Vec3 a = positions[p.corner_ids[0]], b = positions[p.corner_ids[1]];
+  const Vec3 c = positions[p.corner_ids[2]];
+  // The bilinear patch (a, b, c, c): v = 1 collapses onto c.
+  return ((1 - u) * a + u * b) * (1 - v) + c * v;
+}
+
+}  // namespace shadowkit::voxel

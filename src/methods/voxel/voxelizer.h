@@ -1,0 +1,33 @@
+#pragma once
+// Lai & Cheng §3: voxelization by recursive midpoint subdivision of each patch's parameter
+// space, until the voxels of a subpatch's four corners are N-adjacent.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "patch_set.h"
+#include "voxel_grid.h"
+
+namespace shadowkit::voxel {
+
+/// \brief A leaf of the recursion: its four corners (grid units, in the patch's corner
+/// order) and its patch. Its corners' voxels are the voxelization; its two triangles
+/// (0, 1, 2) and (0, 2, 3) are what the topology test (§4.2) and the renderer (§5) draw.
+struct Subpatch {
+  std::array<GridPoint, 4> corner;
+  std::uint32_t patch = 0;
+};
+
+/// Whether the recursion stops at a subpatch with corners \p corner (grid units): their
+/// voxels are pairwise \p adjacency-adjacent, or the subpatch is far below a voxel in size
+/// (corners around a voxel vertex can sit in diagonal voxels at any scale).
+bool small_enough(const std::array<Vec3, 4>& corner, int adjacency);
+
+/// The voxel of grid point \p g, unclamped (coordinates may lie outside the grid).
+VoxelIndex voxel_floor(Vec3 g);
+
+/// The leaf subpatches of every patch that reach \p grid, patches in parallel (oneTBB),
+/// in patch order.
+std::vector<Subpatch> voxelize(const PatchSet& patches, const VoxelGrid& grid, int adjacency);
+
+}  // namespace shadowkit::voxel
