@@ -20,7 +20,8 @@ double sign_of(int face) {
 
 }  // namespace
 
-LightProjection::LightProjection(const Light& light, const VoxelGrid& grid)
+LightProjection::LightProjection(const Light& light, const VoxelGrid& grid,
+                                 double entries_per_voxel)
     : point_(light.type == Light::Type::point) {
   const Vec3 dims{double(grid.dims[0]), double(grid.dims[1]), double(grid.dims[2])};
   reach_ = 2 * length(dims) + 2;
@@ -28,14 +29,16 @@ LightProjection::LightProjection(const Light& light, const VoxelGrid& grid)
     light_ = grid.to_grid(light.position);
     const double distance = std::max(length(dims * 0.5 - light_), 0.25 * length(dims));
     // A cube face spans [-1, 1] at unit distance: 2 d / R is an entry's width at distance d.
-    resolution_ = std::clamp(long(std::ceil(2 * distance)), 16L, kMaxResolution);
+    resolution_ =
+        std::clamp(long(std::ceil(2 * distance * entries_per_voxel)), 16L, kMaxResolution);
     return;
   }
   light_ = light.direction;
   const Vec3 d = light.direction;
   const Vec3 hint = std::abs(d.y) < 0.9 ? Vec3{0, 1, 0} : Vec3{1, 0, 0};
   right_ = normalize(cross(d, hint));
-  up_ = cross(right_, d);
+  up_ = cross(right_, d) * entries_per_voxel;
+  right_ = right_ * entries_per_voxel;
 }
 
 std::optional<PlanePoint> LightProjection::project_on(int face, Vec3 p) const {
@@ -69,7 +72,7 @@ std::uint64_t LightProjection::entry(const PlanePoint& q) {
 }
 
 double LightProjection::entry_width(Vec3 p) const {
-  if (!point_) return 1;
+  if (!point_) return length(right_);
   const Vec3 w = p - light_;
   const double depth = max_abs_component(w);
   // d(x) = d(lateral) / depth on a face spanning [-1, 1] with R entries.

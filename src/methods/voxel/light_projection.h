@@ -19,10 +19,10 @@ struct PlanePoint {
 /// \brief The light's projection, in grid units.
 class LightProjection {
  public:
-  /// Entries are one voxel wide at the grid (point light: at the distance of the grid's
-  /// centre, at least a quarter of its diagonal, so that a light inside the grid still
-  /// gets entries of a useful size).
-  LightProjection(const Light& light, const VoxelGrid& grid);
+  /// Entries are 1 / \p entries_per_voxel voxels wide at the grid (point light: at the
+  /// distance of the grid's centre, at least a quarter of its diagonal, so that a light
+  /// inside the grid still gets entries of a useful size).
+  LightProjection(const Light& light, const VoxelGrid& grid, double entries_per_voxel);
 
   /// Where the beam through \p p meets the projection (the plane of its cube face).
   PlanePoint project(Vec3 p) const;
@@ -46,8 +46,8 @@ class LightProjection {
 
  private:
   bool point_ = true;
-  Vec3 light_;  ///< position (point light) or direction of travel (directional), grid units
-  Vec3 right_, up_;
+  Vec3 light_;       ///< position (point light) or direction of travel (directional), grid units
+  Vec3 right_, up_;  ///< directional: the plane's axes, entries_per_voxel long
   long resolution_ = 1;
   double reach_ = 1;
 };

@@ -18,6 +18,16 @@ constexpr double kFootprintSlack = 1e-3;
 // of a point light reach it, and they would flood the plane.
 constexpr double kMaxFootprint = 16;
 
+// Calls \p add with every entry of \p face that [x0, x1] x [y0, y1] overlaps.
+template <typename Add>
+void add_rectangle(int face, double x0, double x1, double y0, double y1, Add&& add) {
+  for (double y = std::floor(y0); y <= std::floor(y1); ++y) {
+    for (double x = std::floor(x0); x <= std::floor(x1); ++x) {
+      add(LightProjection::entry(PlanePoint{face, x + 0.5, y + 0.5}));
+    }
+  }
+}
+
 // Adds \p leaf to every entry of \p face its projected corners' box overlaps; a corner
 // behind the face's plane (a subpatch within a voxel of the light) leaves the face out.
 void add_footprint(const LightProjection& projection, const Subpatch& leaf, std::uint32_t id,
@@ -29,28 +39,26 @@ void add_footprint(const LightProjection& projection, const Subpatch& leaf, std:
     x0 = std::min(x0, q->x), x1 = std::max(x1, q->x);
     y0 = std::min(y0, q->y), y1 = std::max(y1, q->y);
   }
-  for (double y = std::floor(y0 - kFootprintSlack); y < y1 + kFootprintSlack; ++y) {
-    for (double x = std::floor(x0 - kFootprintSlack); x < x1 + kFootprintSlack; ++x) {
-      out.push_back({LightProjection::entry(PlanePoint{face, x + 0.5, y + 0.5}), distance, id});
-    }
-  }
+  add_rectangle(face, x0 - kFootprintSlack, x1 + kFootprintSlack, y0 - kFootprintSlack,
+                y1 + kFootprintSlack, [&](std::uint64_t entry) {
+                  out.push_back({entry, distance, id});
+                });
 }
 
 }  // namespace
 
 NearestVoxels::NearestVoxels(const LightProjection& projection, const std::vector<Vec3>& centres,
-                             const std::vector<float>& distances) {
+                             const std::vector<float>& distances, double footprint) {
   using Pair = std::pair<std::uint64_t, float>;
   tbb::enumerable_thread_specific<std::vector<Pair>> parts;
   tbb::parallel_for(std::size_t(0), centres.size(), [&](std::size_t i) {
     const PlanePoint q = projection.project(centres[i]);
-    const double radius = std::min(projection.entry_width(centres[i]) * 0.5, kMaxFootprint);
+    const double radius = std::min(projection.entry_width(centres[i]) * footprint, kMaxFootprint);
     auto& out = parts.local();
-    for (double y = std::floor(q.y - radius); y < q.y + radius; ++y) {
-      for (double x = std::floor(q.x - radius); x < q.x + radius; ++x) {
-        out.push_back({LightProjection::entry(PlanePoint{q.face, x + 0.5, y + 0.5}), distances[i]});
-      }
-    }
+    add_rectangle(q.face, q.x - radius, q.x + radius, q.y - radius, q.y + radius,
+                  [&](std::uint64_t entry) {
+                    out.push_back({entry, distances[i]});
+                  });
   });
   std::vector<Pair> pairs;
   for (auto& part : parts) pairs.insert(pairs.end(), part.begin(), part.end());

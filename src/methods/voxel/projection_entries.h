@@ -14,14 +14,15 @@ namespace shadowkit::voxel {
 
 /// \brief Per entry, the smallest distance from the light of a voxel projected there.
 ///
-/// A voxel covers the entries within half a voxel of its centre's projection, not only the
-/// centre's entry: entries smaller than a voxel (near a point light) would otherwise leave
-/// holes between the projections of a caster's voxels, the "illegal holes" of §4.
+/// A voxel covers the entries within \p footprint voxels of its centre's projection:
+/// with 0.5, not only the centre's entry, so that entries smaller than a voxel (near a point
+/// light) leave no holes between the projections of a caster's voxels, the "illegal holes"
+/// of §4; with 0, the paper's projection of voxels as points.
 class NearestVoxels {
  public:
   /// \p centres and \p distances: one per voxel (grid units).
   NearestVoxels(const LightProjection& projection, const std::vector<Vec3>& centres,
-                const std::vector<float>& distances);
+                const std::vector<float>& distances, double footprint);
   std::optional<float> nearest(std::uint64_t entry) const;
   std::size_t entry_count() const { return entries_.size(); }
 

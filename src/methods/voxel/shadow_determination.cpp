@@ -16,9 +16,12 @@ namespace {
 const double kOffset = std::sqrt(2.0);
 // §4.2: hits nearer than this (voxels) to the sample are its own surface around it.
 constexpr double kSelfHit = 1e-3;
+// Half a voxel: the footprint of a voxel on the plane for "nearest the light is lit".
+constexpr double kNoHoles = 0.5;
+constexpr double kOffsetEntriesPerVoxel = 2;
 
-// §4.1: move the sample A by sqrt(2) r along its normal, to the light's side (surfaces
-// are two-sided: the side facing the camera away from the light is shadowed by contract
+// §4.1: move the voxel A (its centre) by sqrt(2) r along its subpatch's normal, to the light's side
+// (surfaces are two-sided: the side facing the camera away from the light is shadowed by contract
 // condition 1 at the mask, which plays the part of the paper's N . (L - A) <= 0), and
 // test the moved point A' against the nearest voxel of its entry. A' is projected along
 // the beam through A: its sideways move picks the entry, its move along the beam only
@@ -57,12 +60,32 @@ bool topology_test_shadowed(const LightProjection& projection, const BlockingSub
   return false;
 }
 
+// The sample that stands for voxel \p i: the one whose subpatch faces the light most
+// (normals follow the patches' vertex order). Where a lit face and one turned away share
+// a voxel (a closed mesh's edge), the voxel is then decided for the lit face; the other
+// is shadowed anyway by condition 1 at the mask.
+std::uint32_t facing_sample(const LightProjection& projection, const std::vector<Subpatch>& leaves,
+                            const SurfaceVoxels& voxels, std::size_t i) {
+  std::uint32_t best = voxels.samples[voxels.first_sample[i]];
+  double best_facing = -INFINITY;
+  for (std::uint32_t k = voxels.first_sample[i]; k < voxels.first_sample[i + 1]; ++k) {
+    const std::uint32_t s = voxels.samples[k];
+    const double facing =
+        dot(leaf_normal(leaves[s / 4]), projection.toward_light(sample_point(leaves, s)));
+    if (facing > best_facing) best = s, best_facing = facing;
+  }
+  return best;
+}
+
 }  // namespace
 
 ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatch>& leaves,
                                    const SurfaceVoxels& voxels, ShadowTest test,
                                    CubicFrameBuffer& buffer) {
-  const LightProjection projection(light, buffer.grid());
+  // §4.1 compares a point moved by sqrt(2) voxels with voxels' footprints: entries of half
+  // a voxel keep a lit plane's own voxels out of the moved point's entry at grazing angles.
+  const LightProjection projection(light, buffer.grid(),
+                                   test == ShadowTest::offset ? kOffsetEntriesPerVoxel : 1.0);
   const VoxelKeys& keys = buffer.keys();
   // Project the voxel centres once.
   std::vector<Vec3> centres(voxels.size());
@@ -73,8 +96,7 @@ ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatc
     entries[i] = projection.entry(centres[i]);
     distances[i] = float(projection.distance(centres[i]));
   });
-  const NearestVoxels nearest(projection, centres, distances);
-  std::vector<Vec3>().swap(centres);
+  const NearestVoxels nearest(projection, centres, distances, kNoHoles);
   std::optional<BlockingSubpatches> lists;
   if (test == ShadowTest::topology) lists.emplace(projection, leaves);
 
@@ -83,18 +105,18 @@ ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatc
   tbb::parallel_for(std::size_t(0), voxels.size(), [&](std::size_t i) {
     if (distances[i] <= *nearest.nearest(entries[i])) return;  // nearest: lit
     uncertain[i] = 1;
-    const std::uint32_t sample = voxels.samples[i];
-    const Vec3 a = sample_point(leaves, sample);
-    const bool shadowed = test == ShadowTest::offset
-                              ? offset_test_shadowed(projection, nearest, leaves[sample / 4], a)
-                              : topology_test_shadowed(projection, *lists, leaves, a);
+    const std::uint32_t sample = facing_sample(projection, leaves, voxels, i);
+    const bool shadowed =
+        test == ShadowTest::offset
+            ? offset_test_shadowed(projection, nearest, leaves[sample / 4], centres[i])
+            : topology_test_shadowed(projection, *lists, leaves, sample_point(leaves, sample));
     states[i] = shadowed ? VoxelState::shadowed : VoxelState::lit;
   });
 
   ShadowStatistics stats;
   stats.entries = nearest.entry_count();
   stats.blocker_records = lists ? lists->record_count() : 0;
-  stats.peak_bytes = voxels.size() * (sizeof(std::uint64_t) + sizeof(float) + sizeof(VoxelState)) +
+  stats.peak_bytes = voxels.size() * (sizeof(Vec3) + sizeof(std::uint64_t) + sizeof(float) + 2) +
                      (lists ? lists->memory_bytes() : 0);
   for (std::size_t i = 0; i < voxels.size(); ++i) {
     stats.uncertain += uncertain[i];

@@ -21,15 +21,19 @@ SurfaceVoxels SurfaceVoxels::collect(const std::vector<Subpatch>& leaves, const 
   SurfaceVoxels out;
   for (const auto& [key, sample] : samples) {
     if (key == kOutside) break;  // sorted last
-    if (!out.keys.empty() && out.keys.back() == key) continue;
-    out.keys.push_back(key);
+    if (out.keys.empty() || out.keys.back() != key) {
+      if (!out.keys.empty()) out.first_sample.push_back(std::uint32_t(out.samples.size()));
+      out.keys.push_back(key);
+    }
     out.samples.push_back(sample);
   }
+  if (!out.keys.empty()) out.first_sample.push_back(std::uint32_t(out.samples.size()));
   return out;
 }
 
 std::size_t SurfaceVoxels::memory_bytes() const {
-  return keys.capacity() * sizeof(std::uint64_t) + samples.capacity() * sizeof(std::uint32_t);
+  return keys.capacity() * sizeof(std::uint64_t) +
+         (first_sample.capacity() + samples.capacity()) * sizeof(std::uint32_t);
 }
 
 Vec3 leaf_normal(const Subpatch& leaf) {

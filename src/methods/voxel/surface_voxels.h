@@ -9,11 +9,12 @@
 
 namespace shadowkit::voxel {
 
-/// \brief Non-empty voxels in ascending key order. A voxel's sample is the leaf corner
-/// with the smallest number leaf * 4 + corner that falls in it (deterministic whatever
-/// the thread count); its position and its leaf's normal stand for the voxel.
+/// \brief Non-empty voxels in ascending key order, each with its samples: the leaf corners
+/// (numbered leaf * 4 + corner) that fall in it, ascending (deterministic whatever the
+/// thread count). A sample's position and its leaf's normal stand for the voxel in §4.
 struct SurfaceVoxels {
   std::vector<std::uint64_t> keys;
+  std::vector<std::uint32_t> first_sample{0};  ///< voxel i: samples[first[i] .. first[i+1])
   std::vector<std::uint32_t> samples;
 
   static SurfaceVoxels collect(const std::vector<Subpatch>& leaves, const VoxelGrid& grid,
