@@ -17,8 +17,9 @@ struct SurfaceVoxels {
   std::vector<std::uint32_t> first_sample{0};  ///< voxel i: samples[first[i] .. first[i+1])
   std::vector<std::uint32_t> samples;
 
+  /// The voxels of \p leaves' corners (and bridges, see add_samples) inside \p grid.
   static SurfaceVoxels collect(const std::vector<Subpatch>& leaves, const VoxelGrid& grid,
-                               const VoxelKeys& keys);
+                               const VoxelKeys& keys, int adjacency);
   std::size_t size() const { return keys.size(); }
   std::size_t memory_bytes() const;
 };

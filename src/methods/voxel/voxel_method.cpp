@@ -62,7 +62,7 @@ void VoxelMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
   const voxel::PatchSet patches(scene);
   leaves_ = voxel::voxelize(patches, grid, adjacency_);
   const voxel::VoxelKeys keys(grid.dims);
-  voxels_ = voxel::SurfaceVoxels::collect(leaves_, grid, keys);
+  voxels_ = voxel::SurfaceVoxels::collect(leaves_, grid, keys, adjacency_);
   buffer_ = voxel::CubicFrameBuffer(grid, voxels_.keys);
 }
 

@@ -28,52 +28,50 @@ class PatchVoxelizer {
   void run() { subdivide({0, 1, 0, 1}, {at(0, 0), at(1, 0), at(1, 1), at(0, 1)}, 0); }
 
  private:
-  // Rounded to the stored precision here, so the stopping rule and the frame buffer see
-  // the same voxel for every corner.
-  Vec3 at(double u, double v) const {
-    return GridPoint::of(grid_.to_grid(patches_.point(patch_, u, v))).vec();
+  // At the stored precision, so that the stopping rule and the frame buffer see the same
+  // voxel for every corner.
+  GridPoint at(double u, double v) const {
+    return GridPoint::of(grid_.to_grid(patches_.point(patch_, u, v)));
   }
 
   // Subpatches whose corners' box misses the grid (one voxel of slack) are dropped: the
   // frame buffer is bounded to what can be seen or shadow what is seen.
-  bool outside_grid(const std::array<Vec3, 4>& c) const {
+  bool outside_grid(const Corners& c) const {
     for (int a = 0; a < 3; ++a) {
-      const double lo = std::min({c[0][a], c[1][a], c[2][a], c[3][a]});
-      const double hi = std::max({c[0][a], c[1][a], c[2][a], c[3][a]});
+      const double lo = std::min({c[0].vec()[a], c[1].vec()[a], c[2].vec()[a], c[3].vec()[a]});
+      const double hi = std::max({c[0].vec()[a], c[1].vec()[a], c[2].vec()[a], c[3].vec()[a]});
       if (hi < -1 || lo > grid_.dims[a] + 1) return true;
     }
     return false;
   }
 
-  void subdivide(const Domain& d, const std::array<Vec3, 4>& c, int depth) {
+  void subdivide(const Domain& d, const Corners& c, int depth) {
     if (outside_grid(c)) return;
     if (depth == kMaxDepth || small_enough(c, adjacency_)) {
-      out_.push_back(
-          {{GridPoint::of(c[0]), GridPoint::of(c[1]), GridPoint::of(c[2]), GridPoint::of(c[3])},
-           patch_});
+      out_.push_back({c, patch_});
       return;
     }
     // Split only the directions whose sides are too long: a sliver triangle then costs
     // its length, not its length squared. Each direction stays dyadic, so the points of a
     // shared side are nested and canonical (PatchSet::point).
-    const auto v = [&](int k) { return voxel_floor(c[k]); };
+    const auto v = [&](int k) { return voxel_floor(c[k].vec()); };
     const bool u_short = adjacent(v(0), v(1), adjacency_) && adjacent(v(3), v(2), adjacency_);
     const bool v_short = adjacent(v(0), v(3), adjacency_) && adjacent(v(1), v(2), adjacency_);
     const bool split_u = !u_short || v_short, split_v = !v_short || u_short;
     const double um = 0.5 * (d.u0 + d.u1), vm = 0.5 * (d.v0 + d.v1);
     if (split_u && split_v) {
-      const Vec3 b = at(um, d.v0), r = at(d.u1, vm), t = at(um, d.v1), l = at(d.u0, vm);
-      const Vec3 m = at(um, vm);
+      const GridPoint b = at(um, d.v0), r = at(d.u1, vm), t = at(um, d.v1), l = at(d.u0, vm);
+      const GridPoint m = at(um, vm);
       subdivide({d.u0, um, d.v0, vm}, {c[0], b, m, l}, depth + 1);
       subdivide({um, d.u1, d.v0, vm}, {b, c[1], r, m}, depth + 1);
       subdivide({um, d.u1, vm, d.v1}, {m, r, c[2], t}, depth + 1);
       subdivide({d.u0, um, vm, d.v1}, {l, m, t, c[3]}, depth + 1);
     } else if (split_u) {
-      const Vec3 b = at(um, d.v0), t = at(um, d.v1);
+      const GridPoint b = at(um, d.v0), t = at(um, d.v1);
       subdivide({d.u0, um, d.v0, d.v1}, {c[0], b, t, c[3]}, depth + 1);
       subdivide({um, d.u1, d.v0, d.v1}, {b, c[1], c[2], t}, depth + 1);
     } else {
-      const Vec3 r = at(d.u1, vm), l = at(d.u0, vm);
+      const GridPoint r = at(d.u1, vm), l = at(d.u0, vm);
       subdivide({d.u0, d.u1, d.v0, vm}, {c[0], c[1], r, l}, depth + 1);
       subdivide({d.u0, d.u1, vm, d.v1}, {l, r, c[2], c[3]}, depth + 1);
     }
@@ -94,7 +92,9 @@ VoxelIndex voxel_floor(Vec3 g) {
   return v;
 }
 
-bool small_enough(const std::array<Vec3, 4>& corner, int adjacency) {
+bool small_enough(const Corners& corners, int adjacency) {
+  const std::array<Vec3, 4> corner{corners[0].vec(), corners[1].vec(), corners[2].vec(),
+                                   corners[3].vec()};
   double extent = 0;
   for (int a = 0; a < 3; ++a) {
     const double lo = std::min({corner[0][a], corner[1][a], corner[2][a], corner[3][a]});

@@ -10,18 +10,20 @@
 
 namespace shadowkit::voxel {
 
+using Corners = std::array<GridPoint, 4>;
+
 /// \brief A leaf of the recursion: its four corners (grid units, in the patch's corner
 /// order) and its patch. Its corners' voxels are the voxelization; its two triangles
 /// (0, 1, 2) and (0, 2, 3) are what the topology test (§4.2) and the renderer (§5) draw.
 struct Subpatch {
-  std::array<GridPoint, 4> corner;
+  Corners corner;
   std::uint32_t patch = 0;
 };
 
 /// Whether the recursion stops at a subpatch with corners \p corner (grid units): their
 /// voxels are pairwise \p adjacency-adjacent, or the subpatch is far below a voxel in size
 /// (corners around a voxel vertex can sit in diagonal voxels at any scale).
-bool small_enough(const std::array<Vec3, 4>& corner, int adjacency);
+bool small_enough(const Corners& corners, int adjacency);
 
 /// The voxel of grid point \p g, unclamped (coordinates may lie outside the grid).
 VoxelIndex voxel_floor(Vec3 g);
