@@ -12,13 +12,11 @@ target_include_directories(shadowkit_stb SYSTEM INTERFACE ${STB_INCLUDE_DIR})
 
 # Debian 12's OpenSubdivConfig.cmake names a static library the package does not ship,
 # so the headers and libosdCPU.so are found directly.
-find_path(OPENSUBDIV_INCLUDE_DIR opensubdiv/far/topologyRefiner.h)
-find_library(OPENSUBDIV_CPU_LIBRARY NAMES osdCPU)
-if(OPENSUBDIV_INCLUDE_DIR AND OPENSUBDIV_CPU_LIBRARY)
-  add_library(shadowkit_opensubdiv INTERFACE)
-  target_include_directories(shadowkit_opensubdiv SYSTEM INTERFACE ${OPENSUBDIV_INCLUDE_DIR})
-  target_link_libraries(shadowkit_opensubdiv INTERFACE ${OPENSUBDIV_CPU_LIBRARY})
-endif()
+find_path(OPENSUBDIV_INCLUDE_DIR opensubdiv/far/topologyRefiner.h REQUIRED)
+find_library(OPENSUBDIV_CPU_LIBRARY NAMES osdCPU REQUIRED)
+add_library(shadowkit_opensubdiv INTERFACE)
+target_include_directories(shadowkit_opensubdiv SYSTEM INTERFACE ${OPENSUBDIV_INCLUDE_DIR})
+target_link_libraries(shadowkit_opensubdiv INTERFACE ${OPENSUBDIV_CPU_LIBRARY})
 
 if(SHADOWKIT_TESTS)
   find_package(GTest REQUIRED)

@@ -43,6 +43,11 @@ nlohmann::json scene_info(const Scene& scene) {
                             {"boundary_edges", m.boundary_edge_count()},
                             {"nonmanifold_edges", m.nonmanifold_edge_count()},
                             {"nonplanar_polygons_split", m.split_face_count()}});
+    if (o.subdivision) {
+      j["objects"].back()["subdivision"] = {{"scheme", "catmull-clark"},
+                                            {"control_faces", o.subdivision->control_face_count()},
+                                            {"patches", o.subdivision->patch_count()}};
+    }
   }
   j["closed_meshes"] = closed;
   j["open_meshes"] = scene.objects.size() - closed;
@@ -68,6 +73,13 @@ void print_info(const nlohmann::json& j) {
                 o["edges"].get<std::size_t>(), o["closed"].get<bool>() ? "yes" : "no",
                 o["manifold"].get<bool>() ? "yes" : "no", o["boundary_edges"].get<std::size_t>(),
                 o["nonmanifold_edges"].get<std::size_t>());
+  }
+  for (const auto& o : j.value("objects", nlohmann::json::array())) {
+    if (!o.contains("subdivision")) continue;
+    std::printf("%s: Catmull-Clark surface, %zu control faces, %zu patches\n",
+                o["name"].get<std::string>().c_str(),
+                o["subdivision"]["control_faces"].get<std::size_t>(),
+                o["subdivision"]["patches"].get<std::size_t>());
   }
 }
 

@@ -122,6 +122,36 @@ Plane plane_of(std::span<const Vec3> p, std::span<const std::uint32_t> loop, Vec
 
 }  // namespace
 
+PolygonSoup welded_soup(const PolygonSoup& soup) {
+  Bounds3 box;
+  for (const Vec3& p : soup.positions) box.add(p);
+  std::vector<Vec3> merged;
+  const std::vector<std::uint32_t> remap =
+      weld(soup.positions, box, kWeldTolerance * box.diagonal(), merged);
+  PolygonSoup out;
+  std::vector<std::vector<std::uint32_t>> loops;
+  std::vector<bool> used(merged.size(), false);
+  for (std::size_t f = 0; f < soup.face_count(); ++f) {
+    std::vector<std::uint32_t> loop;
+    for (std::uint32_t k = soup.face_start[f]; k < soup.face_start[f + 1]; ++k) {
+      loop.push_back(remap[soup.indices[k]]);
+      used[loop.back()] = true;
+    }
+    loops.push_back(remove_repeats(std::move(loop)));
+  }
+  // Used positions keep their order: a soup without duplicates keeps its numbering.
+  std::vector<std::uint32_t> compact(merged.size());
+  for (std::size_t v = 0; v < merged.size(); ++v) {
+    compact[v] = std::uint32_t(out.positions.size());
+    if (used[v]) out.positions.push_back(merged[v]);
+  }
+  for (std::vector<std::uint32_t>& loop : loops) {
+    for (std::uint32_t& v : loop) v = compact[v];
+    out.add_face(loop);
+  }
+  return out;
+}
+
 Mesh Mesh::build(const PolygonSoup& soup, const std::string& name, const Context& ctx) {
   Bounds3 box;
   for (const Vec3& p : soup.positions) box.add(p);

@@ -141,11 +141,69 @@ TEST_F(SceneFileTest, OverflowingTransformIsRejected) {
       HasSubstr("key 'camera.fov_y_deg': must lie between"));
 }
 
-TEST_F(SceneFileTest, SubdivisionSurfacesAreRefusedRatherThanDrawnWrong) {
+// The cube [0, 1]^3 as an OBJ control mesh, faces outward.
+constexpr const char* kCubeObj =
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+    "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
+
+std::string object(const std::string& keys) {
+  return R"({"mesh": "cube.obj", )" + keys + "}";
+}
+
+TEST_F(SceneFileTest, CatmullClarkObjectsAreTessellatedLimitSurfaces) {
+  write("cube.obj", kCubeObj);
+  const std::string camera = R"("position": [0, 4, 12], "look_at": [0, 0, 0])";
+  const std::string light = R"({"type": "point", "position": [3, 10, 4]})";
+  const Scene s = load_scene_file(
+      write("scene.json", scene(camera, light,
+                                object(R"("subdivision": "catmull-clark", "transform": {"scale": 2,
+                             "translate": [0, 1, 0]})") +
+                                    R"(, {"generator": "box", "subdivision": "catmull-clark",
+                            "tessellation": 2}, {"mesh": "ground.obj"})")),
+      quiet_);
+  ASSERT_EQ(s.objects.size(), 3u);
+  const SceneObject& cube = s.objects[0];
+  ASSERT_NE(cube.subdivision, nullptr);
+  EXPECT_EQ(cube.subdivision->patch_count(), 24u);
+  EXPECT_EQ(cube.mesh.face_count(), 24u * 8 * 8 * 2);  // 8 segments by default
+  EXPECT_TRUE(cube.mesh.closed());
+  // The transform moved the control points: the limit surface is the unit cube's, scaled
+  // by 2 about the origin and raised by 1, so its centre sits at (1, 2, 1).
+  const Bounds3 box = cube.mesh.bounds();
+  EXPECT_NEAR(box.center().x, 1, 1e-12);
+  EXPECT_NEAR(box.center().y, 2, 1e-12);
+  EXPECT_GT(box.lo.y, 1);
+  EXPECT_LT(box.hi.y, 3);
+  EXPECT_EQ(s.objects[1].mesh.face_count(), 24u * 2 * 2 * 2);
+  EXPECT_EQ(s.objects[2].subdivision, nullptr);
+}
+
+TEST_F(SceneFileTest, BadSubdivisionKeysAreRejected) {
+  write("cube.obj", kCubeObj);
+  const std::string camera = R"("position": [0, 4, 12], "look_at": [0, 0, 0])";
+  const std::string light = R"({"type": "point", "position": [3, 10, 4]})";
+  auto error = [&](const std::string& keys) {
+    return error_of(scene(camera, light, object(keys)));
+  };
+  EXPECT_THAT(error(R"("subdivision": "loop")"),
+              HasSubstr("key 'objects[0].subdivision': unknown scheme 'loop' (expected "
+                        "\"catmull-clark\")"));
+  EXPECT_THAT(error(R"("subdivision": true)"), HasSubstr("key 'objects[0].subdivision'"));
+  for (const char* bad : {"0", "2.5", "1000", "\"8\""}) {
+    EXPECT_THAT(error(std::string(R"("subdivision": "catmull-clark", "tessellation": )") + bad),
+                HasSubstr("key 'objects[0].tessellation'"));
+  }
+  EXPECT_THAT(error(R"("tessellation": 4)"),
+              HasSubstr("key 'objects[0].tessellation': applies only with \"subdivision\""));
+}
+
+TEST_F(SceneFileTest, BadControlMeshesNameTheFileAndObject) {
+  // A fourth face on the cube's edge from vertex 1 to vertex 2.
+  write("cube.obj", std::string(kCubeObj) + "v 0.5 -1 -1\nf 2 1 9\n");
   EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
                              R"({"type": "point", "position": [3, 10, 4]})",
-                             R"({"mesh": "ground.obj", "subdivision": "catmull-clark"})")),
-              HasSubstr("key 'objects[0].subdivision'"));
+                             object(R"("subdivision": "catmull-clark")"))),
+              HasSubstr("scene.json: key 'objects[0]' (cube): the control mesh is not manifold"));
 }
 
 TEST_F(SceneFileTest, TopLevelGeneratorTakesItsParametersFromTheFile) {

@@ -25,6 +25,11 @@ struct PolygonSoup {
   void append(const PolygonSoup& other);
 };
 
+/// The soup with positions merged as Mesh::build merges them (within 1e-9 of the bounding-box
+/// diagonal), unused positions dropped and repeated consecutive vertices removed from every
+/// face. Faces keep their order and count, even those left with fewer than three vertices.
+PolygonSoup welded_soup(const PolygonSoup& soup);
+
 /// \brief An undirected mesh edge and the faces around it.
 struct MeshEdge {
   std::uint32_t v0 = 0, v1 = 0;  ///< v0 < v1

@@ -24,9 +24,11 @@ struct SurfacePoint {
 /// \brief The limit surface of a Catmull-Clark control mesh: no creases, boundary edges and
 /// corners sharp (OpenSubdiv's VTX_BOUNDARY_EDGE_AND_CORNER), so an open mesh keeps its outline.
 ///
-/// Lai & Cheng (§2): a control mesh with a non-quad face, or a face with more than one
-/// extraordinary vertex, is subdivided once first. Every face of the resulting quad mesh is
-/// then one *patch* with parameters (u, v) in [0, 1]^2 and at most one extraordinary vertex.
+/// Lai & Cheng (§3): a control mesh with a non-quad face, or a face with more than one
+/// extraordinary vertex, is subdivided once first (the whole mesh, so that all patches are
+/// faces of one mesh). Every face of the resulting quad mesh is then one *patch* with
+/// parameters (u, v) in [0, 1]^2 and at most one extraordinary vertex: OpenSubdiv's ptex
+/// parameterisation of that face, u from corner 0 toward corner 1, v from corner 0 toward 3.
 class SubdivisionSurface {
  public:
   /// Builds the surface of \p control (world space). InputError naming \p name when the
@@ -34,6 +36,9 @@ class SubdivisionSurface {
   static std::shared_ptr<const SubdivisionSurface> build(const PolygonSoup& control,
                                                          const std::string& name);
 
+  /// Faces of the control mesh as given (after welding coincident positions).
+  std::size_t control_face_count() const;
+  /// Patches: the control faces, or the faces of the control mesh subdivided once.
   std::size_t patch_count() const;
   /// Exact limit position and first derivatives of \p patch at (u, v), both in [0, 1].
   SurfacePoint evaluate(std::uint32_t patch, double u, double v) const;
@@ -42,9 +47,11 @@ class SubdivisionSurface {
   /// share its two corner ids; the limit curve of a shared edge is the same from both sides.
   std::array<std::uint32_t, 4> patch_corners(std::uint32_t patch) const;
 
-  /// A crack-free tessellation: \p segments x \p segments quads per patch, every point on a
-  /// shared edge or corner evaluated once and shared by the patches around it.
-  /// \p face_patch, when given, receives the patch of each output face.
+  /// A crack-free tessellation: \p segments x \p segments cells per patch, uniform in (u, v),
+  /// each split into two triangles along its shorter diagonal, counter-clockwise in (u, v)
+  /// (the control mesh's orientation). Every point on a shared edge or corner is evaluated
+  /// once and shared by the patches around it, so a closed control mesh gives a closed mesh.
+  /// \p face_patch, when given, receives the patch of each output triangle.
   PolygonSoup tessellate(int segments, std::vector<std::uint32_t>* face_patch = nullptr) const;
 
   ~SubdivisionSurface();

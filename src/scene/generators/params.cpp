@@ -9,7 +9,8 @@ namespace shadowkit::generators {
 namespace {
 
 /// Keys of an object entry that the scene loader reads itself and passes through.
-constexpr std::string_view kLoaderKeys[] = {"generator", "name", "transform", "subdivision"};
+constexpr std::string_view kLoaderKeys[] = {"generator", "name", "transform", "subdivision",
+                                            "tessellation"};
 
 std::string type_name(const nlohmann::json& value) {
   return value.type_name();
