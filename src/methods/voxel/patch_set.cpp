@@ -1,5 +1,6 @@
 #include "patch_set.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace shadowkit::voxel {
@@ -30,10 +31,11 @@ int corner_of(double u, double v) {
 }  // namespace
 
 PatchSet::PatchSet(const Scene& scene) : scene_(&scene) {
-  const TriangleList& triangles = scene.triangles();
-  for (std::uint32_t t = 0; t < triangles.triangles.size(); ++t) {
-    const auto& [a, b, c] = triangles.triangles[t];
-    patches_.push_back({scene.object_of_face(triangles.triangle_face[t]), t, {a, b, c, c}});
+  add_triangles(scene);
+  // Surface corner ids follow the scene's position ids, one range per surface.
+  auto next_id = std::uint32_t(scene.triangles().positions.size());
+  for (const SceneObject& object : scene.objects) {
+    if (object.subdivision) add_surface(*object.subdivision, next_id);
   }
   for (std::uint32_t p = 0; p < patches_.size(); ++p) {
     const auto& ids = patches_[p].corner_ids;
@@ -42,6 +44,29 @@ PatchSet::PatchSet(const Scene& scene) : scene_(&scene) {
       side_owner_.try_emplace(side_key(ids[k], ids[(k + 1) % 4]), Owner{p, k});
     }
   }
+}
+
+void PatchSet::add_triangles(const Scene& scene) {
+  const TriangleList& triangles = scene.triangles();
+  for (std::uint32_t t = 0; t < triangles.triangles.size(); ++t) {
+    const SceneObject& object = scene.objects[scene.object_of_face(triangles.triangle_face[t])];
+    if (object.subdivision) continue;  // its tessellation; the surface itself is added
+    const auto& [a, b, c] = triangles.triangles[t];
+    patches_.push_back({nullptr, t, {a, b, c, c}});
+  }
+}
+
+void PatchSet::add_surface(const SubdivisionSurface& surface, std::uint32_t& next_id) {
+  std::uint32_t used = 0;
+  for (std::uint32_t p = 0; p < surface.patch_count(); ++p) {
+    std::array<std::uint32_t, 4> ids = surface.patch_corners(p);
+    for (std::uint32_t& id : ids) {
+      used = std::max(used, id + 1);
+      id += next_id;
+    }
+    patches_.push_back({&surface, p, ids});
+  }
+  next_id += used;
 }
 
 std::uint64_t PatchSet::side_key(std::uint32_t a, std::uint32_t b) {
@@ -68,6 +93,7 @@ Vec3 PatchSet::point(std::uint32_t patch, double u, double v) const {
 
 Vec3 PatchSet::evaluate(std::uint32_t patch, double u, double v) const {
   const Patch& p = patches_[patch];
+  if (p.surface) return p.surface->evaluate(p.index, u, v).position;
   const std::vector<Vec3>& positions = scene_->triangles().positions;
   const Vec3 a = positions[p.corner_ids[0]], b = positions[p.corner_ids[1]];
   const Vec3 c = positions[p.corner_ids[2]];

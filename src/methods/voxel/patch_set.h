@@ -1,8 +1,9 @@
 #pragma once
 // The scene as parametric patches (Lai & Cheng §3: voxelization works in each patch's
-// (u, v) domain). A polygon is a patch too: each triangle of the scene's triangulation is
-// the bilinear patch (a, b, c, c) with one collapsed edge, so non-convex polygons and
-// n-gons need no special case.
+// (u, v) domain). A Catmull-Clark object gives its surface's patches (the exact limit
+// surface, not its tessellation). A polygon is a patch too: each triangle of the scene's
+// triangulation is the bilinear patch (a, b, c, c) with one collapsed edge, so non-convex
+// polygons and n-gons need no special case.
 #include <array>
 #include <cstdint>
 #include <unordered_map>
@@ -16,7 +17,7 @@ namespace shadowkit::voxel {
 /// (1, 0), (1, 1), (0, 1). Ids are unique in the scene; two patches share a side exactly
 /// when they share its two corner ids.
 struct Patch {
-  std::uint32_t object = 0;
+  const SubdivisionSurface* surface = nullptr;  ///< null: a triangle
   std::uint32_t index = 0;  ///< triangle of Scene::triangles(), or patch of the surface
   std::array<std::uint32_t, 4> corner_ids{};
 };
@@ -44,6 +45,8 @@ class PatchSet {
   };
   Vec3 evaluate(std::uint32_t patch, double u, double v) const;
   static std::uint64_t side_key(std::uint32_t a, std::uint32_t b);
+  void add_triangles(const Scene& scene);
+  void add_surface(const SubdivisionSurface& surface, std::uint32_t& next_id);
 
   const Scene* scene_ = nullptr;
   std::vector<Patch> patches_;

@@ -67,6 +67,13 @@ INSTANTIATE_TEST_SUITE_P(Voxel, VoxelBuiltInScene,
                                            SceneCase{"three-lights", 0.5, 1.5},
                                            SceneCase{"table", 0.4, 4}));
 
+// Catmull-Clark objects (extraordinary vertices, an open box) over a subdivision ground.
+TEST(VoxelSubdivision, TheExampleSceneAgreesWithTheReference) {
+  const std::string path = std::string(SHADOWKIT_SOURCE_DIR) + "/examples/subdivision.json";
+  const Scene scene = reduced(load_scene(path, {}));
+  EXPECT_LE(worst_interior_mismatch(scene, "voxel", voxel_options({{"resolution", "128"}})), 0.5);
+}
+
 // Fig. 1: a plane lit at a grazing angle (3 degrees). Every point of it is lit; a depth
 // image without bias puts most of it in shadow, the voxel tests do not.
 TEST(VoxelFigure1, APlaneLitAtAGrazingAngleStaysLit) {
@@ -74,7 +81,7 @@ TEST(VoxelFigure1, APlaneLitAtAGrazingAngleStaysLit) {
                                           {testing::directional_light({1, -0.0524, 0.2})},
                                           {testing::horizontal_quad(-10, 10, -10, 10, 0)});
   for (const char* test : {"topology", "offset"}) {
-    VoxelMethod voxel(voxel_options({{"test", test}}));
+    VoxelMethod voxel(voxel_options({{"resolution", "128"}, {"test", test}}));
     EXPECT_GE(lit_fraction(voxel, scene, 0), 0.999) << test;
   }
   const auto shadow_map = make_method(
@@ -88,9 +95,9 @@ TEST(VoxelFigure1, APlaneLitAtAGrazingAngleStaysLit) {
 TEST(VoxelDegenerate, LightInAFacesPlane) {
   const Scene scene = testing::square_over_plane(testing::camera({0, 6, 8}, {0, 0, 0}, 160, 90),
                                                  testing::point_light({3, 0, 0}));
-  VoxelMethod voxel({});
+  VoxelMethod voxel(voxel_options({{"resolution", "64"}}));
   EXPECT_EQ(lit_fraction(voxel, scene, 0), 0.0);
-  EXPECT_EQ(worst_interior_mismatch(scene, "voxel"), 0.0);
+  EXPECT_EQ(worst_interior_mismatch(scene, "voxel", voxel_options({{"resolution", "64"}})), 0.0);
 }
 
 // The square over the plane (open meshes) at 1e-6 and 1e6 times its size: the grid is
@@ -102,7 +109,8 @@ TEST(VoxelDegenerate, TinyAndHugeCoordinates) {
         {testing::point_light(Vec3{0.3, 4, 0.2} * scale)},
         {testing::horizontal_quad(-10 * scale, 10 * scale, -10 * scale, 10 * scale, 0),
          testing::horizontal_quad(-scale, scale, -scale, scale, scale)});
-    EXPECT_LE(worst_interior_mismatch(scene, "voxel"), 0.3) << scale;
+    EXPECT_LE(worst_interior_mismatch(scene, "voxel", voxel_options({{"resolution", "128"}})), 0.3)
+        << scale;
   }
 }
 
