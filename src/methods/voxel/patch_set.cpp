@@ -6,23 +6,26 @@
 namespace shadowkit::voxel {
 namespace {
 
-// (u, v) of corner k, and of the point at parameter t along side s (from corner s).
+// (u, v) of corner k.
 constexpr std::array<std::array<double, 2>, 4> kCornerUv{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
 
-std::array<double, 2> side_uv(int side, double t) {
+}  // namespace
+
+std::array<double, 2> PatchSet::side_uv(int side, double t) {
   const auto& a = kCornerUv[side];
   const auto& b = kCornerUv[(side + 1) % 4];
   // Dyadic t: the coordinates come out exact (one of them is constant along the side).
   return {a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t};
 }
 
-// The side (and the parameter along it) on which a boundary point (u, v) lies.
-std::pair<int, double> side_of(double u, double v) {
+std::pair<int, double> PatchSet::side_of(double u, double v) {
   if (v == 0) return {0, u};
   if (u == 1) return {1, v};
   if (v == 1) return {2, 1 - u};
   return {3, 1 - v};
 }
+
+namespace {
 
 int corner_of(double u, double v) {
   return u == 0 ? (v == 0 ? 0 : 3) : (v == 0 ? 1 : 2);
@@ -34,8 +37,8 @@ PatchSet::PatchSet(const Scene& scene) : scene_(&scene) {
   add_triangles(scene);
   // Surface corner ids follow the scene's position ids, one range per surface.
   auto next_id = std::uint32_t(scene.triangles().positions.size());
-  for (const SceneObject& object : scene.objects) {
-    if (object.subdivision) add_surface(*object.subdivision, next_id);
+  for (std::uint32_t o = 0; o < scene.objects.size(); ++o) {
+    if (scene.objects[o].subdivision) add_surface(o, *scene.objects[o].subdivision, next_id);
   }
   for (std::uint32_t p = 0; p < patches_.size(); ++p) {
     const auto& ids = patches_[p].corner_ids;
@@ -49,14 +52,15 @@ PatchSet::PatchSet(const Scene& scene) : scene_(&scene) {
 void PatchSet::add_triangles(const Scene& scene) {
   const TriangleList& triangles = scene.triangles();
   for (std::uint32_t t = 0; t < triangles.triangles.size(); ++t) {
-    const SceneObject& object = scene.objects[scene.object_of_face(triangles.triangle_face[t])];
-    if (object.subdivision) continue;  // its tessellation; the surface itself is added
+    const std::uint32_t object = scene.object_of_face(triangles.triangle_face[t]);
+    if (scene.objects[object].subdivision) continue;  // its tessellation; the surface is added
     const auto& [a, b, c] = triangles.triangles[t];
-    patches_.push_back({nullptr, t, {a, b, c, c}});
+    patches_.push_back({object, nullptr, t, {a, b, c, c}});
   }
 }
 
-void PatchSet::add_surface(const SubdivisionSurface& surface, std::uint32_t& next_id) {
+void PatchSet::add_surface(std::uint32_t object, const SubdivisionSurface& surface,
+                           std::uint32_t& next_id) {
   std::uint32_t used = 0;
   for (std::uint32_t p = 0; p < surface.patch_count(); ++p) {
     std::array<std::uint32_t, 4> ids = surface.patch_corners(p);
@@ -64,7 +68,7 @@ void PatchSet::add_surface(const SubdivisionSurface& surface, std::uint32_t& nex
       used = std::max(used, id + 1);
       id += next_id;
     }
-    patches_.push_back({&surface, p, ids});
+    patches_.push_back({object, &surface, p, ids});
   }
   next_id += used;
 }
@@ -89,6 +93,16 @@ Vec3 PatchSet::point(std::uint32_t patch, double u, double v) const {
   const bool same_way = patches_[o.patch].corner_ids[o.side] == from;
   const auto uv = side_uv(o.side, same_way ? t : 1 - t);
   return evaluate(o.patch, uv[0], uv[1]);
+}
+
+double PatchSet::canonical_t(std::uint32_t patch, int side, double t) const {
+  const auto& ids = patches_[patch].corner_ids;
+  return ids[side] <= ids[(side + 1) % 4] ? t : 1 - t;
+}
+
+std::uint64_t PatchSet::side_id(std::uint32_t patch, int side) const {
+  const auto& ids = patches_[patch].corner_ids;
+  return side_key(ids[side], ids[(side + 1) % 4]);
 }
 
 Vec3 PatchSet::evaluate(std::uint32_t patch, double u, double v) const {

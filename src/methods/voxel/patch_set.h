@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "shadowkit/scene/scene.h"
@@ -17,6 +18,7 @@ namespace shadowkit::voxel {
 /// (1, 0), (1, 1), (0, 1). Ids are unique in the scene; two patches share a side exactly
 /// when they share its two corner ids.
 struct Patch {
+  std::uint32_t object = 0;
   const SubdivisionSurface* surface = nullptr;  ///< null: a triangle
   std::uint32_t index = 0;  ///< triangle of Scene::triangles(), or patch of the surface
   std::array<std::uint32_t, 4> corner_ids{};
@@ -37,6 +39,17 @@ class PatchSet {
   const Patch& operator[](std::size_t i) const { return patches_[i]; }
   /// The world position of \p patch at (u, v) in [0, 1]^2, canonical on sides and corners.
   Vec3 point(std::uint32_t patch, double u, double v) const;
+  /// The side's parameter measured from its lower corner id (the canonical direction) for
+  /// parameter \p t measured from corner \p side of \p patch, and back: the same map.
+  double canonical_t(std::uint32_t patch, int side, double t) const;
+  /// The key of the side of \p patch from corner \p side to the next, shared by every
+  /// patch with that side.
+  std::uint64_t side_id(std::uint32_t patch, int side) const;
+
+  /// (u, v) at parameter \p t along side \p side (from corner side to corner side + 1).
+  static std::array<double, 2> side_uv(int side, double t);
+  /// The side a boundary point (u, v) lies on and its parameter along it.
+  static std::pair<int, double> side_of(double u, double v);
 
  private:
   struct Owner {
@@ -46,7 +59,7 @@ class PatchSet {
   Vec3 evaluate(std::uint32_t patch, double u, double v) const;
   static std::uint64_t side_key(std::uint32_t a, std::uint32_t b);
   void add_triangles(const Scene& scene);
-  void add_surface(const SubdivisionSurface& surface, std::uint32_t& next_id);
+  void add_surface(std::uint32_t object, const SubdivisionSurface& surface, std::uint32_t& next_id);
 
   const Scene* scene_ = nullptr;
   std::vector<Patch> patches_;

@@ -35,6 +35,7 @@ class VoxelMethod final : public ShadowMethod {
   MethodCounters counters() const override;
 
   const voxel::CubicFrameBuffer& frame_buffer() const { return buffer_; }
+  int adjacency() const { return adjacency_; }
   const std::vector<voxel::Subpatch>& subpatches() const { return leaves_; }
   /// The state at world point \p p: its voxel's, or for an empty voxel (the voxelization
   /// marks only subpatch corners) the nearest non-empty voxel's within two voxels.

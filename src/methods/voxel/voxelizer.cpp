@@ -15,15 +15,12 @@ constexpr int kMaxDepth = 40;
 // Coordinates of voxel_floor() are clamped here, far outside any grid (M <= 2^12).
 constexpr double kFarVoxel = 1 << 20;
 
-struct Domain {
-  double u0, u1, v0, v1;
-};
-
 class PatchVoxelizer {
  public:
+  using LeafFn = std::function<void(const Subpatch&, const Domain&)>;
   PatchVoxelizer(const PatchSet& patches, std::uint32_t patch, const VoxelGrid& grid, int adjacency,
-                 std::vector<Subpatch>& out)
-      : patches_(patches), patch_(patch), grid_(grid), adjacency_(adjacency), out_(out) {}
+                 const LeafFn& leaf)
+      : patches_(patches), patch_(patch), grid_(grid), adjacency_(adjacency), leaf_(leaf) {}
 
   void run() { subdivide({0, 1, 0, 1}, {at(0, 0), at(1, 0), at(1, 1), at(0, 1)}, 0); }
 
@@ -48,7 +45,7 @@ class PatchVoxelizer {
   void subdivide(const Domain& d, const Corners& c, int depth) {
     if (outside_grid(c)) return;
     if (depth == kMaxDepth || small_enough(c, adjacency_)) {
-      out_.push_back({c, patch_});
+      leaf_({c, patch_}, d);
       return;
     }
     // Split only the directions whose sides are too long: a sliver triangle then costs
@@ -81,10 +78,16 @@ class PatchVoxelizer {
   std::uint32_t patch_;
   const VoxelGrid& grid_;
   int adjacency_;
-  std::vector<Subpatch>& out_;
+  const LeafFn& leaf_;
 };
 
 }  // namespace
+
+void voxelize_patch(const PatchSet& patches, std::uint32_t patch, const VoxelGrid& grid,
+                    int adjacency,
+                    const std::function<void(const Subpatch&, const Domain&)>& leaf) {
+  PatchVoxelizer(patches, patch, grid, adjacency, leaf).run();
+}
 
 VoxelIndex voxel_floor(Vec3 g) {
   VoxelIndex v;
@@ -113,7 +116,8 @@ bool small_enough(const Corners& corners, int adjacency) {
 std::vector<Subpatch> voxelize(const PatchSet& patches, const VoxelGrid& grid, int adjacency) {
   std::vector<std::vector<Subpatch>> per_patch(patches.size());
   tbb::parallel_for(std::size_t(0), patches.size(), [&](std::size_t p) {
-    PatchVoxelizer(patches, std::uint32_t(p), grid, adjacency, per_patch[p]).run();
+    voxelize_patch(patches, std::uint32_t(p), grid, adjacency,
+                   [&](const Subpatch& leaf, const Domain&) { per_patch[p].push_back(leaf); });
   });
   std::size_t total = 0;
   for (const auto& leaves : per_patch) total += leaves.size();

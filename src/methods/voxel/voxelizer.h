@@ -3,6 +3,7 @@
 // space, until the voxels of a subpatch's four corners are N-adjacent.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "patch_set.h"
@@ -24,6 +25,16 @@ struct Subpatch {
 /// voxels are pairwise \p adjacency-adjacent, or the subpatch is far below a voxel in size
 /// (corners around a voxel vertex can sit in diagonal voxels at any scale).
 bool small_enough(const Corners& corners, int adjacency);
+
+/// \brief A leaf's rectangle [u0, u1] x [v0, v1] in its patch's parameter space (dyadic).
+struct Domain {
+  double u0, u1, v0, v1;
+};
+
+/// Runs the recursion over \p patch, calling \p leaf with every leaf that reaches \p grid,
+/// always in the same order: §5 renders by running it again.
+void voxelize_patch(const PatchSet& patches, std::uint32_t patch, const VoxelGrid& grid,
+                    int adjacency, const std::function<void(const Subpatch&, const Domain&)>& leaf);
 
 /// The voxel of grid point \p g, unclamped (coordinates may lie outside the grid).
 VoxelIndex voxel_floor(Vec3 g);
