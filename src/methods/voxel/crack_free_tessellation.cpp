@@ -59,8 +59,9 @@ class Tessellator {
     };
     const double lo = std::min(from[axis], to[axis]), hi = std::max(from[axis], to[axis]);
     if (fixed == 0 || fixed == 1) {
-      // On the patch's own side S: the shared list, in canonical parameters.
-      const auto [side, t_from] = PatchSet::side_of(from[0], from[1]);
+      // On the patch's own side: the shared list, in canonical parameters. (The side comes
+      // from the line, not from an end point, which may be a corner of two sides.)
+      const int side = axis == 0 ? (fixed == 0 ? 0 : 2) : (fixed == 0 ? 3 : 1);
       const auto it = sides_.find(patches_.side_id(leaf.patch, side));
       if (it == sides_.end()) return out;  // nothing evaluated between the patch's corners
       for (const double tc : it->second) {
@@ -74,6 +75,10 @@ class Tessellator {
         keep(*it);
       }
     }
+    // Ascending in the varying coordinate (a patch side's parameter may run either way),
+    // then in the side's own direction.
+    std::sort(out.begin(), out.end(),
+              [axis](const auto& p, const auto& q) { return p[axis] < q[axis]; });
     if (from[axis] > to[axis]) std::reverse(out.begin(), out.end());
     return out;
   }
