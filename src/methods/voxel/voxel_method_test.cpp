@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <cstdio>
 #include <map>
+#include <ostream>
 #include <string>
 
 #include "../../testing/method_testing.h"
@@ -46,6 +48,10 @@ struct SceneCase {
   double topology_pct, offset_pct;  // tolerated interior mismatch at M = 128
 };
 
+void PrintTo(const SceneCase& c, std::ostream* os) {
+  *os << c.scene;
+}
+
 class VoxelBuiltInScene : public ::testing::TestWithParam<SceneCase> {};
 
 TEST_P(VoxelBuiltInScene, AgreesWithTheReference) {
@@ -65,7 +71,14 @@ INSTANTIATE_TEST_SUITE_P(Voxel, VoxelBuiltInScene,
                                            SceneCase{"cubes:125", 1, 8},
                                            SceneCase{"tetra:3", 0.3, 1}, SceneCase{"room", 0.1, 3},
                                            SceneCase{"three-lights", 0.5, 1.5},
-                                           SceneCase{"table", 0.4, 4}));
+                                           SceneCase{"table", 0.4, 4}),
+                         [](const ::testing::TestParamInfo<SceneCase>& info) {
+                           std::string name = info.param.scene;
+                           for (char& c : name) {
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           }
+                           return name;
+                         });
 
 // Catmull-Clark objects (extraordinary vertices, an open box) over a subdivision ground.
 TEST(VoxelSubdivision, TheExampleSceneAgreesWithTheReference) {
