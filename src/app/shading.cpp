@@ -9,7 +9,11 @@
 namespace shadowkit {
 namespace {
 
-constexpr double kAmbient = 0.18;
+std::uint8_t to_byte(double v) {
+  return std::uint8_t(std::lround(255.0 * std::clamp(v, 0.0, 1.0)));
+}
+
+}  // namespace
 
 Vec3 object_colour(std::uint32_t object) {
   static constexpr std::array<Vec3, 8> palette{{{0.85, 0.82, 0.75},
@@ -23,11 +27,9 @@ Vec3 object_colour(std::uint32_t object) {
   return palette[object % palette.size()];
 }
 
-std::uint8_t to_byte(double v) {
-  return std::uint8_t(std::lround(255.0 * std::clamp(v, 0.0, 1.0)));
+Rgb8 to_rgb8(Vec3 c) {
+  return {to_byte(c.x), to_byte(c.y), to_byte(c.z)};
 }
-
-}  // namespace
 
 Image<Rgb8> shade_image(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
                         const std::vector<const ShadowMask*>& masks) {
@@ -47,8 +49,7 @@ Image<Rgb8> shade_image(const Scene& scene, const VisibleSurfaceBuffer& surfaces
         if (masks[l]->pixels[i] != kMaskLit) continue;
         light += diffuse_share * std::max(0.0, dot(n, scene.lights[l].direction_to(p)));
       }
-      const Vec3 c = object_colour(surfaces.object(i)) * light;
-      image.pixels[i] = {to_byte(c.x), to_byte(c.y), to_byte(c.z)};
+      image.pixels[i] = to_rgb8(object_colour(surfaces.object(i)) * light);
     }
   });
   return image;

@@ -136,6 +136,21 @@ TEST_F(Cli, BadInputIsOneLineAndExitStatusTwo) {
   expect_bad_input("bench", "SCENE");
 }
 
+TEST_F(Cli, VoxelRenderWritesBothViews) {
+  write("ground.obj", kGround);
+  const std::string args = "voxel-render " + scene(R"({"mesh": "ground.obj"})").string() +
+                           " --set voxel.resolution=32 --image " + (dir_ / "a.png").string() +
+                           " --turned-image " + (dir_ / "b.png").string();
+  const Result r = run(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("no shadow work"));
+  EXPECT_TRUE(fs::exists(dir_ / "a.png"));
+  EXPECT_TRUE(fs::exists(dir_ / "b.png"));
+  expect_bad_input(
+      "voxel-render square --set voxel.resolution=30 --image " + (dir_ / "c.png").string(),
+      "voxel.resolution");
+}
+
 TEST_F(Cli, FragmentsWritesPlyAndAreasThatSumToEachPolygon) {
   const fs::path ply = dir_ / "square.ply";
   const Result r = run("fragments square --threads 1 --out " + ply.string());

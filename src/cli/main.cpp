@@ -90,6 +90,16 @@ int main(int argc, char** argv) {
   fragments_cmd->add_option("--out", fragments.out, "PLY file; areas per polygon go to F.json")
       ->required();
 
+  VoxelRenderOptions voxel_render;
+  auto* voxel_render_cmd = app.add_subcommand(
+      "voxel-render", "voxel: the subpatches shaded from the cubic frame buffer (Lai & Cheng §5)");
+  add_shared(voxel_render_cmd, voxel_render, shared);
+  voxel_render_cmd->add_option("--image", voxel_render.image, "PNG file")->required();
+  voxel_render_cmd->add_option("--turned-image", voxel_render.turned_image,
+                               "PNG file of a second view, with no new shadow work");
+  voxel_render_cmd->add_option("--turn", voxel_render.turn_deg,
+                               "degrees the second view turns around the camera's target");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -123,6 +133,10 @@ int main(int argc, char** argv) {
     if (*fragments_cmd) {
       fragments.settings = settings;
       return run_fragments(fragments, ctx);
+    }
+    if (*voxel_render_cmd) {
+      voxel_render.settings = settings;
+      return run_voxel_render(voxel_render, ctx);
     }
     info.settings = settings;
     return run_info(info, ctx);

@@ -5,11 +5,12 @@
 #include "shadowmap/shadow_map_method.h"
 #include "svbsp/svbsp_method.h"
 #include "volume/volume_method.h"
+#include "voxel/voxel_method.h"
 
 namespace shadowkit {
 
 std::vector<std::string> method_names() {
-  return {"raytrace", "shadowmap", "volume", "svbsp", "angular"};
+  return {"raytrace", "shadowmap", "volume", "svbsp", "angular", "voxel"};
 }
 
 std::unique_ptr<ShadowMethod> make_method(std::string_view name, const MethodOptions& options) {
@@ -18,6 +19,7 @@ std::unique_ptr<ShadowMethod> make_method(std::string_view name, const MethodOpt
   if (name == "volume") return std::make_unique<VolumeMethod>(options);
   if (name == "svbsp") return std::make_unique<SvbspMethod>(options);
   if (name == "angular") return std::make_unique<AngularMethod>(options);
+  if (name == "voxel") return std::make_unique<VoxelMethod>(options);
   std::string list;
   for (const auto& m : method_names()) list += (list.empty() ? "" : ", ") + m;
   throw InputError("method '" + std::string(name) + "'",

@@ -40,6 +40,14 @@ struct FragmentsOptions : CommandOptions {
   std::string out;  ///< the PLY file; the areas go to the same path with extension .json
 };
 
+/// \brief voxel's own image (Lai & Cheng §5): the subpatches shaded from the cubic frame
+/// buffer, optionally a second view turned around the camera's target.
+struct VoxelRenderOptions : CommandOptions {
+  std::string image;
+  std::string turned_image;  ///< empty: no second view
+  double turn_deg = 30;
+};
+
 /// Parses "method.key=value" settings into per-method options; InputError if malformed.
 std::map<std::string, MethodOptions> parse_settings(const std::vector<std::string>& settings);
 
@@ -48,5 +56,6 @@ int run_compare(const CompareOptions& options, const Context& ctx);
 int run_bench(const BenchOptions& options, const Context& ctx);
 int run_info(const CommandOptions& options, const Context& ctx);
 int run_fragments(const FragmentsOptions& options, const Context& ctx);
+int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx);
 
 }  // namespace shadowkit

@@ -1,0 +1,30 @@
+#pragma once
+// Lai & Cheng §5.3: the subpatches of the voxelization as polygons without cracks. Each
+// side of a subpatch is replaced by the polyline of every point evaluated on it (by the
+// subpatch or by finer neighbours, in its patch or across a shared patch side), and the
+// polygon is triangulated by a zigzag between its two chains from corner 0 to corner 2.
+#include <cstdint>
+#include <vector>
+
+#include "patch_set.h"
+#include "shadowkit/scene/mesh.h"
+#include "voxelizer.h"
+
+namespace shadowkit::voxel {
+
+/// \brief Triangles in world space and, per triangle, its subpatch: the index in
+/// voxelize()'s order (the recursion is run again and visits the same leaves).
+struct SubpatchTessellation {
+  PolygonSoup triangles;
+  std::vector<std::uint32_t> leaf;
+};
+
+SubpatchTessellation tessellate_subpatches(const PatchSet& patches, const VoxelGrid& grid,
+                                           int adjacency);
+
+/// The zigzag of §5.3 between chains \p a and \p b that both run from corner 0 to corner 2
+/// (a along sides 0 and 1, b along sides 3 and 2), as index triples into a then b
+/// (b's points numbered after a's), counter-clockwise in (u, v).
+std::vector<std::array<std::uint32_t, 3>> zigzag(std::size_t a, std::size_t b);
+
+}  // namespace shadowkit::voxel

@@ -1,0 +1,129 @@
+#include "shadow_determination.h"
+
+#include <tbb/parallel_for.h>
+
+#include <cmath>
+#include <optional>
+
+#include "light_projection.h"
+#include "projection_entries.h"
+#include "ray_triangle.h"
+
+namespace shadowkit::voxel {
+namespace {
+
+// §4.1: the move off the surface, in voxels.
+const double kOffset = std::sqrt(2.0);
+// §4.2: hits nearer than this (voxels) to the sample are its own surface around it.
+constexpr double kSelfHit = 1e-3;
+// Half a voxel: the footprint of a voxel on the plane for "nearest the light is lit".
+constexpr double kNoHoles = 0.5;
+constexpr double kOffsetEntriesPerVoxel = 2;
+
+// §4.1: move the voxel A (its centre) by sqrt(2) r along its subpatch's normal, to the light's side
+// (surfaces are two-sided: the side facing the camera away from the light is shadowed by contract
+// condition 1 at the mask, which plays the part of the paper's N . (L - A) <= 0), and
+// test the moved point A' against the nearest voxel of its entry. A' is projected along
+// the beam through A: its sideways move picks the entry, its move along the beam only
+// its distance.
+bool offset_test_shadowed(const LightProjection& projection, const NearestVoxels& nearest,
+                          const Subpatch& leaf, Vec3 a) {
+  const Vec3 to_light = projection.toward_light(a);
+  Vec3 n = leaf_normal(leaf);
+  const double facing = dot(n, to_light);
+  if (facing == 0) return true;  // the light in the subpatch's plane
+  if (facing < 0) n = -n;
+  const Vec3 move = n * kOffset;
+  const double along = dot(move, to_light);
+  const Vec3 sideways = a + move - to_light * along;
+  const auto blocker = nearest.nearest(projection.entry(sideways));
+  return blocker && *blocker < projection.distance(a) - along;
+}
+
+// §4.2: the ray from the sample to the light against the two triangles of every subpatch
+// listed, nearer than the sample, in the entry where that ray projects.
+bool topology_test_shadowed(const LightProjection& projection, const BlockingSubpatches& lists,
+                            const std::vector<Subpatch>& leaves, Vec3 a) {
+  const Vec3 direction = projection.to_light(a);
+  const double reach = length(direction);
+  if (reach == 0) return false;
+  const RaySegment ray{a, direction, kSelfHit / reach, 1};
+  const double distance = projection.distance(a);
+  for (const auto& record : lists.list(projection.entry(a))) {
+    if (record.distance >= distance) break;
+    const auto& c = leaves[record.leaf].corner;
+    if (ray_hits_triangle(ray, c[0].vec(), c[1].vec(), c[2].vec()) ||
+        ray_hits_triangle(ray, c[0].vec(), c[2].vec(), c[3].vec())) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The sample that stands for voxel \p i: the one whose subpatch faces the light most
+// (normals follow the patches' vertex order). Where a lit face and one turned away share
+// a voxel (a closed mesh's edge), the voxel is then decided for the lit face; the other
+// is shadowed anyway by condition 1 at the mask.
+std::uint32_t facing_sample(const LightProjection& projection, const std::vector<Subpatch>& leaves,
+                            const SurfaceVoxels& voxels, std::size_t i) {
+  std::uint32_t best = voxels.samples[voxels.first_sample[i]];
+  double best_facing = -INFINITY;
+  for (std::uint32_t k = voxels.first_sample[i]; k < voxels.first_sample[i + 1]; ++k) {
+    const std::uint32_t s = voxels.samples[k];
+    const double facing =
+        dot(leaf_normal(leaves[s / 4]), projection.toward_light(sample_point(leaves, s)));
+    if (facing > best_facing) best = s, best_facing = facing;
+  }
+  return best;
+}
+
+}  // namespace
+
+ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatch>& leaves,
+                                   const SurfaceVoxels& voxels, ShadowTest test,
+                                   CubicFrameBuffer& buffer) {
+  // §4.1 compares a point moved by sqrt(2) voxels with voxels' footprints: entries of half
+  // a voxel keep a lit plane's own voxels out of the moved point's entry at grazing angles.
+  const LightProjection projection(light, buffer.grid(),
+                                   test == ShadowTest::offset ? kOffsetEntriesPerVoxel : 1.0);
+  const VoxelKeys& keys = buffer.keys();
+  // Project the voxel centres once.
+  std::vector<Vec3> centres(voxels.size());
+  std::vector<std::uint64_t> entries(voxels.size());
+  std::vector<float> distances(voxels.size());
+  tbb::parallel_for(std::size_t(0), voxels.size(), [&](std::size_t i) {
+    centres[i] = VoxelGrid::center(keys.voxel(voxels.keys[i]));
+    entries[i] = projection.entry(centres[i]);
+    distances[i] = float(projection.distance(centres[i]));
+  });
+  const NearestVoxels nearest(projection, centres, distances, kNoHoles);
+  std::optional<BlockingSubpatches> lists;
+  if (test == ShadowTest::topology) lists.emplace(projection, leaves);
+
+  std::vector<VoxelState> states(voxels.size(), VoxelState::lit);
+  std::vector<std::uint8_t> uncertain(voxels.size(), 0);
+  tbb::parallel_for(std::size_t(0), voxels.size(), [&](std::size_t i) {
+    if (distances[i] <= *nearest.nearest(entries[i])) return;  // nearest: lit
+    uncertain[i] = 1;
+    const std::uint32_t sample = facing_sample(projection, leaves, voxels, i);
+    const bool shadowed =
+        test == ShadowTest::offset
+            ? offset_test_shadowed(projection, nearest, leaves[sample / 4], centres[i])
+            : topology_test_shadowed(projection, *lists, leaves, sample_point(leaves, sample));
+    states[i] = shadowed ? VoxelState::shadowed : VoxelState::lit;
+  });
+
+  ShadowStatistics stats;
+  stats.entries = nearest.entry_count();
+  stats.blocker_records = lists ? lists->record_count() : 0;
+  stats.peak_bytes = voxels.size() * (sizeof(Vec3) + sizeof(std::uint64_t) + sizeof(float) + 2) +
+                     (lists ? lists->memory_bytes() : 0);
+  for (std::size_t i = 0; i < voxels.size(); ++i) {
+    stats.uncertain += uncertain[i];
+    stats.shadowed += states[i] == VoxelState::shadowed;
+    buffer.set(voxels.keys[i], states[i]);
+  }
+  return stats;
+}
+
+}  // namespace shadowkit::voxel

@@ -1,0 +1,120 @@
+#include "subpatch_render.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "shadowkit/app/shading.h"
+#include "shadowkit/core/error.h"
+#include "shadowkit/raster/visible_surface.h"
+
+namespace shadowkit::voxel {
+namespace {
+
+constexpr double kHighlight = 0.25;
+constexpr double kShininess = 32;
+
+}  // namespace
+
+CornerShading corner_shading(int shadowed_corners) {
+  if (shadowed_corners >= 4) return {0, false};
+  return {1.0 / double(1 << shadowed_corners), shadowed_corners == 0};
+}
+
+std::vector<std::uint8_t> shadowed_corners(const std::vector<Subpatch>& leaves,
+                                           const CubicFrameBuffer& buffer) {
+  std::vector<std::uint8_t> counts(leaves.size());
+  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t l) {
+    int n = 0;
+    for (const GridPoint& c : leaves[l].corner) {
+      n += buffer.state(voxel_floor(c.vec())) == VoxelState::shadowed;
+    }
+    counts[l] = std::uint8_t(n);
+  });
+  return counts;
+}
+
+SubpatchImage::SubpatchImage(const Scene& scene, const PatchSet& patches,
+                             const std::vector<Subpatch>& leaves_in_order,
+                             const SubpatchTessellation& tessellation,
+                             std::vector<std::vector<std::uint8_t>> shadowed_per_light)
+    : shadowed_(std::move(shadowed_per_light)) {
+  view_.name = scene.name;
+  view_.lights = scene.lights;
+  // One object per scene object, so that colours follow the objects.
+  std::vector<PolygonSoup> soups(scene.objects.size());
+  std::vector<std::vector<std::uint32_t>> leaves(scene.objects.size());
+  const PolygonSoup& all = tessellation.triangles;
+  for (std::size_t t = 0; t < tessellation.leaf.size(); ++t) {
+    const std::uint32_t leaf = tessellation.leaf[t];
+    const std::uint32_t object = patches[leaves_in_order[leaf].patch].object;
+    PolygonSoup& soup = soups[object];
+    const auto first = std::uint32_t(soup.positions.size());
+    for (std::uint32_t k = all.face_start[t]; k < all.face_start[t + 1]; ++k) {
+      soup.positions.push_back(all.positions[all.indices[k]]);
+    }
+    soup.add_face({first, first + 1, first + 2});
+    leaves[object].push_back(leaf);
+  }
+  Context quiet;
+  quiet.warn = [](const std::string&) {};
+  for (std::size_t o = 0; o < soups.size(); ++o) {
+    view_.objects.push_back(
+        {scene.objects[o].name, Mesh::build(soups[o], scene.objects[o].name, quiet), 0, nullptr});
+    // Triangles without area were left out by the tessellation: none is dropped here.
+    SHADOWKIT_CHECK(view_.objects.back().mesh.face_count() == leaves[o].size());
+    leaf_.insert(leaf_.end(), leaves[o].begin(), leaves[o].end());
+  }
+  view_.finalize();
+}
+
+SubpatchImage make_subpatch_image(const Scene& scene, VoxelMethod& method, const Context& ctx) {
+  method.prepare(scene, ctx);
+  std::vector<std::vector<std::uint8_t>> shadowed;
+  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+    method.build(scene, l, ctx);
+    shadowed.push_back(shadowed_corners(method.subpatches(), method.frame_buffer()));
+  }
+  const PatchSet patches(scene);
+  const SubpatchTessellation tessellation =
+      tessellate_subpatches(patches, method.frame_buffer().grid(), method.adjacency());
+  return SubpatchImage(scene, patches, method.subpatches(), tessellation, std::move(shadowed));
+}
+
+Image<Rgb8> SubpatchImage::render(const Camera& camera) const {
+  Scene view = view_;
+  view.camera = camera;
+  const VisibleSurfaceBuffer surfaces = render_visible_surfaces(view, {});
+  Image<Rgb8> image(surfaces.width, surfaces.height, Rgb8{24, 26, 32});
+  const double diffuse_share =
+      (1.0 - kAmbient) / double(std::max<std::size_t>(1, shadowed_.size()));
+  tbb::parallel_for(0, surfaces.height, [&](int y) {
+    for (int x = 0; x < surfaces.width; ++x) {
+      const std::size_t i = surfaces.index(x, y);
+      if (!surfaces.covered(i)) continue;
+      const std::uint32_t leaf = leaf_[surfaces.face[i]];
+      const Plane& plane = view.face_plane(surfaces.face[i]);
+      const Vec3 p = surfaces.point(i);
+      const Vec3 to_eye = normalize(camera.position - p);
+      const Vec3 n = dot(plane.normal, to_eye) >= 0 ? plane.normal : -plane.normal;
+      double light = kAmbient, highlight = 0;
+      for (std::size_t l = 0; l < shadowed_.size(); ++l) {
+        const Vec3 to_light = view.lights[l].direction_to(p);
+        const double lambert = dot(n, to_light);
+        if (lambert <= 0) continue;
+        const CornerShading share = corner_shading(shadowed_[l][leaf]);
+        light += diffuse_share * lambert * share.diffuse;
+        if (share.highlight) {
+          highlight += kHighlight *
+                       std::pow(std::max(0.0, dot(n, normalize(to_light + to_eye))), kShininess);
+        }
+      }
+      const Vec3 c = object_colour(surfaces.object(i)) * light + Vec3{1, 1, 1} * highlight;
+      image.pixels[i] = to_rgb8(c);
+    }
+  });
+  return image;
+}
+
+}  // namespace shadowkit::voxel

@@ -1,0 +1,122 @@
+#include "voxel_method.h"
+
+#include <cmath>
+#include <string>
+
+#include "frame_bound.h"
+#include "shadowkit/core/error.h"
+
+namespace shadowkit {
+namespace {
+
+constexpr int kMinResolution = 16, kMaxResolution = 2048;
+// Empty voxels at a visible point look this far (voxels) for a non-empty one.
+constexpr int kNeighbourReach = 2;
+
+[[noreturn]] void bad_option(const std::string& key, const std::string& what,
+                             const MethodOptions& options) {
+  throw InputError("option 'voxel." + key + "'", what + ", got '" + options.text(key, "") + "'");
+}
+
+int resolution_option(const MethodOptions& options) {
+  const double m = options.number("resolution", 256);
+  const bool power_of_two = m == std::floor(m) && m >= 1 && (long(m) & (long(m) - 1)) == 0;
+  if (!power_of_two || m < kMinResolution || m > kMaxResolution) {
+    bad_option("resolution", "expected a power of two in 16..2048", options);
+  }
+  return int(m);
+}
+
+int adjacency_option(const MethodOptions& options) {
+  const double n = options.number("adjacency", 26);
+  if (n != 6 && n != 18 && n != 26) bad_option("adjacency", "expected 6, 18 or 26", options);
+  return int(n);
+}
+
+voxel::ShadowTest test_option(const MethodOptions& options) {
+  const std::string test = options.text("test", "topology");
+  if (test == "offset") return voxel::ShadowTest::offset;
+  if (test != "topology") bad_option("test", "expected offset or topology", options);
+  return voxel::ShadowTest::topology;
+}
+
+bool bound_option(const MethodOptions& options) {
+  const std::string bound = options.text("bound", "view");
+  if (bound != "view" && bound != "scene") bad_option("bound", "expected view or scene", options);
+  return bound == "scene";
+}
+
+}  // namespace
+
+VoxelMethod::VoxelMethod(const MethodOptions& options) {
+  options.expect_only("voxel", {"resolution", "adjacency", "test", "bound"});
+  resolution_ = resolution_option(options);
+  adjacency_ = adjacency_option(options);
+  test_ = test_option(options);
+  whole_scene_ = bound_option(options);
+}
+
+void VoxelMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
+  const voxel::VoxelGrid grid =
+      voxel::make_grid(voxel::frame_bound(scene, whole_scene_), resolution_);
+  const voxel::PatchSet patches(scene);
+  leaves_ = voxel::voxelize(patches, grid, adjacency_);
+  const voxel::VoxelKeys keys(grid.dims);
+  voxels_ = voxel::SurfaceVoxels::collect(leaves_, grid, keys, adjacency_);
+  buffer_ = voxel::CubicFrameBuffer(grid, voxels_.keys);
+}
+
+void VoxelMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
+  light_ = scene.lights.at(light);
+  stats_ = voxel::determine_shadows(light_, leaves_, voxels_, test_, buffer_);
+}
+
+voxel::VoxelState VoxelMethod::state_at(Vec3 p) const {
+  const voxel::VoxelGrid& grid = buffer_.grid();
+  const Vec3 g = grid.to_grid(p);
+  const voxel::VoxelIndex home = grid.voxel_of(g);
+  voxel::VoxelState state = buffer_.state(home);
+  // Rings of growing size: the nearest non-empty voxel centre wins.
+  for (int reach = 1; state == voxel::VoxelState::empty && reach <= kNeighbourReach; ++reach) {
+    double best = INFINITY;
+    for (int dz = -reach; dz <= reach; ++dz) {
+      for (int dy = -reach; dy <= reach; ++dy) {
+        for (int dx = -reach; dx <= reach; ++dx) {
+          const voxel::VoxelIndex v{home[0] + dx, home[1] + dy, home[2] + dz};
+          const voxel::VoxelState s = buffer_.state(v);
+          const Vec3 d = voxel::VoxelGrid::center(v) - g;
+          if (s != voxel::VoxelState::empty && dot(d, d) < best) best = dot(d, d), state = s;
+        }
+      }
+    }
+  }
+  return state;
+}
+
+void VoxelMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
+                        const Context& /*ctx*/) {
+  const Vec3 eye = scene.camera.position;
+  shade_each_pixel(surfaces, mask, [&](std::size_t i) {
+    if (!faces_light(scene.face_plane(surfaces.face[i]), eye, light_)) return false;
+    // A point no voxel is near (outside the bound) has nothing to shadow it: lit.
+    return state_at(surfaces.point(i)) != voxel::VoxelState::shadowed;
+  });
+}
+
+std::size_t VoxelMethod::memory_bytes() const {
+  return buffer_.memory_bytes() + voxels_.memory_bytes() +
+         leaves_.capacity() * sizeof(voxel::Subpatch) + stats_.peak_bytes;
+}
+
+MethodCounters VoxelMethod::counters() const {
+  return {{"resolution", double(buffer_.grid().resolution())},
+          {"subpatches", double(leaves_.size())},
+          {"voxels", double(voxels_.size())},
+          {"frame_buffer_bytes", double(buffer_.memory_bytes())},
+          {"entries", double(stats_.entries)},
+          {"uncertain", double(stats_.uncertain)},
+          {"shadowed", double(stats_.shadowed)},
+          {"blocker_records", double(stats_.blocker_records)}};
+}
+
+}  // namespace shadowkit

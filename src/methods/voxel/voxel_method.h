@@ -1,0 +1,57 @@
+#pragma once
+// voxel: Lai & Cheng 2007, "Shadow generation for objects represented by Catmull-Clark
+// subdivision surfaces". The scene's patches are voxelized in parameter space (§3) into
+// one cubic frame buffer; per light, the voxels are projected once onto a plane
+// perpendicular to the light and decided lit or shadowed (§4); a visible point takes the
+// state of its voxel.
+#include <memory>
+#include <vector>
+
+#include "cubic_frame_buffer.h"
+#include "patch_set.h"
+#include "shadow_determination.h"
+#include "shadowkit/methods/shadow_method.h"
+#include "surface_voxels.h"
+#include "voxelizer.h"
+
+namespace shadowkit {
+
+/// \brief Options (`--set voxel.KEY=VALUE`):
+/// - `resolution` M (default 256): voxels along the longest side of the frame buffer's box,
+///   a power of two in 16..2048.
+/// - `adjacency` N (default 26): the stopping rule's N-adjacency, 6, 18 or 26.
+/// - `test` (default topology): `offset` (§4.1) or `topology` (§4.2).
+/// - `bound` (default view): `view` (what can be seen or shadow what is seen,
+///   voxel::frame_bound) or `scene` (the scene's box).
+class VoxelMethod final : public ShadowMethod {
+ public:
+  explicit VoxelMethod(const MethodOptions& options);
+  std::string_view name() const override { return "voxel"; }
+  void prepare(const Scene& scene, const Context& ctx) override;
+  void build(const Scene& scene, std::size_t light, const Context& ctx) override;
+  void shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
+             const Context& ctx) override;
+  std::size_t memory_bytes() const override;
+  MethodCounters counters() const override;
+
+  const voxel::CubicFrameBuffer& frame_buffer() const { return buffer_; }
+  int adjacency() const { return adjacency_; }
+  const std::vector<voxel::Subpatch>& subpatches() const { return leaves_; }
+  /// The state at world point \p p: its voxel's, or for an empty voxel (the voxelization
+  /// marks only subpatch corners) the nearest non-empty voxel's within two voxels.
+  voxel::VoxelState state_at(Vec3 p) const;
+
+ private:
+  int resolution_ = 256;
+  int adjacency_ = 26;
+  voxel::ShadowTest test_ = voxel::ShadowTest::topology;
+  bool whole_scene_ = false;
+
+  std::vector<voxel::Subpatch> leaves_;
+  voxel::SurfaceVoxels voxels_;
+  voxel::CubicFrameBuffer buffer_;
+  voxel::ShadowStatistics stats_;
+  Light light_;
+};
+
+}  // namespace shadowkit

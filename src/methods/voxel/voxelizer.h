@@ -1,0 +1,46 @@
+#pragma once
+// Lai & Cheng §3: voxelization by recursive midpoint subdivision of each patch's parameter
+// space, until the voxels of a subpatch's four corners are N-adjacent.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "patch_set.h"
+#include "voxel_grid.h"
+
+namespace shadowkit::voxel {
+
+using Corners = std::array<GridPoint, 4>;
+
+/// \brief A leaf of the recursion: its four corners (grid units, in the patch's corner
+/// order) and its patch. Its corners' voxels are the voxelization; its two triangles
+/// (0, 1, 2) and (0, 2, 3) are what the topology test (§4.2) and the renderer (§5) draw.
+struct Subpatch {
+  Corners corner;
+  std::uint32_t patch = 0;
+};
+
+/// Whether the recursion stops at a subpatch with corners \p corner (grid units): their
+/// voxels are pairwise \p adjacency-adjacent, or the subpatch is far below a voxel in size
+/// (corners around a voxel vertex can sit in diagonal voxels at any scale).
+bool small_enough(const Corners& corners, int adjacency);
+
+/// \brief A leaf's rectangle [u0, u1] x [v0, v1] in its patch's parameter space (dyadic).
+struct Domain {
+  double u0, u1, v0, v1;
+};
+
+/// Runs the recursion over \p patch, calling \p leaf with every leaf that reaches \p grid,
+/// always in the same order: §5 renders by running it again.
+void voxelize_patch(const PatchSet& patches, std::uint32_t patch, const VoxelGrid& grid,
+                    int adjacency, const std::function<void(const Subpatch&, const Domain&)>& leaf);
+
+/// The voxel of grid point \p g, unclamped (coordinates may lie outside the grid).
+VoxelIndex voxel_floor(Vec3 g);
+
+/// The leaf subpatches of every patch that reach \p grid, patches in parallel (oneTBB),
+/// in patch order.
+std::vector<Subpatch> voxelize(const PatchSet& patches, const VoxelGrid& grid, int adjacency);
+
+}  // namespace shadowkit::voxel

@@ -1,0 +1,258 @@
+// Lai & Cheng §3: the stopping rule, separability (no leak through a closed surface),
+// minimality (voxels close to the area over a voxel's face) and shared patch sides.
+#include "voxelizer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <deque>
+#include <vector>
+
+#include "../../testing/test_scenes.h"
+#include "cubic_frame_buffer.h"
+#include "frame_bound.h"
+#include "patch_set.h"
+#include "surface_voxels.h"
+
+namespace shadowkit::voxel {
+namespace {
+
+using testing::box;
+using testing::polygon;
+
+Scene scene_of(std::vector<PolygonSoup> soups) {
+  return testing::make_scene(testing::camera({0, 0, 10}, {0, 0, 0}, 64, 48),
+                             {testing::point_light({0, 10, 0})}, soups);
+}
+
+// A closed octahedron, rotated off the axes so that no face lines up with the voxels.
+PolygonSoup octahedron(double radius) {
+  PolygonSoup s;
+  const double c = std::cos(0.3), n = std::sin(0.3);
+  const std::vector<Vec3> axes{{c, n, 0}, {-n, c, 0}, {0, 0, 1}};
+  for (const Vec3& a : axes) {
+    s.positions.push_back(a * radius);
+    s.positions.push_back(a * -radius);
+  }
+  // Vertices 0/1: +-x', 2/3: +-y', 4/5: +-z.
+  for (std::uint32_t x : {0u, 1u}) {
+    for (std::uint32_t y : {2u, 3u}) {
+      for (std::uint32_t z : {4u, 5u}) {
+        const bool flip = ((x == 1) != (y == 3)) != (z == 5);
+        flip ? s.add_face({x, z, y}) : s.add_face({x, y, z});
+      }
+    }
+  }
+  return s;
+}
+
+struct Voxelized {
+  VoxelGrid grid;
+  std::vector<Subpatch> leaves;
+  SurfaceVoxels voxels;
+};
+
+Voxelized voxelize_scene(const Scene& scene, int resolution, int adjacency) {
+  Voxelized v;
+  v.grid = make_grid(scene.bounds(), resolution);
+  v.leaves = voxelize(PatchSet(scene), v.grid, adjacency);
+  v.voxels = SurfaceVoxels::collect(v.leaves, v.grid, VoxelKeys(v.grid.dims), adjacency);
+  return v;
+}
+
+// Flood-fills the empty voxels from the grid's corner with \p connectivity-adjacent steps;
+// true if it reaches \p inside.
+bool leaks(const Voxelized& v, int connectivity, const VoxelIndex& inside) {
+  const VoxelKeys keys(v.grid.dims);
+  const auto index = [&](const VoxelIndex& a) {
+    return (std::size_t(a[2]) * v.grid.dims[1] + a[1]) * v.grid.dims[0] + a[0];
+  };
+  std::vector<char> blocked(std::size_t(v.grid.dims[0]) * v.grid.dims[1] * v.grid.dims[2], 0);
+  for (const std::uint64_t key : v.voxels.keys) blocked[index(keys.voxel(key))] = 1;
+  std::deque<VoxelIndex> queue{{0, 0, 0}};
+  blocked[0] = 1;
+  while (!queue.empty()) {
+    const VoxelIndex at = queue.front();
+    queue.pop_front();
+    if (at == inside) return true;
+    for (int dz = -1; dz <= 1; ++dz) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const VoxelIndex next{at[0] + dx, at[1] + dy, at[2] + dz};
+          if (!v.grid.contains(next) || !adjacent(at, next, connectivity)) continue;
+          if (blocked[index(next)]) continue;
+          blocked[index(next)] = 1;
+          queue.push_back(next);
+        }
+      }
+    }
+  }
+  return false;
+}
+
+TEST(Adjacency, FacesEdgesAndVertices) {
+  EXPECT_TRUE(adjacent({1, 1, 1}, {1, 1, 1}, 6));
+  EXPECT_TRUE(adjacent({1, 1, 1}, {2, 1, 1}, 6));
+  EXPECT_FALSE(adjacent({1, 1, 1}, {2, 2, 1}, 6));
+  EXPECT_TRUE(adjacent({1, 1, 1}, {2, 2, 1}, 18));
+  EXPECT_FALSE(adjacent({1, 1, 1}, {2, 2, 2}, 18));
+  EXPECT_TRUE(adjacent({1, 1, 1}, {2, 2, 2}, 26));
+  EXPECT_FALSE(adjacent({1, 1, 1}, {3, 1, 1}, 26));
+}
+
+TEST(StoppingRule, StopsWhenEveryPairOfCornerVoxelsIsAdjacent) {
+  // Corners in voxels (0,0,0), (1,0,0), (1,1,0), (0,1,0): 18- and 26- but not 6-adjacent.
+  const Corners square{{{0.5, 0.5, 0.5}, {1.5, 0.5, 0.5}, {1.5, 1.5, 0.5}, {0.5, 1.5, 0.5}}};
+  EXPECT_FALSE(small_enough(square, 6));
+  EXPECT_TRUE(small_enough(square, 18));
+  EXPECT_TRUE(small_enough(square, 26));
+  // Two voxels apart: never small enough.
+  const Corners wide{{{0.5, 0.5, 0.5}, {2.5, 0.5, 0.5}, {2.5, 0.6, 0.5}, {0.5, 0.6, 0.5}}};
+  EXPECT_FALSE(small_enough(wide, 26));
+  // Far below a voxel, even across a voxel corner: a point.
+  const Corners tiny{{{0.999f, 0.999f, 0.999f},
+                      {1.001f, 0.999f, 0.999f},
+                      {1.001f, 1.001f, 1.001f},
+                      {0.999f, 1.001f, 0.999f}}};
+  EXPECT_TRUE(small_enough(tiny, 6));
+}
+
+TEST(StoppingRule, EveryLeafSatisfiesIt) {
+  const Scene scene = scene_of({octahedron(3)});
+  for (int n : {6, 18, 26}) {
+    const Voxelized v = voxelize_scene(scene, 32, n);
+    for (const Subpatch& leaf : v.leaves) ASSERT_TRUE(small_enough(leaf.corner, n));
+  }
+}
+
+// A 26-adjacent voxelization separates 6-connected paths, a 6-adjacent one 26-connected ones.
+TEST(Separability, NoLeakFromInsideAClosedSurface) {
+  for (const auto& soup : {octahedron(3), box({-2.1, -1.3, -1.7}, {1.9, 2.2, 1.6})}) {
+    const Scene scene = scene_of({soup});
+    for (const auto& [adjacency, path] : {std::pair{26, 6}, std::pair{18, 6}, std::pair{6, 26}}) {
+      const Voxelized v = voxelize_scene(scene, 48, adjacency);
+      const VoxelIndex inside = v.grid.voxel_of(v.grid.to_grid({0, 0, 0}));
+      EXPECT_FALSE(leaks(v, path, inside)) << "N=" << adjacency << " path " << path;
+    }
+  }
+}
+
+// The surface of a tilted plane: about area x max|n_i| / r^2 voxels (one per column along
+// the dominant axis) for N = 26, not a thick slab.
+TEST(Minimality, VoxelCountCloseToTheAreaOverAVoxelFace) {
+  const Vec3 a{-3, -1, -3}, b{3, -1, -3}, c{3, 2, 3}, d{-3, 2, 3};
+  const Scene scene = scene_of({polygon({a, b, c, d})});
+  const Voxelized v = voxelize_scene(scene, 64, 26);
+  const Vec3 n = normalize(cross(b - a, d - a));
+  const double area = length(cross(b - a, d - a)) / (v.grid.size * v.grid.size);
+  const double expected = area * max_abs_component(n);
+  EXPECT_GT(double(v.voxels.size()), 0.95 * expected);
+  EXPECT_LT(double(v.voxels.size()), 1.5 * expected);
+}
+
+// Two triangles walk their shared side in opposite directions; every dyadic point on it is
+// the same bits from both (PatchSet::point's owners), so no crack opens between their voxels.
+TEST(SharedSides, AreEvaluatedCanonically) {
+  PolygonSoup soup;
+  soup.positions = {{0.1, 0.2, 0.3}, {3.7, -0.4, 1.1}, {2.9, 3.3, -0.7}, {-0.6, 2.1, 0.9}};
+  soup.add_face({0, 1, 2});
+  soup.add_face({0, 2, 3});
+  const Scene scene = scene_of({soup});
+  const PatchSet patches(scene);
+  ASSERT_EQ(patches.size(), 2u);
+  // Patch 0 = (0, 1, 2, 2): side 3 (u = 0) runs from vertex 2 to 0, v = t from vertex 0.
+  // Patch 1 = (0, 2, 3, 3): side 0 (v = 0) runs from vertex 0 to 2, u = t from vertex 0.
+  for (int k = 1; k < 64; ++k) {
+    const double t = k / 64.0;
+    const Vec3 from0 = patches.point(0, 0, t), from1 = patches.point(1, t, 0);
+    EXPECT_EQ(from0, from1) << t;
+  }
+  EXPECT_EQ(patches.point(0, 0, 0), patches.point(1, 0, 0));
+}
+
+// A Catmull-Clark cube (a closed limit surface with extraordinary vertices) as one object.
+Scene subdivision_scene() {
+  Scene scene = scene_of({});
+  const PolygonSoup control = box({-2.3, -1.9, -2.1}, {2.2, 2.4, 1.8});
+  auto surface = SubdivisionSurface::build(control, "cube");
+  scene.objects.push_back({"cube", Mesh::build(surface->tessellate(4), "cube", {}), 0, surface});
+  scene.finalize();
+  return scene;
+}
+
+TEST(SharedSides, SubdivisionPatchesAgreeOnEverySharedSide) {
+  const Scene scene = subdivision_scene();
+  const PatchSet patches(scene);
+  ASSERT_EQ(patches.size(), 24u);  // every cube vertex is extraordinary: subdivided once
+  int shared = 0;
+  for (std::uint32_t p = 0; p < patches.size(); ++p) {
+    for (std::uint32_t q = p + 1; q < patches.size(); ++q) {
+      for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j) {
+          const auto& a = patches[p].corner_ids;
+          const auto& b = patches[q].corner_ids;
+          if (a[i] != b[(j + 1) % 4] || a[(i + 1) % 4] != b[j]) continue;  // opposite walks
+          ++shared;
+          for (int k = 1; k < 16; ++k) {
+            const double t = k / 16.0;
+            const auto on_side = [](int side, double s) {
+              const double uv[4][2] = {{s, 0}, {1, s}, {1 - s, 1}, {0, 1 - s}};
+              return std::pair{uv[side][0], uv[side][1]};
+            };
+            const auto [pu, pv] = on_side(i, t);
+            const auto [qu, qv] = on_side(j, 1 - t);
+            ASSERT_EQ(patches.point(p, pu, pv), patches.point(q, qu, qv));
+          }
+        }
+      }
+    }
+  }
+  EXPECT_EQ(shared, 48);
+}
+
+// On a curved surface the N = 6 voxelization is 6-connected but may let a 26-path through
+// where the surface turns diagonally between voxels (docs/voxel.md); it still stops
+// 18-paths.
+TEST(Separability, NoLeakFromInsideACatmullClarkSurface) {
+  const Scene scene = subdivision_scene();
+  for (const auto& [adjacency, path] : {std::pair{26, 6}, std::pair{18, 6}, std::pair{6, 18}}) {
+    const Voxelized v = voxelize_scene(scene, 48, adjacency);
+    const VoxelIndex inside = v.grid.voxel_of(v.grid.to_grid({0, 0, 0}));
+    EXPECT_FALSE(leaks(v, path, inside)) << "N=" << adjacency;
+  }
+}
+
+TEST(FrameBound, LeavesOutTheGroundNobodySees) {
+  // A camera looking down at a small patch of a 2000-wide ground under a point light.
+  Scene scene = testing::make_scene(testing::camera({0, 3, 0.01}, {0, 0, 0}, 64, 48, 30),
+                                    {testing::point_light({0, 5, 0})},
+                                    {testing::horizontal_quad(-1000, 1000, -1000, 1000, 0),
+                                     box({-0.2, 0, -0.2}, {0.2, 0.4, 0.2})});
+  const Bounds3 bound = frame_bound(scene, false);
+  EXPECT_LT(bound.extent().x, 5.0);
+  EXPECT_LT(bound.extent().z, 5.0);
+  EXPECT_GE(bound.hi.y, 0.4);
+  EXPECT_EQ(frame_bound(scene, true).extent().x, 2000);
+}
+
+TEST(FrameBuffer, TwoBitsPerVoxelInSparseBricks) {
+  VoxelGrid grid;
+  grid.dims = {1024, 1024, 1024};
+  const VoxelKeys keys(grid.dims);
+  const std::vector<std::uint64_t> sorted{keys.key({0, 0, 0}), keys.key({7, 7, 7}),
+                                          keys.key({1023, 5, 600})};
+  CubicFrameBuffer buffer(grid, sorted);
+  EXPECT_EQ(buffer.state({7, 7, 7}), VoxelState::lit);
+  buffer.set(keys.key({7, 7, 7}), VoxelState::shadowed);
+  EXPECT_EQ(buffer.state({7, 7, 7}), VoxelState::shadowed);
+  EXPECT_EQ(buffer.state({0, 0, 0}), VoxelState::lit);
+  EXPECT_EQ(buffer.state({6, 7, 7}), VoxelState::empty);
+  EXPECT_EQ(buffer.state({1023, 5, 600}), VoxelState::lit);
+  EXPECT_EQ(buffer.state({-1, 0, 0}), VoxelState::empty);
+  EXPECT_EQ(keys.voxel(keys.key({1023, 5, 600})), (VoxelIndex{1023, 5, 600}));
+  // The directory (128^3 bricks x 4 bytes) and two bricks of 128 bytes.
+  EXPECT_EQ(buffer.memory_bytes(), 128u * 128 * 128 * 4 + 2 * 128);
+}
+
+}  // namespace
+}  // namespace shadowkit::voxel
