@@ -47,14 +47,33 @@ INSTANTIATE_TEST_SUITE_P(Angular, AngularBuiltInScene,
                          ::testing::Values("cubes:125", "tetra:3", "table", "three-lights",
                                            "square", "room"));
 
-// The pairs hold each triangle's whole cut within an entry, so a coarse theta only lengthens
-// the entries (the paper's 99 / 299 / 599 trade quality; here only speed).
-TEST(AngularScenes, ACoarseThetaResolutionStaysExact) {
+// Sec. 3 / Figs. 6-7: R trades quality for speed; the error falls as R grows.
+TEST(AngularScenes, MismatchFallsAsTheThetaResolutionGrows) {
   const Scene scene = reduced(load_scene("table", {}));
+  double previous = 100;
   for (const char* r : {"99", "299", "599"}) {
     const MethodOptions options("angular", {{"resolution", r}});
-    EXPECT_LE(worst_interior_mismatch(scene, std::string("table R=") + r, options), 0.01) << r;
+    const double mismatch = worst_interior_mismatch(scene, std::string("table R=") + r, options);
+    EXPECT_LT(mismatch, previous) << r;
+    previous = mismatch;
   }
+  EXPECT_GT(worst_interior_mismatch(scene, "table R=99", {"angular", {{"resolution", "99"}}}),
+            0.05);
+}
+
+// Sec. 10: dropping covered pairs shrinks the table and leaves the mask alone.
+TEST(AngularScenes, TheSaturatedTableGivesTheSameMask) {
+  const Scene scene = reduced(load_scene("tetra:3", {}));
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  AngularMethod saturated({});
+  AngularMethod full(MethodOptions("angular", {{"saturated", "0"}}));
+  const ShadowMask a = testing::method_mask(saturated, scene, vsb, 0);
+  const ShadowMask b = testing::method_mask(full, scene, vsb, 0);
+  EXPECT_GT(testing::counter(saturated, "saturated_pairs"), 0);
+  EXPECT_LT(testing::counter(saturated, "table_pairs"), testing::counter(full, "table_pairs"));
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) differ += a.pixels[i] != b.pixels[i];
+  EXPECT_EQ(differ, 0u);
 }
 
 // Sec. 7: one lookup serves a run of pixels.
@@ -71,6 +90,8 @@ TEST(AngularScenes, OneLookupServesManyPixels) {
 TEST(AngularScenes, RejectsAResolutionThatIsNotAWholeNumber) {
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"resolution", "2.5"}})), InputError);
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"bias", "1"}})), InputError);
+  EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"saturated", "2"}})), InputError);
+  EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"resolution", "-1"}})), InputError);
 }
 
 TEST(AngularScenes, EveryExampleAgreesWithTheReference) {

@@ -1,0 +1,198 @@
+#include "loop_slicer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace shadowkit {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A point where a slice crosses the far sheet's boundary or a face's edge.
+struct Crossing {
+  Vec3 p;
+  double phi = 0;
+  std::int64_t edge = -1;  ///< mesh edge; -1 on the light's X axis
+};
+
+bool crosses(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t e) {
+  const MeshEdge& edge = m.mesh.edges[e];
+  return (s.side(m.local[edge.v0]) >= 0) != (s.side(m.local[edge.v1]) >= 0);
+}
+
+// Computed from the edge's lower vertex id, so that both faces of an edge get the same bits
+// and neighbouring pairs meet without a crack.
+Crossing edge_crossing(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t e) {
+  const MeshEdge& edge = m.mesh.edges[e];
+  const Vec3 a = m.local[edge.v0], b = m.local[edge.v1];
+  const double ga = s.side(a), gb = s.side(b);
+  Crossing c;
+  c.p = a + (b - a) * (ga / (ga - gb));
+  c.phi = s.phi(c.p);
+  c.edge = e;
+  return c;
+}
+
+// The crossings of face f's edges by the slice, ordered along the cut line.
+void face_cuts(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f,
+               std::vector<Crossing>& cuts) {
+  cuts.clear();
+  const std::uint32_t n = m.mesh.face_size(f);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const std::uint32_t e = m.mesh.corner_edge[m.mesh.face_start[f] + k];
+    if (crosses(m, s, e)) cuts.push_back(edge_crossing(m, s, e));
+  }
+  if (cuts.size() <= 2) return;
+  // A non-convex face: the cut is several segments along one line.
+  Vec3 lo = cuts[0].p, hi = lo;
+  for (const Crossing& c : cuts) lo = min(lo, c.p), hi = max(hi, c.p);
+  const Vec3 spread = hi - lo;
+  const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : spread.y >= spread.z ? 1 : 2;
+  std::sort(cuts.begin(), cuts.end(),
+            [axis](const Crossing& a, const Crossing& b) { return a.p[axis] < b.p[axis]; });
+}
+
+// The other end of the segment of face f's cut that starts at \p at: the next crossing
+// along the cut line (segments alternate inside and outside a non-convex face). From the
+// light's X axis: the nearest crossing in the half-plane at theta. False if none.
+bool partner(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, const Crossing& at,
+             std::vector<Crossing>& cuts, Crossing& out) {
+  face_cuts(m, s, f, cuts);
+  if (at.edge < 0) {
+    double best = kInf;
+    for (const Crossing& c : cuts) {
+      const double d = length(c.p - at.p);
+      if (s.rho(c.p) > 0 && d < best) best = d, out = c;
+    }
+    return best < kInf;
+  }
+  for (std::size_t i = 0; i < cuts.size(); ++i) {
+    if (cuts[i].edge != at.edge) continue;
+    const std::size_t j = i ^ 1;
+    if (j >= cuts.size()) return false;
+    out = cuts[j];
+    return true;
+  }
+  return false;
+}
+
+// Hazard: a point light's slice is a half-plane. When the segment from \p at leaves it
+// through the light's X axis, it is clipped there: phi runs to +-inf (tan(phi) of a point
+// on the axis). True when clipped.
+bool clip_at_axis(const ThetaSlice& s, const Crossing& at, Crossing& next) {
+  const double ra = s.rho(at.p), rb = s.rho(next.p);
+  if (rb >= 0) return false;
+  const double x = at.p.x + (next.p.x - at.p.x) * (ra / (ra - rb));
+  next.phi = x > 0 ? kInf : -kInf;
+  return true;
+}
+
+void emit(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, double a, double b,
+          std::vector<EntryPair>& out) {
+  AngularPair pair;
+  pair.phi_begin = std::min(a, b);
+  pair.phi_end = std::max(a, b);
+  pair.hidden = m.hidden_id[f];
+  out.emplace_back(s.entry, pair);
+}
+
+// Walks the far sheet from \p at across face f, whose other cut end \p next is known: one
+// pair per face, each hidden edge crossed shared by two pairs (inserted in duplicate).
+void walk(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, Crossing at, Crossing next,
+          std::vector<Crossing>& cuts, std::vector<EntryPair>& out) {
+  for (std::size_t step = 0; step < m.mesh.face_count(); ++step) {
+    const bool clipped = clip_at_axis(s, at, next);
+    emit(m, s, f, at.phi, next.phi, out);
+    if (clipped) return;
+    const std::int64_t g = sheet_neighbour(m.mesh, m.sheets, f, std::uint32_t(next.edge));
+    if (g < 0) return;  // an RE crossing: the shadow ends here
+    f = std::uint32_t(g);
+    at = next;
+    if (!partner(m, s, f, at, cuts, next)) return;
+  }
+}
+
+// theta of a light-frame point (eq. 2 over the whole turn, or the directional frame's Y).
+double theta_of(const ThetaSlice& s, Vec3 v) {
+  return s.point_light ? std::atan2(v.y, v.z) : v.y;
+}
+
+}  // namespace
+
+ThetaSlice theta_slice(const ThetaQuantization& q, bool point_light, int k) {
+  ThetaSlice s;
+  s.entry = std::uint32_t(k);
+  s.theta = q.centre(k);
+  s.cos = std::cos(s.theta);
+  s.sin = std::sin(s.theta);
+  s.point_light = point_light;
+  return s;
+}
+
+void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const RidgeEdgeLoop& loop,
+                const ThetaQuantization& q, std::span<const ThetaSlice> slices,
+                std::vector<EntryPair>& out) {
+  if (slices.empty()) return;
+  std::vector<Crossing> cuts;
+  const bool point = slices[0].point_light;
+  for (const std::uint32_t i : loop.edges) {
+    const RidgeEdge& re = ridges[i];
+    double lo = theta_of(slices[0], m.local[re.from]), hi = theta_of(slices[0], m.local[re.to]);
+    if (lo > hi) std::swap(lo, hi);
+    if (point && hi - lo > std::numbers::pi) {  // the edge passes behind the light's back
+      std::swap(lo, hi);
+      hi += 2 * std::numbers::pi;
+    }
+    // Entries whose centre the edge may cross, one more at each end against rounding: the
+    // side test decides.
+    const int k0 = int(std::floor((lo - q.theta_min) / q.step - 0.5));
+    const int k1 = int(std::ceil((hi - q.theta_min) / q.step - 0.5));
+    for (int k = k0; k <= k1; ++k) {
+      const int entry = q.entry(k);
+      if (entry < 0 || !crosses(m, slices[entry], re.edge)) continue;
+      const ThetaSlice& s = slices[entry];
+      const Crossing at = edge_crossing(m, s, re.edge);
+      if (s.rho(at.p) <= 0) continue;  // in the half-plane at theta + pi: another entry's
+      Crossing next;
+      if (!partner(m, s, re.face, at, cuts, next)) continue;
+      Crossing clipped = next;
+      clip_at_axis(s, at, clipped);
+      // Direction constraint: shadow begins where the far sheet goes on to larger phi.
+      if (clipped.phi > at.phi) walk(m, s, re.face, at, next, cuts, out);
+    }
+  }
+}
+
+void slice_from_axis(const SlicedMesh& m, std::uint32_t f, std::span<const ThetaSlice> slices,
+                     std::vector<EntryPair>& out) {
+  std::vector<Crossing> cuts;
+  Crossing at;
+  at.p = {axis_piercing(m, f), 0, 0};
+  at.phi = -kInf;
+  for (const ThetaSlice& s : slices) {
+    Crossing next;
+    if (partner(m, s, f, at, cuts, next)) walk(m, s, f, at, next, cuts, out);
+  }
+}
+
+double axis_piercing(const SlicedMesh& m, std::uint32_t f) {
+  const std::uint32_t n = m.mesh.face_size(f);
+  // The origin inside the face's projection on the (Y, F) plane (crossing number), and the
+  // face's Newell normal.
+  bool inside = false;
+  Vec3 normal{0, 0, 0};
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const Vec3 a = m.local[m.mesh.face_vertex(f, k)];
+    const Vec3 b = m.local[m.mesh.face_vertex(f, (k + 1) % n)];
+    if ((a.y > 0) != (b.y > 0) && 0 < a.z + (b.z - a.z) * (0 - a.y) / (b.y - a.y)) {
+      inside = !inside;
+    }
+    normal = normal + cross(a, b);
+  }
+  if (!inside || normal.x == 0) return std::numeric_limits<double>::quiet_NaN();
+  return dot(normal, m.local[m.mesh.face_vertex(f, 0)]) / normal.x;
+}
+
+}  // namespace shadowkit
