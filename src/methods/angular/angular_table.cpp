@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "loop_slicer.h"
+#include "view_theta.h"
 
 namespace shadowkit {
 namespace {
@@ -44,7 +45,8 @@ void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& fra
 }
 
 // Sec. 3: theta from the global minimum to the global maximum over the RE loops (the whole
-// turn when they go around the light), in R entries.
+// turn when they go around the light), cut to the theta the camera can see (eq. 4's range
+// "based on the view volume"), in R entries; one more entry at each end against rounding.
 ThetaQuantization quantize(const Scene& scene, const LightFrame& frame,
                            const std::vector<ObjectLoops>& objects, int resolution) {
   ThetaQuantization q;
@@ -54,12 +56,19 @@ ThetaQuantization quantize(const Scene& scene, const LightFrame& frame,
     lo = std::min(lo, o.theta_lo);
     hi = std::max(hi, o.theta_hi);
   }
-  if (!(lo <= hi)) lo = 0, hi = 1;  // no ridge edge: an empty table of any range
   if (q.full_turn) lo = -kPi, hi = kPi;
+  const ViewTheta view = view_theta(scene, frame);
+  if (view.bounded) {
+    q.full_turn = false;
+    lo = std::max(lo, view.lo);
+    hi = std::min(hi, view.hi);
+  }
+  if (!(lo <= hi)) lo = 0, hi = 1;  // no ridge edge in view: an empty table of any range
   const double range = std::max(hi - lo, 1e-12);
-  q.resolution = resolution > 0 ? resolution : automatic_resolution(scene, frame, range);
-  q.theta_min = lo;
-  q.step = range / q.resolution;
+  const int inner = resolution > 0 ? resolution : automatic_resolution(scene, frame, range);
+  q.step = range / inner;
+  q.theta_min = lo - (q.full_turn ? 0 : q.step);
+  q.resolution = inner + (q.full_turn ? 0 : 2);
   return q;
 }
 
@@ -106,25 +115,6 @@ const AngularPair* AngularTable::narrow_before(int k, double phi) const {
 int ThetaQuantization::entry(int k) const {
   if (full_turn) return ((k % resolution) + resolution) % resolution;
   return k >= 0 && k < resolution ? k : -1;
-}
-
-int automatic_resolution(const Scene& scene, const LightFrame& frame, double theta_range) {
-  const Camera& cam = scene.camera;
-  const Vec3 eye = cam.position, fwd = cam.forward();
-  const double row_step = cam.pixel_grid().step;  // tan of one scan line at unit depth
-  const double near = 1e-3 * std::max(scene.bounds().diagonal(), 1e-12);
-  double finest = kPi;  // smallest theta step of one scan line over the vertices in view
-  for (const auto& object : scene.objects) {
-    for (Vec3 p : object.mesh.vertices) {
-      const double depth = dot(p - eye, fwd);
-      if (depth < near) continue;
-      const Vec3 v = frame.local(p);
-      const double span = frame.point_light() ? std::hypot(v.y, v.z) : 1.0;
-      if (span > 0) finest = std::min(finest, depth * row_step / span);
-    }
-  }
-  const double r = theta_range / finest;
-  return int(std::clamp(r, 0.5 * cam.height, 8.0 * cam.height));
 }
 
 AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,

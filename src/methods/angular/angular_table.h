@@ -111,9 +111,4 @@ class AngularTable {
   RidgeEdgeStats loop_stats_;
 };
 
-/// R by eq. 4, generalized: enough entries that one scan line's step at any scene vertex in
-/// view stays within one entry, clamped to [height / 2, 8 height]: the pairs are sampled at
-/// the entry's centre, so an entry must not outgrow a scan line where shadows fall.
-int automatic_resolution(const Scene& scene, const LightFrame& frame, double theta_range);
-
 }  // namespace shadowkit
