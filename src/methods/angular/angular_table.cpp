@@ -1,6 +1,7 @@
 #include "angular_table.h"
 
-#include <tbb/combinable.h>
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -18,7 +19,8 @@ constexpr double kPi = std::numbers::pi;
 
 // One object's RE loops in the light's frame.
 struct ObjectLoops {
-  std::vector<Vec3> local;  // light-frame vertices
+  std::vector<Vec3> local;    // light-frame vertices
+  std::vector<double> theta;  // per vertex on an RE
   std::vector<RidgeEdge> ridges;
   std::vector<RidgeEdgeLoop> loops;
   std::vector<std::uint32_t> hidden_id;   // per face, into AngularTable::hidden_
@@ -34,9 +36,15 @@ void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& fra
   for (std::size_t v = 0; v < o.local.size(); ++v) o.local[v] = frame.local(mesh.vertices[v]);
   o.ridges = find_ridge_edges(mesh, sheets);
   o.loops = chain_ridge_edge_loops(o.ridges);
+  o.theta.assign(mesh.vertices.size(), 0);
   for (const RidgeEdge& re : o.ridges) {
-    double a = frame.angular_local(o.local[re.from]).theta;
-    double b = frame.angular_local(o.local[re.to]).theta;
+    for (const std::uint32_t v : {re.from, re.to}) {
+      const Vec3 p = o.local[v];
+      o.theta[v] = frame.point_light() ? std::atan2(p.y, p.z) : p.y;
+    }
+  }
+  for (const RidgeEdge& re : o.ridges) {
+    double a = o.theta[re.from], b = o.theta[re.to];
     if (a > b) std::swap(a, b);
     o.wraps = o.wraps || (frame.point_light() && b - a > kPi);
     o.theta_lo = std::min(o.theta_lo, a);
@@ -144,7 +152,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
       table.hidden_[next] = {frame.plane(scene.face_plane(face)), double(sheets[o].side[f]), face};
       loops.hidden_id[f] = next++;
       if (!frame.point_light()) continue;
-      const SlicedMesh m{object.mesh, sheets[o], loops.local, loops.hidden_id};
+      const SlicedMesh m{object.mesh, sheets[o], loops.local, loops.theta, loops.hidden_id};
       if (axis_piercing(m, f) < 0) loops.axis_faces.push_back(f);
     }
   });
@@ -158,19 +166,33 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   for (int k = 0; k < table.theta_.resolution; ++k) {
     slices[k] = theta_slice(table.theta_, frame.point_light(), k);
   }
-  // Steps 1.5-1.6: one loop at a time (loops in parallel), sliced at every entry.
-  tbb::combinable<std::vector<EntryPair>> pairs;
-  tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
-    const ObjectLoops& loops = objects[o];
-    const SlicedMesh m{scene.objects[o].mesh, sheets[o], loops.local, loops.hidden_id};
-    std::vector<EntryPair>& out = pairs.local();
-    for (const RidgeEdgeLoop& loop : loops.loops) {
-      slice_loop(m, loops.ridges, loop, table.theta_, slices, out);
+  // Steps 1.5-1.6: one loop at a time, the loops of all objects in parallel.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> work;  // (object, loop or ~axis face)
+  for (std::uint32_t o = 0; o < objects.size(); ++o) {
+    for (std::uint32_t l = 0; l < objects[o].loops.size(); ++l) work.emplace_back(o, l);
+    for (const std::uint32_t f : objects[o].axis_faces) work.emplace_back(o, ~f);
+  }
+  struct Output {
+    std::vector<Crossing> scratch;
+    std::vector<EntryPair> pairs;
+  };
+  tbb::enumerable_thread_specific<Output> outputs;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, work.size(), 64), [&](const auto& range) {
+    Output& out = outputs.local();
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const auto [o, l] = work[i];
+      const ObjectLoops& loops = objects[o];
+      const SlicedMesh m{scene.objects[o].mesh, sheets[o], loops.local, loops.theta,
+                         loops.hidden_id};
+      if (l < loops.loops.size()) {
+        slice_loop(m, loops.ridges, loops.loops[l], table.theta_, slices, out.scratch, out.pairs);
+      } else {
+        slice_from_axis(m, ~l, slices, out.scratch, out.pairs);
+      }
     }
-    for (const std::uint32_t f : loops.axis_faces) slice_from_axis(m, f, slices, out);
   });
   std::vector<std::vector<EntryPair>> lists;
-  pairs.combine_each([&](std::vector<EntryPair>& list) { lists.push_back(std::move(list)); });
+  for (Output& out : outputs) lists.push_back(std::move(out.pairs));
   table.fill_entries(lists);
   // Step 1.7: sort each entry by phi; Sec. 10: saturate.
   table.wide_.assign(table.theta_.resolution, 0);

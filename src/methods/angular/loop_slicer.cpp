@@ -10,13 +10,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// A point where a slice crosses the far sheet's boundary or a face's edge.
-struct Crossing {
-  Vec3 p;
-  double phi = 0;
-  std::int64_t edge = -1;  ///< mesh edge; -1 on the light's X axis
-};
-
 bool crosses(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t e) {
   const MeshEdge& edge = m.mesh.edges[e];
   return (s.side(m.local[edge.v0]) >= 0) != (s.side(m.local[edge.v1]) >= 0);
@@ -59,6 +52,22 @@ void face_cuts(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f,
 // light's X axis: the nearest crossing in the half-plane at theta. False if none.
 bool partner(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, const Crossing& at,
              std::vector<Crossing>& cuts, Crossing& out) {
+  if (at.edge >= 0) {
+    // The common case, a cut with two ends: the other crossing edge, without sorting.
+    const std::uint32_t first = m.mesh.face_start[f], n = m.mesh.face_size(f);
+    std::int64_t other = -1;
+    int crossings = 0;
+    for (std::uint32_t k = 0; k < n; ++k) {
+      const std::uint32_t e = m.mesh.corner_edge[first + k];
+      if (!crosses(m, s, e)) continue;
+      ++crossings;
+      if (e != at.edge) other = e;
+    }
+    if (crossings == 2 && other >= 0) {
+      out = edge_crossing(m, s, std::uint32_t(other));
+      return true;
+    }
+  }
   face_cuts(m, s, f, cuts);
   if (at.edge < 0) {
     double best = kInf;
@@ -114,11 +123,6 @@ void walk(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, Crossing at
   }
 }
 
-// theta of a light-frame point (eq. 2 over the whole turn, or the directional frame's Y).
-double theta_of(const ThetaSlice& s, Vec3 v) {
-  return s.point_light ? std::atan2(v.y, v.z) : v.y;
-}
-
 }  // namespace
 
 ThetaSlice theta_slice(const ThetaQuantization& q, bool point_light, int k) {
@@ -133,13 +137,12 @@ ThetaSlice theta_slice(const ThetaQuantization& q, bool point_light, int k) {
 
 void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const RidgeEdgeLoop& loop,
                 const ThetaQuantization& q, std::span<const ThetaSlice> slices,
-                std::vector<EntryPair>& out) {
+                std::vector<Crossing>& cuts, std::vector<EntryPair>& out) {
   if (slices.empty()) return;
-  std::vector<Crossing> cuts;
   const bool point = slices[0].point_light;
   for (const std::uint32_t i : loop.edges) {
     const RidgeEdge& re = ridges[i];
-    double lo = theta_of(slices[0], m.local[re.from]), hi = theta_of(slices[0], m.local[re.to]);
+    double lo = m.theta[re.from], hi = m.theta[re.to];
     if (lo > hi) std::swap(lo, hi);
     if (point && hi - lo > std::numbers::pi) {  // the edge passes behind the light's back
       std::swap(lo, hi);
@@ -166,8 +169,7 @@ void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Ri
 }
 
 void slice_from_axis(const SlicedMesh& m, std::uint32_t f, std::span<const ThetaSlice> slices,
-                     std::vector<EntryPair>& out) {
-  std::vector<Crossing> cuts;
+                     std::vector<Crossing>& cuts, std::vector<EntryPair>& out) {
   Crossing at;
   at.p = {axis_piercing(m, f), 0, 0};
   at.phi = -kInf;

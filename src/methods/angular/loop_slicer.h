@@ -26,6 +26,13 @@ struct ThetaSlice {
   double phi(Vec3 v) const { return point_light ? v.x / rho(v) : v.x; }
 };
 
+/// \brief A point where a slice crosses the far sheet's boundary or a face's edge.
+struct Crossing {
+  Vec3 p;
+  double phi = 0;
+  std::int64_t edge = -1;  ///< mesh edge; -1 on the light's X axis
+};
+
 /// The slice of entry \p k.
 ThetaSlice theta_slice(const ThetaQuantization& q, bool point_light, int k);
 
@@ -34,6 +41,7 @@ struct SlicedMesh {
   const Mesh& mesh;
   const FarSheets& sheets;
   std::span<const Vec3> local;               ///< light-frame vertices
+  std::span<const double> theta;             ///< per vertex on an RE: its theta (eq. 2)
   std::span<const std::uint32_t> hidden_id;  ///< per face: its AngularTable::hidden() index
 };
 
@@ -45,12 +53,13 @@ struct SlicedMesh {
 /// crossing where the shadow ends, the begin's partner.
 void slice_loop(const SlicedMesh& mesh, std::span<const RidgeEdge> ridges,
                 const RidgeEdgeLoop& loop, const ThetaQuantization& q,
-                std::span<const ThetaSlice> slices, std::vector<EntryPair>& out);
+                std::span<const ThetaSlice> slices, std::vector<Crossing>& scratch,
+                std::vector<EntryPair>& out);
 
 /// \brief A point light's X axis pierces occluding face \p f at X < 0 (light inside the
 /// scene, Sec. 11.2): in every entry a far-sheet walk starts on the axis (phi = -inf) in \p f.
 void slice_from_axis(const SlicedMesh& mesh, std::uint32_t f, std::span<const ThetaSlice> slices,
-                     std::vector<EntryPair>& out);
+                     std::vector<Crossing>& scratch, std::vector<EntryPair>& out);
 
 /// Where the light's X axis pierces face \p f (its X), if it does: NaN otherwise.
 double axis_piercing(const SlicedMesh& mesh, std::uint32_t f);

@@ -30,11 +30,16 @@ struct Frustum {
   double side(int plane, Vec3 p) const {
     const Vec3 c = camera(p);
     switch (plane) {
-      case 0: return c.z - near;
-      case 1: return tan_x * c.z - c.x;
-      case 2: return tan_x * c.z + c.x;
-      case 3: return tan_y * c.z - c.y;
-      default: return tan_y * c.z + c.y;
+      case 0:
+        return c.z - near;
+      case 1:
+        return tan_x * c.z - c.x;
+      case 2:
+        return tan_x * c.z + c.x;
+      case 3:
+        return tan_y * c.z - c.y;
+      default:
+        return tan_y * c.z + c.y;
     }
   }
   bool holds(Vec3 p) const {
@@ -93,7 +98,8 @@ ViewTheta view_theta(const Scene& scene, const LightFrame& frame) {
     }
   }
   // A convex region around the light's X axis has thetas in no arc shorter than pi.
-  view.bounded = view.lo <= view.hi && !(frame.point_light() && view.hi - view.lo >= std::numbers::pi);
+  view.bounded =
+      view.lo <= view.hi && !(frame.point_light() && view.hi - view.lo >= std::numbers::pi);
   return view;
 }
 
