@@ -37,9 +37,9 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
     }
     if (shadows(pair)) return {true, next_x};
   }
-  const AngularPair* before = table.narrow_before(query.entry, phi);
+  const auto [before, narrow] = table.narrow_from(query.entry, phi);
   if (!up && before) ahead(before->reach);  // the narrow pairs skipped all end before phi
-  for (const AngularPair& pair : table.narrow_from(query.entry, phi)) {
+  for (const AngularPair& pair : narrow) {
     if (pair.phi_begin > phi) {  // sorted by phi_begin: no later pair holds the point
       if (up) ahead(pair.phi_begin);
       break;

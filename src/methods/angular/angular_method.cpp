@@ -36,6 +36,7 @@ void AngularMethod::build(const Scene& scene, std::size_t light, const Context& 
   // Sec. 7, step 1: the RE loops of every object sliced entry by entry.
   const std::vector<FarSheets> sheets = occluding_sheets(scene, light_);
   table_ = AngularTable::build(scene, *frame_, sheets, table_options_);
+  boundaries_ = ThetaBoundaries(*frame_, table_.theta());
   depth_tolerance_ = 1e-7 * std::max(box.diagonal(), 1e-12);
   lookup_calls_ = 0;
 }
@@ -65,25 +66,25 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
       continue;
     }
     const ScanLineRun run(*frame_, cam, plane, row);
+    int k = -2;  // the entry of the previous run, unknown at the start of the stretch
     while (x < face_end) {
       // Sec. 7, step 2: query the first pixel of the run.
-      const std::size_t j = surfaces.index(x, row);
       LookupQuery query;
-      query.local = frame_->local(surfaces.point(j));
-      const AngularPoint a = frame_->angular_local(query.local);
-      const int k = quant.index(a.theta);
+      query.local = run.local(x);
+      k = boundaries_.locate(query.local, k);
       query.entry = quant.entry(k);
-      query.phi = a.phi;
+      query.phi = frame_->phi_local(query.local);
       query.face = face;
       query.column = x;
-      query.phi_increasing = frame_->angular_local(run.local(x + 1.0)).phi >= a.phi;
+      query.phi_increasing = run.phi_increasing(x);
       query.depth_tolerance = depth_tolerance_;
       const LookupResult result = lookup(table_, run, query);
       ++lookups;
       // Steps 3-4: hold the answer until nextX or the end of the maximum run (eq. 7).
-      const double end = std::min(result.next_x, max_run_end(run, *frame_, quant, k, x));
+      const double end = std::min(result.next_x, max_run_end(run, boundaries_, k, x));
       const int stop = int(std::clamp(std::ceil(end), double(x + 1), double(face_end)));
-      std::fill_n(&mask.pixels[j], stop - x, result.shadowed ? kMaskShadow : kMaskLit);
+      std::fill_n(&mask.pixels[surfaces.index(x, row)], stop - x,
+                  result.shadowed ? kMaskShadow : kMaskLit);
       x = stop;
     }
   }

@@ -5,6 +5,7 @@
 #include "angular_table.h"
 #include "light_frame.h"
 #include "ridge_edges.h"
+#include "scan_line_run.h"
 #include "shadowkit/methods/shadow_method.h"
 
 namespace shadowkit {
@@ -32,6 +33,7 @@ class AngularMethod final : public ShadowMethod {
   Light light_;
   std::optional<LightFrame> frame_;
   AngularTable table_;
+  ThetaBoundaries boundaries_;
   double depth_tolerance_ = 0;
   double lookup_calls_ = 0;
 };

@@ -105,19 +105,14 @@ bool covers(const ThetaSlice& s, const HiddenFace& p, const AngularPair& pp, con
 
 }  // namespace
 
-std::span<const AngularPair> AngularTable::narrow_from(int k, double phi) const {
+std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow_from(
+    int k, double phi) const {
   if (k < 0) return {};
   const std::span<const AngularPair> narrow = entry(k).subspan(wide_[k]);
   const auto first = std::partition_point(narrow.begin(), narrow.end(),
                                           [phi](const AngularPair& p) { return p.reach < phi; });
-  return narrow.subspan(std::size_t(first - narrow.begin()));
-}
-
-const AngularPair* AngularTable::narrow_before(int k, double phi) const {
-  if (k < 0) return nullptr;
-  const std::span<const AngularPair> narrow = entry(k).subspan(wide_[k]);
-  const std::size_t skipped = narrow.size() - narrow_from(k, phi).size();
-  return skipped ? &narrow[skipped - 1] : nullptr;
+  const std::size_t skipped = std::size_t(first - narrow.begin());
+  return {skipped ? &narrow[skipped - 1] : nullptr, narrow.subspan(skipped)};
 }
 
 int ThetaQuantization::entry(int k) const {

@@ -79,11 +79,9 @@ class AngularTable {
   std::span<const AngularPair> wide(int k) const { return entry(k).first(wide_[k]); }
   /// The narrow pairs of entry \p k, sorted by phi_begin, from the first whose reach gets to
   /// \p phi: the ones before it all end before phi (a binary search instead of the paper's
-  /// scan from the start of the entry).
-  std::span<const AngularPair> narrow_from(int k, double phi) const;
-  /// The narrow pair just before narrow_from(k, phi), whose reach is the largest end before
-  /// phi; nullptr if none.
-  const AngularPair* narrow_before(int k, double phi) const;
+  /// scan from the start of the entry); and the pair just before those, whose reach is the
+  /// largest end before phi (nullptr if none).
+  std::pair<const AngularPair*, std::span<const AngularPair>> narrow_from(int k, double phi) const;
   const HiddenFace& hidden(std::uint32_t i) const { return hidden_[i]; }
   std::size_t pair_count() const { return pairs_.size(); }
   /// The ridge edges and RE loops the table was built from.

@@ -52,6 +52,7 @@ TEST(ScanLineRun, MaximumRunLengthAgreesWithBruteForce) {
   int compared = 0;
   for (const Case& test : cases()) {
     const LightFrame frame(test.light, cam, {}, 0);
+    const ThetaBoundaries bounds(frame, test.q);
     for (int row = 110; row < 200; row += 7) {
       const ScanLineRun run(frame, cam, kGround, row);
       for (int c0 = 0; c0 < 400; c0 += 13) {
@@ -61,7 +62,7 @@ TEST(ScanLineRun, MaximumRunLengthAgreesWithBruteForce) {
                test.q.index(frame.angular(ground_point(cam, brute, row)).theta) == k) {
           ++brute;
         }
-        const double end = max_run_end(run, frame, test.q, k, c0);
+        const double end = max_run_end(run, bounds, k, c0);
         const int predicted = int(std::min(std::ceil(end), 400.0));
         EXPECT_EQ(predicted, brute) << "row " << row << " c0 " << c0;
         compared += brute < 400;

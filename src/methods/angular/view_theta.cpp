@@ -116,9 +116,9 @@ int automatic_resolution(const Scene& scene, const LightFrame& frame, double the
     }
   }
   if (steps.empty()) return scene.camera.height;
-  const auto median = steps.begin() + steps.size() / 2;
-  std::nth_element(steps.begin(), median, steps.end());
-  return int(std::clamp(theta_range / *median, 1.0, 1e6));
+  const auto quartile = steps.begin() + steps.size() / 4;
+  std::nth_element(steps.begin(), quartile, steps.end());
+  return int(std::clamp(theta_range / *quartile, 1.0, 1e6));
 }
 
 }  // namespace shadowkit
