@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 
@@ -192,8 +193,9 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   // Step 1.7: sort each entry by phi; Sec. 10: saturate.
   table.wide_.assign(table.theta_.resolution, 0);
   std::vector<std::uint32_t> kept(table.theta_.resolution);
+  tbb::enumerable_thread_specific<SortScratch> scratch;
   tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
-    kept[k] = table.sort_entry(k, options.saturated ? &slices[k] : nullptr);
+    kept[k] = table.sort_entry(k, options.saturated ? &slices[k] : nullptr, scratch.local());
   });
   table.compact(kept);
   return table;
@@ -212,39 +214,68 @@ void AngularTable::fill_entries(std::span<const std::vector<EntryPair>> lists) {
   }
 }
 
-std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate) {
-  const auto begin = pairs_.begin() + start_[k];
-  auto last = pairs_.begin() + start_[k + 1];
-  if (begin == last) return 0;
-  std::sort(begin, last, [](const AngularPair& a, const AngularPair& b) {
-    if (a.phi_begin != b.phi_begin) return a.phi_begin < b.phi_begin;
-    return a.hidden != b.hidden ? a.hidden < b.hidden : a.phi_end < b.phi_end;
+namespace {
+
+// A double's bits as an unsigned integer of the same order (NaN excluded).
+std::uint64_t ordered_bits(double x) {
+  std::uint64_t u;
+  std::memcpy(&u, &x, sizeof u);
+  return u >> 63 ? ~u : u | (std::uint64_t(1) << 63);
+}
+
+// Sec. 10: \p q adds nothing when one of the last few kept pairs, or the one reaching
+// furthest, already covers it.
+bool saturated_by(const AngularTable& table, const ThetaSlice& s, std::span<const AngularPair> kept,
+                  std::size_t furthest, const AngularPair& q) {
+  constexpr std::size_t kRecent = 2;
+  const HiddenFace& hq = table.hidden(q.hidden);
+  const std::size_t first = kept.size() > kRecent ? kept.size() - kRecent : 0;
+  for (std::size_t i = first; i < kept.size(); ++i) {
+    if (covers(s, table.hidden(kept[i].hidden), kept[i], hq, q)) return true;
+  }
+  return furthest < first && covers(s, table.hidden(kept[furthest].hidden), kept[furthest], hq, q);
+}
+
+}  // namespace
+
+std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch) {
+  const std::span<AngularPair> entry(pairs_.data() + start_[k], pairs_.data() + start_[k + 1]);
+  if (entry.empty()) return 0;
+  // Step 1.7: sort by phi_begin, on 16-byte keys rather than whole pairs.
+  std::vector<SortKey>& keys = scratch.keys;
+  keys.resize(entry.size());
+  for (std::uint32_t i = 0; i < entry.size(); ++i) {
+    keys[i] = {ordered_bits(entry[i].phi_begin), entry[i].hidden, i};
+  }
+  std::sort(keys.begin(), keys.end(), [](const SortKey& a, const SortKey& b) {
+    return a.phi != b.phi ? a.phi < b.phi : a.hidden < b.hidden;
   });
-  if (saturate) {
-    // Sec. 10: drop a pair when the earlier pair reaching furthest already covers it.
-    auto out = begin;
-    auto cover = begin;
-    for (auto it = begin; it != last; ++it) {
-      if (out != begin &&
-          covers(*saturate, hidden_[cover->hidden], *cover, hidden_[it->hidden], *it)) {
-        continue;
-      }
-      *out = *it;
-      if (out == begin || out->phi_end > cover->phi_end) cover = out;
-      ++out;
+  std::vector<AngularPair>& sorted = scratch.pairs;
+  sorted.clear();
+  std::size_t furthest = 0;
+  for (const SortKey& key : keys) {
+    const AngularPair& pair = entry[key.index];
+    if (saturate && !sorted.empty() && saturated_by(*this, *saturate, sorted, furthest, pair)) {
+      continue;
     }
-    last = out;
+    if (sorted.empty() || pair.phi_end > sorted[furthest].phi_end) furthest = sorted.size();
+    sorted.push_back(pair);
   }
   // Wide pairs first, so that the reach of the narrow ones skips well.
-  double extent_end = begin->phi_end;
-  for (auto it = begin; it != last; ++it) extent_end = std::max(extent_end, it->phi_end);
-  const double wide = (extent_end - begin->phi_begin) / 16;
-  const auto narrow = std::stable_partition(
-      begin, last, [wide](const AngularPair& p) { return p.phi_end - p.phi_begin > wide; });
-  wide_[k] = std::uint32_t(narrow - begin);
+  const double wide = (sorted[furthest].phi_end - sorted.front().phi_begin) / 16;
+  const auto is_wide = [wide](const AngularPair& p) { return p.phi_end - p.phi_begin > wide; };
+  std::size_t out = 0;
+  for (const AngularPair& pair : sorted) {
+    if (is_wide(pair)) entry[out++] = pair;
+  }
+  wide_[k] = std::uint32_t(out);
   double reach = -std::numeric_limits<double>::infinity();
-  for (auto it = narrow; it != last; ++it) it->reach = reach = std::max(reach, it->phi_end);
-  return std::uint32_t(last - begin);
+  for (const AngularPair& pair : sorted) {
+    if (is_wide(pair)) continue;
+    entry[out] = pair;
+    entry[out++].reach = reach = std::max(reach, pair.phi_end);
+  }
+  return std::uint32_t(out);
 }
 
 void AngularTable::compact(const std::vector<std::uint32_t>& kept) {

@@ -57,11 +57,15 @@ bool partner(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, const Cr
     const std::uint32_t first = m.mesh.face_start[f], n = m.mesh.face_size(f);
     std::int64_t other = -1;
     int crossings = 0;
-    for (std::uint32_t k = 0; k < n; ++k) {
-      const std::uint32_t e = m.mesh.corner_edge[first + k];
-      if (!crosses(m, s, e)) continue;
-      ++crossings;
-      if (e != at.edge) other = e;
+    bool above = s.side(m.local[m.mesh.face_vertices[first]]) >= 0;
+    for (std::uint32_t k = 0; k < n; ++k) {  // corner k's edge ends at corner k + 1
+      const bool next_above = s.side(m.local[m.mesh.face_vertices[first + (k + 1) % n]]) >= 0;
+      if (next_above != above) {
+        ++crossings;
+        const std::uint32_t e = m.mesh.corner_edge[first + k];
+        if (e != at.edge) other = e;
+      }
+      above = next_above;
     }
     if (crossings == 2 && other >= 0) {
       out = edge_crossing(m, s, std::uint32_t(other));
@@ -154,16 +158,16 @@ void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Ri
     const int k1 = int(std::ceil((hi - q.theta_min) / q.step - 0.5));
     for (int k = k0; k <= k1; ++k) {
       const int entry = q.entry(k);
-      if (entry < 0 || !crosses(m, slices[entry], re.edge)) continue;
+      if (entry < 0) continue;
       const ThetaSlice& s = slices[entry];
+      // Direction constraint (RE-loops paper, Sec. 3.2): seen from the light, every far
+      // sheet lies to the right of its REs (larger phi), so shadow begins where an RE goes
+      // up through the slice and ends where one comes down, the begin's partner.
+      if (!(s.side(m.local[re.from]) < 0 && s.side(m.local[re.to]) >= 0)) continue;
       const Crossing at = edge_crossing(m, s, re.edge);
       if (s.rho(at.p) <= 0) continue;  // in the half-plane at theta + pi: another entry's
       Crossing next;
-      if (!partner(m, s, re.face, at, cuts, next)) continue;
-      Crossing clipped = next;
-      clip_at_axis(s, at, clipped);
-      // Direction constraint: shadow begins where the far sheet goes on to larger phi.
-      if (clipped.phi > at.phi) walk(m, s, re.face, at, next, cuts, out);
+      if (partner(m, s, re.face, at, cuts, next)) walk(m, s, re.face, at, next, cuts, out);
     }
   }
 }
