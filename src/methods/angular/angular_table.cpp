@@ -30,11 +30,38 @@ struct ObjectLoops {
   bool wraps = false;  // an RE passes behind the light's back (theta = +-pi)
 };
 
-// Sec. 7, steps 1.1-1.3: ridge edges, their loops, light-frame coordinates and theta range.
+// Light-frame vertices, and the occluding faces' planes (the depth of Sec. 5) from \p first
+// on, in parallel over one object's vertices and faces.
+void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& sheets,
+                        const LightFrame& frame, std::uint32_t first, ObjectLoops& loops,
+                        std::vector<HiddenFace>& hidden) {
+  const SceneObject& object = scene.objects[o];
+  const Mesh& mesh = object.mesh;
+  loops.local.resize(mesh.vertices.size());
+  tbb::parallel_for(std::size_t(0), mesh.vertices.size(),
+                    [&](std::size_t v) { loops.local[v] = frame.local(mesh.vertices[v]); });
+  loops.hidden_id.assign(mesh.face_count(), 0);
+  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
+    if (sheets.occludes(f)) loops.hidden_id[f] = first++;
+  }
+  std::vector<char> pierced(frame.point_light() ? mesh.face_count() : 0, 0);
+  tbb::parallel_for(std::uint32_t(0), std::uint32_t(mesh.face_count()), [&](std::uint32_t f) {
+    if (!sheets.occludes(f)) return;
+    const std::uint32_t face = object.first_face + f;
+    hidden[loops.hidden_id[f]] = {frame.plane(scene.face_plane(face)), double(sheets.side[f]),
+                                  face};
+    if (pierced.empty()) return;
+    const SlicedMesh m{mesh, sheets, loops.local, loops.theta, loops.hidden_id};
+    pierced[f] = axis_piercing(m, f) < 0;
+  });
+  for (std::uint32_t f = 0; f < pierced.size(); ++f) {
+    if (pierced[f]) loops.axis_faces.push_back(f);
+  }
+}
+
+// Sec. 7, steps 1.1-1.3: ridge edges, their loops and their theta range.
 void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& frame,
                 ObjectLoops& o) {
-  o.local.resize(mesh.vertices.size());
-  for (std::size_t v = 0; v < o.local.size(); ++v) o.local[v] = frame.local(mesh.vertices[v]);
   o.ridges = find_ridge_edges(mesh, sheets);
   o.loops = chain_ridge_edge_loops(o.ridges);
   o.theta.assign(mesh.vertices.size(), 0);
@@ -91,18 +118,32 @@ double ray_depth(const ThetaSlice& s, const FrameAffine& plane, double phi) {
   return std::isfinite(t) && t > 0 ? t : std::numeric_limits<double>::infinity();
 }
 
-// Sec. 10: \p q adds nothing to \p p when p holds q's phi range and q lies beyond p's face
-// over it (depth along rays is linear-fractional in phi, so both ends decide).
-bool covers(const ThetaSlice& s, const HiddenFace& p, const AngularPair& pp, const HiddenFace& q,
-            const AngularPair& qp) {
-  if (pp.phi_begin > qp.phi_begin || pp.phi_end < qp.phi_end) return false;
-  if (!std::isfinite(qp.phi_begin) || !std::isfinite(qp.phi_end)) return false;
-  for (const double phi : {qp.phi_begin, qp.phi_end}) {
-    const double tp = ray_depth(s, p.plane, phi), tq = ray_depth(s, q.plane, phi);
-    if (!(tq > tp * (1 + 1e-9)) || !std::isfinite(tq)) return false;
+// Sec. 10: whether pair \p q adds nothing to an entry, given another pair: the other holds
+// q's phi range and lies nearer the light at both of q's ends (depth along the rays is
+// linear-fractional in phi, so the ends decide).
+class CoverTest {
+ public:
+  CoverTest(const AngularTable& table, const ThetaSlice& s, const AngularPair& q)
+      : table_(table), s_(s), q_(q) {
+    const FrameAffine& plane = table.hidden(q.hidden).plane;
+    depth_[0] = ray_depth(s, plane, q.phi_begin);
+    depth_[1] = ray_depth(s, plane, q.phi_end);
+    possible_ = std::isfinite(depth_[0]) && std::isfinite(depth_[1]);
   }
-  return true;
-}
+  bool by(const AngularPair& p) const {
+    if (!possible_ || p.phi_begin > q_.phi_begin || p.phi_end < q_.phi_end) return false;
+    const FrameAffine& plane = table_.hidden(p.hidden).plane;
+    return depth_[0] > ray_depth(s_, plane, q_.phi_begin) * (1 + 1e-9) &&
+           depth_[1] > ray_depth(s_, plane, q_.phi_end) * (1 + 1e-9);
+  }
+
+ private:
+  const AngularTable& table_;
+  const ThetaSlice& s_;
+  const AngularPair& q_;
+  double depth_[2];
+  bool possible_;
+};
 
 }  // namespace
 
@@ -136,21 +177,11 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     first_hidden[o + 1] = first_hidden[o] + n;
   }
   table.hidden_.resize(first_hidden.back());
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], table.hidden_);
+  }
   tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
-    const SceneObject& object = scene.objects[o];
-    ObjectLoops& loops = objects[o];
-    find_loops(object.mesh, sheets[o], frame, loops);
-    loops.hidden_id.assign(object.mesh.face_count(), 0);
-    std::uint32_t next = first_hidden[o];
-    for (std::uint32_t f = 0; f < object.mesh.face_count(); ++f) {
-      if (!sheets[o].occludes(f)) continue;
-      const std::uint32_t face = object.first_face + f;
-      table.hidden_[next] = {frame.plane(scene.face_plane(face)), double(sheets[o].side[f]), face};
-      loops.hidden_id[f] = next++;
-      if (!frame.point_light()) continue;
-      const SlicedMesh m{object.mesh, sheets[o], loops.local, loops.theta, loops.hidden_id};
-      if (axis_piercing(m, f) < 0) loops.axis_faces.push_back(f);
-    }
+    find_loops(scene.objects[o].mesh, sheets[o], frame, objects[o]);
   });
   table.theta_ = quantize(scene, frame, objects, options.resolution);
   for (const ObjectLoops& o : objects) {
@@ -228,12 +259,12 @@ std::uint64_t ordered_bits(double x) {
 bool saturated_by(const AngularTable& table, const ThetaSlice& s, std::span<const AngularPair> kept,
                   std::size_t furthest, const AngularPair& q) {
   constexpr std::size_t kRecent = 2;
-  const HiddenFace& hq = table.hidden(q.hidden);
+  const CoverTest covered(table, s, q);
   const std::size_t first = kept.size() > kRecent ? kept.size() - kRecent : 0;
   for (std::size_t i = first; i < kept.size(); ++i) {
-    if (covers(s, table.hidden(kept[i].hidden), kept[i], hq, q)) return true;
+    if (covered.by(kept[i])) return true;
   }
-  return furthest < first && covers(s, table.hidden(kept[furthest].hidden), kept[furthest], hq, q);
+  return furthest < first && covered.by(kept[furthest]);
 }
 
 }  // namespace
