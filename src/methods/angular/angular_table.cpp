@@ -233,16 +233,27 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
 }
 
 void AngularTable::fill_entries(std::span<const std::vector<EntryPair>> lists) {
-  start_.assign(theta_.resolution + 1, 0);
-  for (const auto& list : lists) {
-    for (const EntryPair& it : list) ++start_[it.first + 1];
+  // Count per list and entry, then every list scatters into its own slots, in parallel.
+  const std::size_t r = std::size_t(theta_.resolution);
+  std::vector<std::vector<std::uint32_t>> slot(lists.size(), std::vector<std::uint32_t>(r, 0));
+  tbb::parallel_for(std::size_t(0), lists.size(), [&](std::size_t l) {
+    for (const EntryPair& it : lists[l]) ++slot[l][it.first];
+  });
+  start_.assign(r + 1, 0);
+  std::uint32_t total = 0;
+  for (std::size_t k = 0; k < r; ++k) {
+    start_[k] = total;
+    for (std::vector<std::uint32_t>& counts : slot) {
+      const std::uint32_t n = counts[k];
+      counts[k] = total;
+      total += n;
+    }
   }
-  for (int k = 0; k < theta_.resolution; ++k) start_[k + 1] += start_[k];
-  pairs_.resize(start_.back());
-  std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-  for (const auto& list : lists) {
-    for (const EntryPair& it : list) pairs_[fill[it.first]++] = it.second;
-  }
+  start_[r] = total;
+  pairs_.resize(total);
+  tbb::parallel_for(std::size_t(0), lists.size(), [&](std::size_t l) {
+    for (const EntryPair& it : lists[l]) pairs_[slot[l][it.first]++] = it.second;
+  });
 }
 
 namespace {
@@ -310,17 +321,15 @@ std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortSc
 }
 
 void AngularTable::compact(const std::vector<std::uint32_t>& kept) {
-  std::uint32_t out = 0;
-  for (int k = 0; k < theta_.resolution; ++k) {
-    const std::uint32_t from = start_[k];
-    std::copy_n(pairs_.begin() + from, kept[k], pairs_.begin() + out);
-    start_[k] = out;
-    out += kept[k];
-    saturated_ += start_[k + 1] - from - kept[k];
-  }
-  start_[theta_.resolution] = out;
-  pairs_.resize(out);
-  pairs_.shrink_to_fit();
+  std::vector<std::uint32_t> start(kept.size() + 1, 0);
+  for (std::size_t k = 0; k < kept.size(); ++k) start[k + 1] = start[k] + kept[k];
+  std::vector<AngularPair> pairs(start.back());
+  tbb::parallel_for(std::size_t(0), kept.size(), [&](std::size_t k) {
+    std::copy_n(pairs_.begin() + start_[k], kept[k], pairs.begin() + start[k]);
+  });
+  saturated_ = pairs_.size() - pairs.size();
+  pairs_ = std::move(pairs);
+  start_ = std::move(start);
 }
 
 }  // namespace shadowkit

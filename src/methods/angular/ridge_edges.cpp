@@ -1,5 +1,7 @@
 #include "ridge_edges.h"
 
+#include <tbb/parallel_for.h>
+
 #include <unordered_set>
 
 #include "shadowkit/methods/shadow_method.h"
@@ -58,13 +60,20 @@ bool one_solid(const Mesh& mesh) {
 }
 
 std::vector<RidgeEdge> find_ridge_edges(const Mesh& mesh, const FarSheets& sheets) {
+  // Per face corner: its edge bounds the face's far sheet (in parallel over faces).
+  std::vector<char> bounding(mesh.corner_edge.size(), 0);
+  tbb::parallel_for(std::uint32_t(0), std::uint32_t(mesh.face_count()), [&](std::uint32_t f) {
+    if (!sheets.occludes(f)) return;
+    for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+      bounding[c] = sheet_neighbour(mesh, sheets, f, mesh.corner_edge[c]) < 0;
+    }
+  });
   std::vector<RidgeEdge> ridges;
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
-    if (!sheets.occludes(f)) continue;
     const std::uint32_t n = mesh.face_size(f);
     for (std::uint32_t k = 0; k < n; ++k) {
+      if (!bounding[mesh.face_start[f] + k]) continue;
       const std::uint32_t e = mesh.corner_edge[mesh.face_start[f] + k];
-      if (sheet_neighbour(mesh, sheets, f, e) >= 0) continue;
       // The face walks its corners counter-clockwise about its normal; the far sheet's
       // normal is the face's when the light is behind it.
       std::uint32_t a = mesh.face_vertex(f, k), b = mesh.face_vertex(f, (k + 1) % n);
