@@ -10,6 +10,7 @@
 #include "../../testing/test_scenes.h"
 #include "../raytrace/raytrace_method.h"
 #include "angular_method.h"
+#include "loop_slicer.h"
 #include "occluders.h"
 #include "shadowkit/core/error.h"
 
@@ -198,6 +199,56 @@ TEST(Pairing, AHoleLikeNotchIsOneSpanWithTheFarSheetsDepth) {
   const LightFrame frame(scene.lights[0], scene.camera, {}, 0);
   EXPECT_FALSE(bottom.behind(frame.local({0, 0.5, 0}), 1e-9));  // the notch floor
   EXPECT_TRUE(bottom.behind(frame.local({0, -1, 0}), 1e-9));    // the ground under it
+}
+
+// Fig. 27: the U-shaped solid under a directional light tilted towards -z, sliced exactly at
+// the height of its arms' top back edges. Each edge joins two equal adjacent peaks of the RE
+// loop and lies in the slice (exactly: a directional slice is Y = theta, and both ends have
+// the same Y). As in the papers, the edge between the peaks crosses nothing and the peaks
+// pair with each other: one pair per arm, from its left peak to its right one, on the hidden
+// back face; the notch between the arms holds nothing.
+TEST(Pairing, EqualAdjacentPeaksPairWithEachOther) {
+  const std::vector<Vec3> u = {{-2, 0, 0},  {2, 0, 0},    {2, 2, 0},  {1, 2, 0},
+                               {1, 0.5, 0}, {-1, 0.5, 0}, {-1, 2, 0}, {-2, 2, 0}};
+  const Light light = Light::directional(normalize(Vec3{0, -1, -0.5}));
+  const Scene scene = testing::make_scene(front_camera(), {light}, {prism(u)});
+  const Mesh& mesh = scene.objects[0].mesh;
+  const LightFrame frame(light, scene.camera, {}, 0);
+  const FarSheets sheets = far_sheets(mesh, light, true);
+  std::vector<Vec3> local;
+  std::vector<double> theta;
+  for (const Vec3& v : mesh.vertices)
+    local.push_back(frame.local(v)), theta.push_back(local.back().y);
+  std::vector<std::uint32_t> hidden_id(mesh.face_count());
+  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) hidden_id[f] = f;
+  const std::vector<RidgeEdge> ridges = find_ridge_edges(mesh, sheets);
+  const std::vector<RidgeEdgeLoop> loops = chain_ridge_edge_loops(ridges);
+  ASSERT_EQ(loops.size(), 1u);
+
+  ThetaSlice peak;
+  peak.theta = frame.local({-2, 2, -1}).y;
+  peak.point_light = false;
+  ASSERT_EQ(frame.local({-1, 2, -1}).y, peak.theta);  // equal adjacent peaks, exactly
+  ASSERT_EQ(frame.local({1, 2, -1}).y, peak.theta);
+  const ThetaQuantization one_entry{-1e3, 2e3, 1, false};
+  const SlicedMesh sliced{mesh, sheets, local, theta, hidden_id};
+  std::vector<Crossing> scratch;
+  std::vector<EntryPair> out;
+  slice_loop(sliced, ridges, loops[0], one_entry, {&peak, 1}, scratch, out);
+
+  ASSERT_EQ(out.size(), 2u);
+  std::sort(out.begin(), out.end(), [](const EntryPair& a, const EntryPair& b) {
+    return a.second.phi_begin < b.second.phi_begin;
+  });
+  const double phi[4] = {frame.local({-2, 2, -1}).x, frame.local({-1, 2, -1}).x,
+                         frame.local({1, 2, -1}).x, frame.local({2, 2, -1}).x};
+  EXPECT_DOUBLE_EQ(out[0].second.phi_begin, phi[0]);
+  EXPECT_DOUBLE_EQ(out[0].second.phi_end, phi[1]);
+  EXPECT_DOUBLE_EQ(out[1].second.phi_begin, phi[2]);
+  EXPECT_DOUBLE_EQ(out[1].second.phi_end, phi[3]);
+  for (const EntryPair& p : out) {
+    EXPECT_NEAR(mesh.planes[p.second.hidden].normal.z, -1, 1e-12);  // the back face
+  }
 }
 
 // Sec. 5: with hidden edges inserted in duplicate, a cube lit from a corner gives, in the
