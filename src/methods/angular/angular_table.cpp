@@ -9,6 +9,7 @@
 #include <cstring>
 #include <limits>
 #include <numbers>
+#include <numeric>
 
 #include "loop_slicer.h"
 #include "view_theta.h"
@@ -124,14 +125,15 @@ double ray_depth(const ThetaSlice& s, const FrameAffine& plane, double phi) {
 class CoverTest {
  public:
   CoverTest(const AngularTable& table, const ThetaSlice& s, const AngularPair& q)
-      : table_(table), s_(s), q_(q) {
-    const FrameAffine& plane = table.hidden(q.hidden).plane;
-    depth_[0] = ray_depth(s, plane, q.phi_begin);
-    depth_[1] = ray_depth(s, plane, q.phi_end);
-    possible_ = std::isfinite(depth_[0]) && std::isfinite(depth_[1]);
-  }
-  bool by(const AngularPair& p) const {
-    if (!possible_ || p.phi_begin > q_.phi_begin || p.phi_end < q_.phi_end) return false;
+      : table_(table), s_(s), q_(q) {}
+  bool by(const AngularPair& p) {
+    if (p.phi_begin > q_.phi_begin || p.phi_end < q_.phi_end) return false;
+    if (!std::isfinite(depth_[0])) {  // q's own depths, once
+      const FrameAffine& plane = table_.hidden(q_.hidden).plane;
+      depth_[0] = ray_depth(s_, plane, q_.phi_begin);
+      depth_[1] = ray_depth(s_, plane, q_.phi_end);
+      if (!std::isfinite(depth_[0]) || !std::isfinite(depth_[1])) return false;
+    }
     const FrameAffine& plane = table_.hidden(p.hidden).plane;
     return depth_[0] > ray_depth(s_, plane, q_.phi_begin) * (1 + 1e-9) &&
            depth_[1] > ray_depth(s_, plane, q_.phi_end) * (1 + 1e-9);
@@ -141,8 +143,7 @@ class CoverTest {
   const AngularTable& table_;
   const ThetaSlice& s_;
   const AngularPair& q_;
-  double depth_[2];
-  bool possible_;
+  double depth_[2] = {std::numeric_limits<double>::infinity(), 0};
 };
 
 }  // namespace
@@ -199,6 +200,18 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     for (std::uint32_t l = 0; l < objects[o].loops.size(); ++l) work.emplace_back(o, l);
     for (const std::uint32_t f : objects[o].axis_faces) work.emplace_back(o, ~f);
   }
+  // Loops in order of phi, so that each entry's pairs arrive nearly sorted (step 1.7).
+  std::vector<double> phi(work.size(), 0);
+  for (std::size_t i = 0; i < work.size(); ++i) {
+    const auto [o, l] = work[i];
+    if (l >= objects[o].loops.size()) continue;
+    const RidgeEdge& re = objects[o].ridges[objects[o].loops[l].edges[0]];
+    phi[i] = frame.phi_local(objects[o].local[re.from]);
+  }
+  std::vector<std::uint32_t> order(work.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return phi[a] < phi[b]; });
   struct Output {
     std::vector<Crossing> scratch;
     std::vector<EntryPair> pairs;
@@ -207,7 +220,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, work.size(), 64), [&](const auto& range) {
     Output& out = outputs.local();
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      const auto [o, l] = work[i];
+      const auto [o, l] = work[order[i]];
       const ObjectLoops& loops = objects[o];
       const SlicedMesh m{scene.objects[o].mesh, sheets[o], loops.local, loops.theta,
                          loops.hidden_id};
@@ -270,7 +283,7 @@ std::uint64_t ordered_bits(double x) {
 bool saturated_by(const AngularTable& table, const ThetaSlice& s, std::span<const AngularPair> kept,
                   std::size_t furthest, const AngularPair& q) {
   constexpr std::size_t kRecent = 2;
-  const CoverTest covered(table, s, q);
+  CoverTest covered(table, s, q);
   const std::size_t first = kept.size() > kRecent ? kept.size() - kRecent : 0;
   for (std::size_t i = first; i < kept.size(); ++i) {
     if (covered.by(kept[i])) return true;
