@@ -83,7 +83,7 @@ void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& fra
 
 // Sec. 3: theta from the global minimum to the global maximum over the RE loops (the whole
 // turn when they go around the light), cut to the theta the camera can see (eq. 4's range
-// "based on the view volume"), in R entries; one more entry at each end against rounding.
+// "based on the view volume"), in R entries.
 ThetaQuantization quantize(const Scene& scene, const LightFrame& frame,
                            const std::vector<ObjectLoops>& objects, int resolution) {
   ThetaQuantization q;
@@ -101,11 +101,14 @@ ThetaQuantization quantize(const Scene& scene, const LightFrame& frame,
     hi = std::min(hi, view.hi);
   }
   if (!(lo <= hi)) lo = 0, hi = 1;  // no ridge edge in view: an empty table of any range
+  if (!q.full_turn) {  // hazard: a visible point on the range's edge must round into it
+    const double pad = 1e-9 * std::max({std::abs(lo), std::abs(hi), hi - lo});
+    lo -= pad, hi += pad;
+  }
   const double range = std::max(hi - lo, 1e-12);
-  const int inner = resolution > 0 ? resolution : automatic_resolution(scene, frame, range);
-  q.step = range / inner;
-  q.theta_min = lo - (q.full_turn ? 0 : q.step);
-  q.resolution = inner + (q.full_turn ? 0 : 2);
+  q.resolution = resolution > 0 ? resolution : automatic_resolution(scene, frame, range);
+  q.step = range / q.resolution;
+  q.theta_min = lo;
   return q;
 }
 
