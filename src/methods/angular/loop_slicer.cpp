@@ -147,8 +147,14 @@ void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Ri
   for (const std::uint32_t i : loop.edges) {
     const RidgeEdge& re = ridges[i];
     double lo = m.theta[re.from], hi = m.theta[re.to];
+    const bool wraps = point && std::abs(hi - lo) > std::numbers::pi;  // behind the light
+    // Direction constraint (RE-loops paper, Sec. 3.2): seen from the light, every far sheet
+    // lies to the right of its REs (larger phi), so shadow begins where an RE goes up
+    // through a slice and ends where one comes down, the begin's partner. An RE clearly
+    // going down begins nothing; near-constant theta is left to the side test.
+    if ((hi - lo) * (wraps ? -1 : 1) < -1e-9) continue;
     if (lo > hi) std::swap(lo, hi);
-    if (point && hi - lo > std::numbers::pi) {  // the edge passes behind the light's back
+    if (wraps) {
       std::swap(lo, hi);
       hi += 2 * std::numbers::pi;
     }
@@ -160,10 +166,7 @@ void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Ri
       const int entry = q.entry(k);
       if (entry < 0) continue;
       const ThetaSlice& s = slices[entry];
-      // Direction constraint (RE-loops paper, Sec. 3.2): seen from the light, every far
-      // sheet lies to the right of its REs (larger phi), so shadow begins where an RE goes
-      // up through the slice and ends where one comes down, the begin's partner.
-      if (!(s.side(m.local[re.from]) < 0 && s.side(m.local[re.to]) >= 0)) continue;
+      if (!(s.side(m.local[re.from]) < 0 && s.side(m.local[re.to]) >= 0)) continue;  // up
       const Crossing at = edge_crossing(m, s, re.edge);
       if (s.rho(at.p) <= 0) continue;  // in the half-plane at theta + pi: another entry's
       Crossing next;
