@@ -26,10 +26,23 @@ struct ObjectLoops {
   std::vector<RidgeEdge> ridges;
   std::vector<RidgeEdgeLoop> loops;
   std::vector<std::uint32_t> hidden_id;   // per face, into AngularTable::hidden_
+  std::vector<char> convex;               // per occluding face
   std::vector<std::uint32_t> axis_faces;  // occluding faces the light's X axis pierces at X < 0
   double theta_lo = std::numeric_limits<double>::infinity(), theta_hi = -theta_lo;
   bool wraps = false;  // an RE passes behind the light's back (theta = +-pi)
 };
+
+// Face \p f turns the same way at every corner about its normal.
+bool convex_face(const Mesh& mesh, std::uint32_t f) {
+  const std::uint32_t n = mesh.face_size(f);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const Vec3 a = mesh.vertices[mesh.face_vertex(f, k)];
+    const Vec3 b = mesh.vertices[mesh.face_vertex(f, (k + 1) % n)];
+    const Vec3 c = mesh.vertices[mesh.face_vertex(f, (k + 2) % n)];
+    if (dot(cross(b - a, c - b), mesh.planes[f].normal) < 0) return false;
+  }
+  return true;
+}
 
 // Light-frame vertices, and the occluding faces' planes (the depth of Sec. 5) from \p first
 // on, in parallel over one object's vertices and faces.
@@ -46,13 +59,15 @@ void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& shee
     if (sheets.occludes(f)) loops.hidden_id[f] = first++;
   }
   std::vector<char> pierced(frame.point_light() ? mesh.face_count() : 0, 0);
+  loops.convex.assign(mesh.face_count(), 0);
   tbb::parallel_for(std::uint32_t(0), std::uint32_t(mesh.face_count()), [&](std::uint32_t f) {
     if (!sheets.occludes(f)) return;
     const std::uint32_t face = object.first_face + f;
     hidden[loops.hidden_id[f]] = {frame.plane(scene.face_plane(face)), double(sheets.side[f]),
                                   face};
     if (pierced.empty()) return;
-    const SlicedMesh m{mesh, sheets, loops.local, loops.theta, loops.hidden_id};
+    loops.convex[f] = convex_face(mesh, f);
+    const SlicedMesh m{mesh, sheets, loops.local, loops.theta, loops.convex, loops.hidden_id};
     pierced[f] = axis_piercing(m, f) < 0;
   });
   for (std::uint32_t f = 0; f < pierced.size(); ++f) {
@@ -216,7 +231,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t a, std::uint32_t b) { return phi[a] < phi[b]; });
   struct Output {
-    std::vector<Crossing> scratch;
+    SliceScratch scratch;
     std::vector<EntryPair> pairs;
   };
   tbb::enumerable_thread_specific<Output> outputs;
@@ -225,8 +240,8 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
       const auto [o, l] = work[order[i]];
       const ObjectLoops& loops = objects[o];
-      const SlicedMesh m{scene.objects[o].mesh, sheets[o], loops.local, loops.theta,
-                         loops.hidden_id};
+      const SlicedMesh m{scene.objects[o].mesh, sheets[o],    loops.local,
+                         loops.theta,           loops.convex, loops.hidden_id};
       if (l < loops.loops.size()) {
         slice_loop(m, loops.ridges, loops.loops[l], table.theta_, slices, out.scratch, out.pairs);
       } else {

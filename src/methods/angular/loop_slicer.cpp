@@ -111,19 +111,30 @@ void emit(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, double a, d
   out.emplace_back(s.entry, pair);
 }
 
-// Walks the far sheet from \p at across face f, whose other cut end \p next is known: one
-// pair per face, each hidden edge crossed shared by two pairs (inserted in duplicate).
-void walk(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, Crossing at, Crossing next,
-          std::vector<Crossing>& cuts, std::vector<EntryPair>& out) {
+// Walks the far sheet from \p at (on face f's edge, or on the light's X axis) across the
+// slice: one pair per face, each hidden edge crossed shared by two pairs (inserted in
+// duplicate), until the RE crossing where the shadow ends. While the walk crosses the convex
+// faces of the previous entry's walk from the same start, their exit edges still cross the
+// slice and are the only other crossings: they are taken from \p scratch's path.
+void walk(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, Crossing at,
+          SliceScratch& scratch, std::vector<EntryPair>& out) {
+  std::vector<WalkStep>& path = scratch.path;
   for (std::size_t step = 0; step < m.mesh.face_count(); ++step) {
+    Crossing next;
+    if (step < path.size() && path[step].face == f && m.convex[f] &&
+        crosses(m, s, path[step].exit)) {
+      next = edge_crossing(m, s, path[step].exit);
+    } else {
+      path.resize(step);
+      if (!partner(m, s, f, at, scratch.cuts, next)) return;
+      const auto exit = std::uint32_t(next.edge);
+      path.push_back({f, exit, sheet_neighbour(m.mesh, m.sheets, f, exit)});
+    }
     const bool clipped = clip_at_axis(s, at, next);
     emit(m, s, f, at.phi, next.phi, out);
-    if (clipped) return;
-    const std::int64_t g = sheet_neighbour(m.mesh, m.sheets, f, std::uint32_t(next.edge));
-    if (g < 0) return;  // an RE crossing: the shadow ends here
-    f = std::uint32_t(g);
+    if (clipped || path[step].beyond < 0) return;
+    f = std::uint32_t(path[step].beyond);
     at = next;
-    if (!partner(m, s, f, at, cuts, next)) return;
   }
 }
 
@@ -141,7 +152,7 @@ ThetaSlice theta_slice(const ThetaQuantization& q, bool point_light, int k) {
 
 void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const RidgeEdgeLoop& loop,
                 const ThetaQuantization& q, std::span<const ThetaSlice> slices,
-                std::vector<Crossing>& cuts, std::vector<EntryPair>& out) {
+                SliceScratch& scratch, std::vector<EntryPair>& out) {
   if (slices.empty()) return;
   const bool point = slices[0].point_light;
   for (const std::uint32_t i : loop.edges) {
@@ -158,6 +169,7 @@ void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Ri
       std::swap(lo, hi);
       hi += 2 * std::numbers::pi;
     }
+    scratch.path.clear();
     // Entries whose centre the edge may cross, one more at each end against rounding: the
     // side test decides.
     const int k0 = int(std::floor((lo - q.theta_min) / q.step - 0.5));
@@ -169,20 +181,19 @@ void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Ri
       if (!(s.side(m.local[re.from]) < 0 && s.side(m.local[re.to]) >= 0)) continue;  // up
       const Crossing at = edge_crossing(m, s, re.edge);
       if (s.rho(at.p) <= 0) continue;  // in the half-plane at theta + pi: another entry's
-      Crossing next;
-      if (partner(m, s, re.face, at, cuts, next)) walk(m, s, re.face, at, next, cuts, out);
+      walk(m, s, re.face, at, scratch, out);
     }
   }
 }
 
 void slice_from_axis(const SlicedMesh& m, std::uint32_t f, std::span<const ThetaSlice> slices,
-                     std::vector<Crossing>& cuts, std::vector<EntryPair>& out) {
+                     SliceScratch& scratch, std::vector<EntryPair>& out) {
   Crossing at;
   at.p = {axis_piercing(m, f), 0, 0};
   at.phi = -kInf;
   for (const ThetaSlice& s : slices) {
-    Crossing next;
-    if (partner(m, s, f, at, cuts, next)) walk(m, s, f, at, next, cuts, out);
+    scratch.path.clear();  // from the axis, the exit is not the only other crossing
+    walk(m, s, f, at, scratch, out);
   }
 }
 

@@ -33,6 +33,20 @@ struct Crossing {
   std::int64_t edge = -1;  ///< mesh edge; -1 on the light's X axis
 };
 
+/// \brief One face crossed by a walk along the far sheet: the edge it is left by and the
+/// face beyond (-1: the edge is an RE, where the shadow ends).
+struct WalkStep {
+  std::uint32_t face = 0, exit = 0;
+  std::int64_t beyond = -1;
+};
+
+/// \brief Reused buffers of one thread's slicing: a face's cut, and the last walk from the RE
+/// being sliced (consecutive entries mostly cross the same faces by the same edges).
+struct SliceScratch {
+  std::vector<Crossing> cuts;
+  std::vector<WalkStep> path;
+};
+
 /// The slice of entry \p k.
 ThetaSlice theta_slice(const ThetaQuantization& q, bool point_light, int k);
 
@@ -42,6 +56,7 @@ struct SlicedMesh {
   const FarSheets& sheets;
   std::span<const Vec3> local;               ///< light-frame vertices
   std::span<const double> theta;             ///< per vertex on an RE: its theta (eq. 2)
+  std::span<const char> convex;              ///< per face: convex, so a slice cuts it once
   std::span<const std::uint32_t> hidden_id;  ///< per face: its AngularTable::hidden() index
 };
 
@@ -53,13 +68,13 @@ struct SlicedMesh {
 /// crossing where the shadow ends, the begin's partner.
 void slice_loop(const SlicedMesh& mesh, std::span<const RidgeEdge> ridges,
                 const RidgeEdgeLoop& loop, const ThetaQuantization& q,
-                std::span<const ThetaSlice> slices, std::vector<Crossing>& scratch,
+                std::span<const ThetaSlice> slices, SliceScratch& scratch,
                 std::vector<EntryPair>& out);
 
 /// \brief A point light's X axis pierces occluding face \p f at X < 0 (light inside the
 /// scene, Sec. 11.2): in every entry a far-sheet walk starts on the axis (phi = -inf) in \p f.
 void slice_from_axis(const SlicedMesh& mesh, std::uint32_t f, std::span<const ThetaSlice> slices,
-                     std::vector<Crossing>& scratch, std::vector<EntryPair>& out);
+                     SliceScratch& scratch, std::vector<EntryPair>& out);
 
 /// Where the light's X axis pierces face \p f (its X), if it does: NaN otherwise.
 double axis_piercing(const SlicedMesh& mesh, std::uint32_t f);
