@@ -10,6 +10,7 @@
 #include <limits>
 #include <numbers>
 #include <numeric>
+#include <optional>
 
 #include "loop_slicer.h"
 #include "view_theta.h"
@@ -127,41 +128,66 @@ ThetaQuantization quantize(const Scene& scene, const LightFrame& frame,
   return q;
 }
 
-// The ray from the light at (theta, phi) of slice s meets \p plane at distance t along it (a
-// point light's ray direction scaled to unit rho); +inf if it does not.
-double ray_depth(const ThetaSlice& s, const FrameAffine& plane, double phi) {
-  const double along =
-      s.point_light ? plane.a.x * phi + plane.a.y * s.sin + plane.a.z * s.cos : plane.a.z;
-  const double offset = s.point_light ? plane.b : plane.a.x * phi + plane.a.y * s.theta + plane.b;
-  const double t = -offset / along;
-  return std::isfinite(t) && t > 0 ? t : std::numeric_limits<double>::infinity();
-}
+// Depth along the rays of one slice as a function of phi, (alpha phi + beta) / (gamma phi +
+// delta): where the ray at phi meets a plane (a point light's ray scaled to unit rho);
+// +inf where it does not.
+struct RayDepth {
+  double alpha = 0, beta = 0, gamma = 0, delta = 1;
 
-// Sec. 10: whether pair \p q adds nothing to an entry, given another pair: the other holds
-// q's phi range and lies nearer the light at both of q's ends (depth along the rays is
-// linear-fractional in phi, so the ends decide).
-class CoverTest {
- public:
-  CoverTest(const AngularTable& table, const ThetaSlice& s, const AngularPair& q)
-      : table_(table), s_(s), q_(q) {}
-  bool by(const AngularPair& p) {
-    if (p.phi_begin > q_.phi_begin || p.phi_end < q_.phi_end) return false;
-    if (!std::isfinite(depth_[0])) {  // q's own depths, once
-      const FrameAffine& plane = table_.hidden(q_.hidden).plane;
-      depth_[0] = ray_depth(s_, plane, q_.phi_begin);
-      depth_[1] = ray_depth(s_, plane, q_.phi_end);
-      if (!std::isfinite(depth_[0]) || !std::isfinite(depth_[1])) return false;
+  RayDepth() = default;
+  RayDepth(const ThetaSlice& s, const FrameAffine& plane) {
+    if (s.point_light) {
+      beta = -plane.b, gamma = plane.a.x, delta = plane.a.y * s.sin + plane.a.z * s.cos;
+    } else {
+      alpha = -plane.a.x, beta = -(plane.a.y * s.theta + plane.b), delta = plane.a.z;
     }
-    const FrameAffine& plane = table_.hidden(p.hidden).plane;
-    return depth_[0] > ray_depth(s_, plane, q_.phi_begin) * (1 + 1e-9) &&
-           depth_[1] > ray_depth(s_, plane, q_.phi_end) * (1 + 1e-9);
+  }
+  double at(double phi) const {
+    const double t = (alpha * phi + beta) / (gamma * phi + delta);
+    return std::isfinite(t) && t > 0 ? t : std::numeric_limits<double>::infinity();
+  }
+};
+
+// Sec. 10 within one entry, its pairs offered in order of phi_begin: a pair adds nothing
+// when one of the last two kept pairs holds its phi range and lies nearer the light at both
+// its ends (depth along the rays is linear-fractional in phi, so the ends decide). The pair
+// reaching furthest is no better a candidate: on the cube field it is the ground's, behind
+// everything.
+class Saturation {
+ public:
+  Saturation(const AngularTable& table, const ThetaSlice& s) : table_(table), s_(s) {}
+
+  bool covers(const AngularPair& q) const {
+    if (!std::isfinite(q.phi_begin) || !std::isfinite(q.phi_end)) return false;
+    double depth[2] = {-1, -1};  // q's own, once needed
+    const auto nearer = [&](const Kept& p) {
+      if (p.begin > q.phi_begin || p.end < q.phi_end) return false;
+      if (depth[0] < 0) {
+        const RayDepth own(s_, table_.hidden(q.hidden).plane);
+        depth[0] = own.at(q.phi_begin), depth[1] = own.at(q.phi_end);
+      }
+      return std::isfinite(depth[0]) && std::isfinite(depth[1]) &&
+             depth[0] > p.depth.at(q.phi_begin) * (1 + 1e-9) &&
+             depth[1] > p.depth.at(q.phi_end) * (1 + 1e-9);
+    };
+    for (std::size_t i = 0; i < std::min<std::size_t>(kept_, 2); ++i) {
+      if (nearer(recent_[i])) return true;
+    }
+    return false;
+  }
+  void keep(const AngularPair& p) {
+    recent_[kept_++ % 2] = {p.phi_begin, p.phi_end, RayDepth(s_, table_.hidden(p.hidden).plane)};
   }
 
  private:
+  struct Kept {
+    double begin = 0, end = 0;
+    RayDepth depth;
+  };
   const AngularTable& table_;
   const ThetaSlice& s_;
-  const AngularPair& q_;
-  double depth_[2] = {std::numeric_limits<double>::infinity(), 0};
+  std::size_t kept_ = 0;
+  Kept recent_[2];
 };
 
 }  // namespace
@@ -296,19 +322,6 @@ std::uint64_t ordered_bits(double x) {
   return u >> 63 ? ~u : u | (std::uint64_t(1) << 63);
 }
 
-// Sec. 10: \p q adds nothing when one of the last few kept pairs, or the one reaching
-// furthest, already covers it.
-bool saturated_by(const AngularTable& table, const ThetaSlice& s, std::span<const AngularPair> kept,
-                  std::size_t furthest, const AngularPair& q) {
-  constexpr std::size_t kRecent = 2;
-  CoverTest covered(table, s, q);
-  const std::size_t first = kept.size() > kRecent ? kept.size() - kRecent : 0;
-  for (std::size_t i = first; i < kept.size(); ++i) {
-    if (covered.by(kept[i])) return true;
-  }
-  return furthest < first && covered.by(kept[furthest]);
-}
-
 }  // namespace
 
 std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch) {
@@ -325,17 +338,18 @@ std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortSc
   });
   std::vector<AngularPair>& sorted = scratch.pairs;
   sorted.clear();
-  std::size_t furthest = 0;
+  std::optional<Saturation> saturation;
+  if (saturate) saturation.emplace(*this, *saturate);
+  double extent_end = -std::numeric_limits<double>::infinity();
   for (const SortKey& key : keys) {
     const AngularPair& pair = entry[key.index];
-    if (saturate && !sorted.empty() && saturated_by(*this, *saturate, sorted, furthest, pair)) {
-      continue;
-    }
-    if (sorted.empty() || pair.phi_end > sorted[furthest].phi_end) furthest = sorted.size();
+    if (saturation && saturation->covers(pair)) continue;
+    if (saturation) saturation->keep(pair);
+    extent_end = std::max(extent_end, pair.phi_end);
     sorted.push_back(pair);
   }
   // Wide pairs first, so that the reach of the narrow ones skips well.
-  const double wide = (sorted[furthest].phi_end - sorted.front().phi_begin) / 16;
+  const double wide = (extent_end - sorted.front().phi_begin) / 16;
   const auto is_wide = [wide](const AngularPair& p) { return p.phi_end - p.phi_begin > wide; };
   std::size_t out = 0;
   for (const AngularPair& pair : sorted) {
