@@ -7,20 +7,13 @@
 #include <map>
 #include <string>
 
-#include "../raytrace/raytrace_method.h"
+#include "../../testing/method_testing.h"
 #include "angular_method.h"
-#include "shadowkit/scene/scene_file.h"
 
 namespace shadowkit {
 namespace {
 
-struct Fixture {
-  Scene scene;
-  VisibleSurfaceBuffer vsb;
-  explicit Fixture(const std::string& name) : scene(load_scene(name, {})) {
-    vsb = render_visible_surfaces(scene, {});
-  }
-};
+using Fixture = testing::RenderedScene;
 
 const Fixture& cube_field(int count) {
   static std::map<int, Fixture> fields;

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "../../testing/method_testing.h"
+#include "../../testing/test_scenes.h"
 #include "angular_method.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/scene/scene_file.h"
@@ -11,9 +12,7 @@ namespace shadowkit {
 namespace {
 
 Scene reduced(Scene scene) {
-  scene.camera.width = 480;
-  scene.camera.height = 270;
-  return scene;
+  return testing::resized(std::move(scene), 480, 270);
 }
 
 // Worst interior mismatch (percent) of `angular` against `raytrace` over the lights.

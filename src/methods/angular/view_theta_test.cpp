@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "../../testing/test_scenes.h"
 #include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/scene_file.h"
 
@@ -11,9 +12,7 @@ namespace shadowkit {
 namespace {
 
 Scene reduced(Scene scene) {
-  scene.camera.width = 240;
-  scene.camera.height = 135;
-  return scene;
+  return testing::resized(std::move(scene), 240, 135);
 }
 
 // Eq. 4's range "based on the view volume": every visible point's theta lies in it.
