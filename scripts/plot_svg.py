@@ -11,8 +11,8 @@ import argparse
 import csv
 import math
 
-WIDTH, HEIGHT = 640, 400
-LEFT, RIGHT, TOP, BOTTOM = 70, 190, 40, 50
+WIDTH, HEIGHT = 760, 400
+LEFT, RIGHT, TOP, BOTTOM = 70, 250, 40, 50
 COLORS = ["#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2",
           "#7f7f7f", "#bcbd22", "#17becf"]
 
@@ -40,7 +40,8 @@ def axis(lo, hi, log):
     """Maps data to [0, 1] and gives tick values."""
     if log:
         lo, hi = math.log10(lo), math.log10(hi)
-        ticks = [10 ** e for e in range(math.floor(lo), math.ceil(hi) + 1)]
+        steps = (1,) if hi - lo > 2 else (1, 2, 5)  # 1-2-5 ticks over few decades
+        ticks = [m * 10 ** e for e in range(math.floor(lo), math.ceil(hi) + 1) for m in steps]
         return (lambda v: (math.log10(v) - lo) / (hi - lo or 1)), ticks
     span = hi - lo or 1
     step = 10 ** math.floor(math.log10(span / 5))
