@@ -170,10 +170,13 @@ void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Ri
       hi += 2 * std::numbers::pi;
     }
     scratch.path.clear();
-    // Entries whose centre the edge may cross, one more at each end against rounding: the
-    // side test decides.
-    const int k0 = int(std::floor((lo - q.theta_min) / q.step - 0.5));
-    const int k1 = int(std::ceil((hi - q.theta_min) / q.step - 0.5));
+    // Entries whose centre the edge may cross, one more at each end against rounding (the
+    // side test decides), within the table unless it goes all around.
+    const double first = std::floor((lo - q.theta_min) / q.step - 0.5);
+    const double last = std::ceil((hi - q.theta_min) / q.step - 0.5);
+    const double end = q.full_turn ? first + q.resolution : q.resolution - 1;
+    const int k0 = int(std::max(first, q.full_turn ? first : 0.0));
+    const int k1 = int(std::min(last, end));
     for (int k = k0; k <= k1; ++k) {
       const int entry = q.entry(k);
       if (entry < 0) continue;
