@@ -69,6 +69,30 @@ TEST(AngularScenes, OneLookupServesManyPixels) {
   EXPECT_LT(lookups * 4, double(vsb.covered_count()));
 }
 
+// A box on a ground and an open square above it, everything scaled by \p s about the
+// origin; the light, at the height of the box's top, lies in that face's plane.
+Scene scaled_box_scene(double s, Light light) {
+  const Camera cam = testing::camera(Vec3{6, 5, 7} * s, {0, 0, 0}, 160, 120);
+  return testing::make_scene(
+      cam, {light},
+      {testing::horizontal_quad(-10 * s, 10 * s, -10 * s, 10 * s, 0),
+       testing::box(Vec3{-1, 0.2, -1} * s, Vec3{1, 1.2, 1} * s),
+       testing::horizontal_quad(-0.5 * s, 1.5 * s, 1.5 * s, 2.5 * s, 2 * s)});
+}
+
+// Degenerate cases: tiny and huge coordinates, a light in a face's plane, a directional
+// light grazing that face; the tolerances scale with the scene.
+TEST(AngularScenes, TinyHugeAndGrazingCasesAgreeWithTheReference) {
+  for (const double s : {1e-4, 1.0, 1e4}) {
+    for (const Light& light :
+         {Light::point(Vec3{-2, 1.2, 1} * s), Light::directional(normalize(Vec3{0.3, -1, -0.2})),
+          Light::directional(normalize(Vec3{0.5, 0, -1}))}) {
+      const Scene scene = scaled_box_scene(s, light);
+      EXPECT_LE(worst_interior_mismatch(scene), 0.2) << "scale " << s;
+    }
+  }
+}
+
 TEST(AngularScenes, RejectsAResolutionThatIsNotAWholeNumber) {
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"resolution", "2.5"}})), InputError);
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"bias", "1"}})), InputError);
