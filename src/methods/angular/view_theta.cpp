@@ -6,6 +6,8 @@
 #include <numbers>
 #include <vector>
 
+#include "shadowkit/raster/projection.h"
+
 namespace shadowkit {
 namespace {
 
@@ -19,7 +21,7 @@ struct Frustum {
     const Camera& cam = scene.camera;
     const Camera::PixelGrid grid = cam.pixel_grid();
     eye = cam.position, right = cam.right(), up = cam.true_up(), forward = cam.forward();
-    near = 1e-3 * std::max(scene.bounds().diagonal(), 1e-12);
+    near = near_plane_for(scene.bounds(), eye);  // the camera pass's own
     tan_x = std::abs(grid.x0) + grid.step / 2;
     tan_y = std::abs(grid.y0) + grid.step / 2;
   }
@@ -118,7 +120,9 @@ int automatic_resolution(const Scene& scene, const LightFrame& frame, double the
   if (steps.empty()) return scene.camera.height;
   const auto quartile = steps.begin() + steps.size() / 4;
   std::nth_element(steps.begin(), quartile, steps.end());
-  return int(std::clamp(theta_range / *quartile, 1.0, 1e6));
+  // Sec. 3: beyond a limit set by the screen no entry shows; eight per scan line bound the
+  // table when most vertices crowd the camera.
+  return int(std::clamp(theta_range / *quartile, 1.0, 8.0 * scene.camera.height));
 }
 
 }  // namespace shadowkit

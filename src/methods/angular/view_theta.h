@@ -21,8 +21,8 @@ ViewTheta view_theta(const Scene& scene, const LightFrame& frame);
 
 /// \brief Eq. 4 generalized: R such that one entry is no coarser than one scan line (Sec. 3:
 /// "at the limiting range there is a unique theta value for each scan line") at three
-/// quarters of the scene vertices in view, over \p theta_range; the number of scan lines
-/// when no vertex is in view.
+/// quarters of the scene vertices in view, over \p theta_range, at most 8 per scan line of
+/// the image; the number of scan lines when no vertex is in view.
 int automatic_resolution(const Scene& scene, const LightFrame& frame, double theta_range);
 
 }  // namespace shadowkit
