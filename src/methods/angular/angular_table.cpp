@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <numbers>
 #include <numeric>
@@ -313,36 +312,19 @@ void AngularTable::fill_entries(std::span<const std::vector<EntryPair>> lists) {
   });
 }
 
-namespace {
-
-// A double's bits as an unsigned integer of the same order (NaN excluded).
-std::uint64_t ordered_bits(double x) {
-  std::uint64_t u;
-  std::memcpy(&u, &x, sizeof u);
-  return u >> 63 ? ~u : u | (std::uint64_t(1) << 63);
-}
-
-}  // namespace
-
 std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch) {
   const std::span<AngularPair> entry(pairs_.data() + start_[k], pairs_.data() + start_[k + 1]);
   if (entry.empty()) return 0;
-  // Step 1.7: sort by phi_begin, on 16-byte keys rather than whole pairs.
-  std::vector<SortKey>& keys = scratch.keys;
-  keys.resize(entry.size());
-  for (std::uint32_t i = 0; i < entry.size(); ++i) {
-    keys[i] = {ordered_bits(entry[i].phi_begin), entry[i].hidden, i};
-  }
-  std::sort(keys.begin(), keys.end(), [](const SortKey& a, const SortKey& b) {
-    return a.phi != b.phi ? a.phi < b.phi : a.hidden < b.hidden;
+  // Step 1.7: sort by phi_begin.
+  std::sort(entry.begin(), entry.end(), [](const AngularPair& a, const AngularPair& b) {
+    return a.phi_begin != b.phi_begin ? a.phi_begin < b.phi_begin : a.hidden < b.hidden;
   });
   std::vector<AngularPair>& sorted = scratch.pairs;
   sorted.clear();
   std::optional<Saturation> saturation;
   if (saturate) saturation.emplace(*this, *saturate);
   double extent_end = -std::numeric_limits<double>::infinity();
-  for (const SortKey& key : keys) {
-    const AngularPair& pair = entry[key.index];
+  for (const AngularPair& pair : entry) {
     if (saturation && saturation->covers(pair)) continue;
     if (saturation) saturation->keep(pair);
     extent_end = std::max(extent_end, pair.phi_end);

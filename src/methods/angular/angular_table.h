@@ -96,13 +96,8 @@ class AngularTable {
 
  private:
   void fill_entries(std::span<const std::vector<EntryPair>> lists);
-  struct SortKey {
-    std::uint64_t phi;  // phi_begin's bits, in phi's order
-    std::uint32_t hidden, index;
-  };
   struct SortScratch {
-    std::vector<SortKey> keys;
-    std::vector<AngularPair> pairs;
+    std::vector<AngularPair> pairs;  // the entry's kept pairs in order
   };
   // Sorts entry k and, given its slice, saturates it; returns the pairs kept at its front.
   std::uint32_t sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch);
