@@ -293,7 +293,7 @@ void AngularTable::fill_entries(std::span<const std::vector<EntryPair>> lists) {
   const std::size_t r = std::size_t(theta_.resolution);
   std::vector<std::vector<std::uint32_t>> slot(lists.size(), std::vector<std::uint32_t>(r, 0));
   tbb::parallel_for(std::size_t(0), lists.size(), [&](std::size_t l) {
-    for (const EntryPair& it : lists[l]) ++slot[l][it.first];
+    for (const EntryPair& it : lists[l]) ++slot[l][it.entry];
   });
   start_.assign(r + 1, 0);
   std::uint32_t total = 0;
@@ -308,7 +308,9 @@ void AngularTable::fill_entries(std::span<const std::vector<EntryPair>> lists) {
   start_[r] = total;
   pairs_.resize(total);
   tbb::parallel_for(std::size_t(0), lists.size(), [&](std::size_t l) {
-    for (const EntryPair& it : lists[l]) pairs_[slot[l][it.first]++] = it.second;
+    for (const EntryPair& it : lists[l]) {
+      pairs_[slot[l][it.entry]++] = {it.phi_begin, it.phi_end, 0, it.hidden};
+    }
   });
 }
 

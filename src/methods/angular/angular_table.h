@@ -57,8 +57,11 @@ struct AngularTableOptions {
 
 struct ThetaSlice;
 
-/// A pair and the entry it belongs to, while the table is built.
-using EntryPair = std::pair<std::uint32_t, AngularPair>;
+/// \brief A pair and the entry it belongs to, while the table is built (24 bytes: no reach).
+struct EntryPair {
+  std::uint32_t entry = 0, hidden = 0;
+  double phi_begin = 0, phi_end = 0;
+};
 
 /// \brief The lookup table: per theta entry, pairs sorted by phi_begin (Sec. 7, step 1.7).
 class AngularTable {

@@ -238,17 +238,16 @@ TEST(Pairing, EqualAdjacentPeaksPairWithEachOther) {
   slice_loop(sliced, ridges, loops[0], one_entry, {&peak, 1}, scratch, out);
 
   ASSERT_EQ(out.size(), 2u);
-  std::sort(out.begin(), out.end(), [](const EntryPair& a, const EntryPair& b) {
-    return a.second.phi_begin < b.second.phi_begin;
-  });
+  std::sort(out.begin(), out.end(),
+            [](const EntryPair& a, const EntryPair& b) { return a.phi_begin < b.phi_begin; });
   const double phi[4] = {frame.local({-2, 2, -1}).x, frame.local({-1, 2, -1}).x,
                          frame.local({1, 2, -1}).x, frame.local({2, 2, -1}).x};
-  EXPECT_DOUBLE_EQ(out[0].second.phi_begin, phi[0]);
-  EXPECT_DOUBLE_EQ(out[0].second.phi_end, phi[1]);
-  EXPECT_DOUBLE_EQ(out[1].second.phi_begin, phi[2]);
-  EXPECT_DOUBLE_EQ(out[1].second.phi_end, phi[3]);
+  EXPECT_DOUBLE_EQ(out[0].phi_begin, phi[0]);
+  EXPECT_DOUBLE_EQ(out[0].phi_end, phi[1]);
+  EXPECT_DOUBLE_EQ(out[1].phi_begin, phi[2]);
+  EXPECT_DOUBLE_EQ(out[1].phi_end, phi[3]);
   for (const EntryPair& p : out) {
-    EXPECT_NEAR(mesh.planes[p.second.hidden].normal.z, -1, 1e-12);  // the back face
+    EXPECT_NEAR(mesh.planes[p.hidden].normal.z, -1, 1e-12);  // the back face
   }
 }
 

@@ -104,11 +104,7 @@ bool clip_at_axis(const ThetaSlice& s, const Crossing& at, Crossing& next) {
 
 void emit(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, double a, double b,
           std::vector<EntryPair>& out) {
-  AngularPair pair;
-  pair.phi_begin = std::min(a, b);
-  pair.phi_end = std::max(a, b);
-  pair.hidden = m.hidden_id[f];
-  out.emplace_back(s.entry, pair);
+  out.push_back({s.entry, m.hidden_id[f], std::min(a, b), std::max(a, b)});
 }
 
 // Walks the far sheet from \p at (on face f's edge, or on the light's X axis) across the
