@@ -93,6 +93,20 @@ TEST(AngularScenes, TinyHugeAndGrazingCasesAgreeWithTheReference) {
   }
 }
 
+// Sec. 11.2: the light inside the room, moved into the camera's own plane (beside and
+// above the eye, at its depth) and just in front of and behind it: the light's X axis then
+// runs along the edge of the view, where theta wraps around the light.
+TEST(AngularScenes, ALightInTheRoomNearTheCamerasPlaneAgreesWithTheReference) {
+  const Scene room = reduced(load_scene("room", {}));
+  const Camera& cam = room.camera;
+  for (const double depth : {-0.05, 0.0, 0.05}) {
+    Scene scene = room;
+    scene.lights[0].position =
+        cam.position + cam.right() * -0.5 + cam.true_up() * 0.8 + cam.forward() * depth;
+    EXPECT_LE(worst_interior_mismatch(scene), 0.2) << "depth " << depth;
+  }
+}
+
 TEST(AngularScenes, RejectsAResolutionThatIsNotAWholeNumber) {
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"resolution", "2.5"}})), InputError);
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"bias", "1"}})), InputError);
