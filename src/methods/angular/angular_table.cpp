@@ -80,13 +80,15 @@ void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& fra
                 ObjectLoops& o) {
   o.ridges = find_ridge_edges(mesh, sheets);
   o.loops = chain_ridge_edge_loops(o.ridges);
+  // Eq. 2 once per vertex on a loop, in parallel.
+  std::vector<char> on_loop(mesh.vertices.size(), 0);
+  for (const RidgeEdge& re : o.ridges) on_loop[re.from] = on_loop[re.to] = 1;
   o.theta.assign(mesh.vertices.size(), 0);
-  for (const RidgeEdge& re : o.ridges) {
-    for (const std::uint32_t v : {re.from, re.to}) {
-      const Vec3 p = o.local[v];
-      o.theta[v] = frame.point_light() ? std::atan2(p.y, p.z) : p.y;
-    }
-  }
+  tbb::parallel_for(std::size_t(0), o.theta.size(), [&](std::size_t v) {
+    if (!on_loop[v]) return;
+    const Vec3 p = o.local[v];
+    o.theta[v] = frame.point_light() ? std::atan2(p.y, p.z) : p.y;
+  });
   for (const RidgeEdge& re : o.ridges) {
     double a = o.theta[re.from], b = o.theta[re.to];
     if (a > b) std::swap(a, b);
