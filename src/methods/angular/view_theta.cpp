@@ -29,8 +29,8 @@ struct Frustum {
     const Vec3 v = p - eye;
     return {dot(v, right), dot(v, up), dot(v, forward)};
   }
-  double side(int plane, Vec3 p) const {
-    const Vec3 c = camera(p);
+  // Plane \p plane's value at camera coordinates \p c.
+  double side(int plane, Vec3 c) const {
     switch (plane) {
       case 0:
         return c.z - near;
@@ -45,8 +45,9 @@ struct Frustum {
     }
   }
   bool holds(Vec3 p) const {
+    const Vec3 c = camera(p);
     for (int plane = 0; plane < 5; ++plane) {
-      if (side(plane, p) < 0) return false;
+      if (side(plane, c) < 0) return false;
     }
     return true;
   }
@@ -59,7 +60,8 @@ std::vector<Vec3> clip(const Frustum& frustum, std::vector<Vec3> polygon) {
     out.clear();
     for (std::size_t i = 0; i < polygon.size(); ++i) {
       const Vec3 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-      const double fa = frustum.side(plane, a), fb = frustum.side(plane, b);
+      const double fa = frustum.side(plane, frustum.camera(a));
+      const double fb = frustum.side(plane, frustum.camera(b));
       if (fa >= 0) out.push_back(a);
       if ((fa >= 0) != (fb >= 0)) out.push_back(a + (b - a) * (fa / (fa - fb)));
     }
