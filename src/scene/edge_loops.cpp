@@ -1,19 +1,25 @@
 #include "shadowkit/scene/edge_loops.h"
 
-#include <unordered_map>
+#include <algorithm>
 
 namespace shadowkit {
 
 std::vector<EdgeLoop> chain_edge_loops(std::span<const std::uint32_t> from,
                                        std::span<const std::uint32_t> to) {
-  std::unordered_multimap<std::uint32_t, std::uint32_t> starting_at;
-  for (std::uint32_t i = 0; i < from.size(); ++i) starting_at.emplace(from[i], i);
+  // The edges leaving each vertex, in index order (compressed rows).
+  std::uint32_t vertices = 0;
+  for (const std::uint32_t v : from) vertices = std::max(vertices, v + 1);
+  std::vector<std::uint32_t> start(vertices + 1, 0), leaving(from.size());
+  for (const std::uint32_t v : from) ++start[v + 1];
+  for (std::uint32_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (std::uint32_t i = 0; i < from.size(); ++i) leaving[fill[from[i]]++] = i;
   std::vector<char> used(from.size(), 0);
   // An unused edge leaving vertex v, or -1.
   const auto next_from = [&](std::uint32_t v) -> std::int64_t {
-    auto [lo, hi] = starting_at.equal_range(v);
-    for (auto it = lo; it != hi; ++it) {
-      if (!used[it->second]) return it->second;
+    if (v >= vertices) return -1;
+    for (std::uint32_t k = start[v]; k < start[v + 1]; ++k) {
+      if (!used[leaving[k]]) return leaving[k];
     }
     return -1;
   };

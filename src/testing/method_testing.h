@@ -6,8 +6,17 @@
 
 #include "shadowkit/app/mask_compare.h"
 #include "shadowkit/methods/shadow_method.h"
+#include "shadowkit/scene/scene_file.h"
 
 namespace shadowkit::testing {
+
+/// \brief A scene (file or built-in name) and its visible surfaces, as benchmarks use them.
+struct RenderedScene {
+  Scene scene;
+  VisibleSurfaceBuffer vsb;
+  explicit RenderedScene(const std::string& name)
+      : scene(load_scene(name, {})), vsb(render_visible_surfaces(scene, {})) {}
+};
 
 /// The mask of \p method for light \p light (prepare, build, shade).
 inline ShadowMask method_mask(ShadowMethod& method, const Scene& scene,

@@ -8,6 +8,13 @@
 
 namespace shadowkit::testing {
 
+/// \p scene seen by the same camera at \p width x \p height pixels (a reduced test size).
+inline Scene resized(Scene scene, int width, int height) {
+  scene.camera.width = width;
+  scene.camera.height = height;
+  return scene;
+}
+
 /// One polygon with the given corners, in order.
 inline PolygonSoup polygon(std::initializer_list<Vec3> corners) {
   PolygonSoup soup;

@@ -26,8 +26,8 @@ struct LookupQuery {
 
 /// Sec. 7: scans entry theta's pairs holding phi, stops at the first pair that shadows the
 /// point (shadow is a logical OR) and returns the column where the answer may change (nextX):
-/// the pair's end, the start of the next pair, or where the run crosses the plane or an edge's
-/// light plane of the triangle of a pair holding phi.
+/// the pair's end, the start of the next pair, or where the run crosses the plane of the
+/// hidden face of a pair holding phi.
 LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const LookupQuery& query);
 
 }  // namespace shadowkit

@@ -15,23 +15,28 @@
 namespace shadowkit {
 
 AngularMethod::AngularMethod(const MethodOptions& options) {
-  options.expect_only("angular", {"resolution"});
+  options.expect_only("angular", {"resolution", "saturated"});
   const double r = options.number("resolution", 0);
-  if (r < 0 || r != std::floor(r) || r > 1e7) {
-    throw InputError("option 'angular.resolution'", "expected a whole number of theta entries");
+  if (r < 0 || r != std::floor(r) || r > 1e6) {
+    throw InputError("option 'angular.resolution'",
+                     "expected a whole number of theta entries, 0 (automatic) to 1000000");
   }
-  resolution_ = int(r);
+  table_options_.resolution = int(r);
+  const double saturated = options.number("saturated", 1);
+  if (saturated != 0 && saturated != 1) {
+    throw InputError("option 'angular.saturated'", "expected 0 or 1");
+  }
+  table_options_.saturated = saturated == 1;
 }
 
-void AngularMethod::build(const Scene& scene, std::size_t light, const Context& ctx) {
+void AngularMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
   light_ = scene.lights[light];
   const Bounds3& box = scene.bounds();
   frame_.emplace(light_, scene.camera, (box.lo + box.hi) * 0.5, light);
-  // Sec. 7, steps 1.1-1.2: ridge edges and their loops, per object.
-  loops_ = ridge_edge_stats(scene, light_);
-  // Steps 1.3-1.7: the hidden faces' spans, entry by entry.
-  AngularTableInput input{occluding_faces(scene, light_), resolution_};
-  table_ = AngularTable::build(scene, *frame_, input, ctx);
+  // Sec. 7, step 1: the RE loops of every object sliced entry by entry.
+  const std::vector<FarSheets> sheets = occluding_sheets(scene, light_);
+  table_ = AngularTable::build(scene, *frame_, sheets, table_options_);
+  boundaries_ = ThetaBoundaries(*frame_, table_.theta());
   depth_tolerance_ = 1e-7 * std::max(box.diagonal(), 1e-12);
   lookup_calls_ = 0;
 }
@@ -61,25 +66,25 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
       continue;
     }
     const ScanLineRun run(*frame_, cam, plane, row);
+    int k = -2;  // the entry of the previous run, unknown at the start of the stretch
     while (x < face_end) {
       // Sec. 7, step 2: query the first pixel of the run.
-      const std::size_t j = surfaces.index(x, row);
       LookupQuery query;
-      query.local = frame_->local(surfaces.point(j));
-      const AngularPoint a = frame_->angular_local(query.local);
-      const int k = quant.index(a.theta);
+      query.local = run.local(x);
+      k = boundaries_.locate(query.local, k);
       query.entry = quant.entry(k);
-      query.phi = a.phi;
+      query.phi = frame_->phi_local(query.local);
       query.face = face;
       query.column = x;
-      query.phi_increasing = frame_->angular_local(run.local(x + 1.0)).phi >= a.phi;
+      query.phi_increasing = run.phi_increasing(x);
       query.depth_tolerance = depth_tolerance_;
       const LookupResult result = lookup(table_, run, query);
       ++lookups;
       // Steps 3-4: hold the answer until nextX or the end of the maximum run (eq. 7).
-      const double end = std::min(result.next_x, max_run_end(run, *frame_, quant, k, x));
+      const double end = std::min(result.next_x, max_run_end(run, boundaries_, k, x));
       const int stop = int(std::clamp(std::ceil(end), double(x + 1), double(face_end)));
-      std::fill_n(&mask.pixels[j], stop - x, result.shadowed ? kMaskShadow : kMaskLit);
+      std::fill_n(&mask.pixels[surfaces.index(x, row)], stop - x,
+                  result.shadowed ? kMaskShadow : kMaskLit);
       x = stop;
     }
   }
@@ -95,12 +100,13 @@ void AngularMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfac
 }
 
 MethodCounters AngularMethod::counters() const {
-  return {{"ridge_edges", loops_.ridge_edges},
-          {"re_loops", loops_.loops},
-          {"open_re_loops", loops_.open_loops},
-          {"hidden_edges_at_loops", loops_.hidden_edges},
+  const RidgeEdgeStats& loops = table_.loop_stats();
+  return {{"ridge_edges", loops.ridge_edges},
+          {"re_loops", loops.loops},
+          {"open_re_loops", loops.open_loops},
           {"theta_resolution", double(table_.theta().resolution)},
           {"table_pairs", double(table_.pair_count())},
+          {"saturated_pairs", double(table_.saturated_count())},
           {"lookup_calls", lookup_calls_}};
 }
 

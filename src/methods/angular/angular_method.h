@@ -5,13 +5,15 @@
 #include "angular_table.h"
 #include "light_frame.h"
 #include "ridge_edges.h"
+#include "scan_line_run.h"
 #include "shadowkit/methods/shadow_method.h"
 
 namespace shadowkit {
 
-/// \brief Per light: the hidden faces' spans in a table indexed by the scan-line angle theta
-/// (option `resolution` = R, 0 or absent: eq. 4); per scan line: one lookup per run of
-/// pixels, the answer held until nextX or the maximum run length of eq. 7.
+/// \brief Per light: the RE loops sliced into a table indexed by the scan-line angle theta
+/// (option `resolution` = R, 0 or absent: eq. 4; `saturated` = 0 keeps covered pairs, Sec.
+/// 10); per scan line: one lookup per run of pixels, the answer held until nextX or the
+/// maximum run length of eq. 7.
 class AngularMethod final : public ShadowMethod {
  public:
   explicit AngularMethod(const MethodOptions& options);
@@ -27,12 +29,12 @@ class AngularMethod final : public ShadowMethod {
   std::size_t shade_row(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
                         int row) const;
 
-  int resolution_ = 0;
+  AngularTableOptions table_options_;
   Light light_;
   std::optional<LightFrame> frame_;
   AngularTable table_;
+  ThetaBoundaries boundaries_;
   double depth_tolerance_ = 0;
-  RidgeEdgeStats loops_;  ///< of the last build, over all objects
   double lookup_calls_ = 0;
 };
 

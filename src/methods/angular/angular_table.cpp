@@ -1,126 +1,206 @@
 #include "angular_table.h"
 
-#include <tbb/combinable.h>
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
+#include <optional>
+
+#include "loop_slicer.h"
+#include "view_theta.h"
 
 namespace shadowkit {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// theta-arc of one triangle seen from the light (lo <= hi, hi - lo < pi, hi may pass pi), or
-// the whole turn when the axis through the light along X pierces it.
-struct ThetaArc {
-  double lo = 0, hi = 0;
-  bool all = false;
+// One object's RE loops in the light's frame.
+struct ObjectLoops {
+  std::vector<Vec3> local;    // light-frame vertices
+  std::vector<double> theta;  // per vertex on an RE
+  std::vector<RidgeEdge> ridges;
+  std::vector<RidgeEdgeLoop> loops;
+  std::vector<std::uint32_t> hidden_id;   // per face, into AngularTable::hidden_
+  std::vector<char> convex;               // per occluding face
+  std::vector<std::uint32_t> axis_faces;  // occluding faces the light's X axis pierces at X < 0
+  double theta_lo = std::numeric_limits<double>::infinity(), theta_hi = -theta_lo;
+  bool wraps = false;  // an RE passes behind the light's back (theta = +-pi)
 };
 
-ThetaArc theta_arc(const LightFrame& frame, const Vec3 (&v)[3]) {
-  if (!frame.point_light()) {
-    const double lo = std::min({v[0].y, v[1].y, v[2].y});
-    return {lo, std::max({v[0].y, v[1].y, v[2].y}), false};
+// Face \p f turns the same way at every corner about its normal.
+bool convex_face(const Mesh& mesh, std::uint32_t f) {
+  const std::uint32_t n = mesh.face_size(f);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const Vec3 a = mesh.vertices[mesh.face_vertex(f, k)];
+    const Vec3 b = mesh.vertices[mesh.face_vertex(f, (k + 1) % n)];
+    const Vec3 c = mesh.vertices[mesh.face_vertex(f, (k + 2) % n)];
+    if (dot(cross(b - a, c - b), mesh.planes[f].normal) < 0) return false;
   }
-  // Pierced: the origin inside the triangle's projection on the (Y, F) plane.
-  double s[3];
-  for (int i = 0; i < 3; ++i) {
-    const Vec3 a = v[i], b = v[(i + 1) % 3];
-    s[i] = a.y * b.z - a.z * b.y;
-  }
-  if ((s[0] >= 0 && s[1] >= 0 && s[2] >= 0) || (s[0] <= 0 && s[1] <= 0 && s[2] <= 0)) {
-    return {0, 0, true};
-  }
-  double t[3];
-  for (int i = 0; i < 3; ++i) t[i] = std::atan2(v[i].y, v[i].z);
-  double lo = std::min({t[0], t[1], t[2]}), hi = std::max({t[0], t[1], t[2]});
-  if (hi - lo > kPi) {  // the arc crosses theta = +-pi, behind the light
-    for (double& a : t) a += a < 0 ? 2 * kPi : 0;
-    lo = std::min({t[0], t[1], t[2]});
-    hi = std::max({t[0], t[1], t[2]});
-  }
-  return {lo, hi, false};
+  return true;
 }
 
-// phi (tan(phi) for a point light) of a point of the theta-plane given its coordinate x
-// along X and its signed distance rho >= 0 from the light's X axis inside the half-plane.
-double plane_phi(const LightFrame& frame, Vec3 p, double rho) {
-  return frame.point_light() ? p.x / rho : p.x;
+// Light-frame vertices, and the occluding faces' planes (the depth of Sec. 5) from \p first
+// on, in parallel over one object's vertices and faces.
+void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& sheets,
+                        const LightFrame& frame, std::uint32_t first, ObjectLoops& loops,
+                        std::vector<HiddenFace>& hidden) {
+  const SceneObject& object = scene.objects[o];
+  const Mesh& mesh = object.mesh;
+  loops.local.resize(mesh.vertices.size());
+  tbb::parallel_for(std::size_t(0), mesh.vertices.size(),
+                    [&](std::size_t v) { loops.local[v] = frame.local(mesh.vertices[v]); });
+  loops.hidden_id.assign(mesh.face_count(), 0);
+  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
+    if (sheets.occludes(f)) loops.hidden_id[f] = first++;
+  }
+  std::vector<char> pierced(frame.point_light() ? mesh.face_count() : 0, 0);
+  loops.convex.assign(mesh.face_count(), 0);
+  tbb::parallel_for(std::uint32_t(0), std::uint32_t(mesh.face_count()), [&](std::uint32_t f) {
+    if (!sheets.occludes(f)) return;
+    const std::uint32_t face = object.first_face + f;
+    hidden[loops.hidden_id[f]] = {frame.plane(scene.face_plane(face)), double(sheets.side[f]),
+                                  face};
+    if (pierced.empty()) return;
+    loops.convex[f] = convex_face(mesh, f);
+    const SlicedMesh m{mesh, sheets, loops.local, loops.theta, loops.convex, loops.hidden_id};
+    pierced[f] = axis_piercing(m, f) < 0;
+  });
+  for (std::uint32_t f = 0; f < pierced.size(); ++f) {
+    if (pierced[f]) loops.axis_faces.push_back(f);
+  }
 }
 
-// The light-frame corners of triangle \p t, sorted by vertex id so that a shared edge is cut
-// bit-identically by both of its triangles.
-void light_frame_corners(const TriangleList& tris, const LightFrame& frame, std::uint32_t t,
-                         Vec3 (&v)[3]) {
-  auto ids = tris.triangles[t];
-  std::sort(ids.begin(), ids.end());
-  for (int i = 0; i < 3; ++i) v[i] = frame.local(tris.positions[ids[i]]);
+// Sec. 7, steps 1.1-1.3: ridge edges, their loops and their theta range.
+void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& frame,
+                ObjectLoops& o) {
+  o.ridges = find_ridge_edges(mesh, sheets);
+  o.loops = chain_ridge_edge_loops(o.ridges);
+  // Eq. 2 once per vertex on a loop, in parallel.
+  std::vector<char> on_loop(mesh.vertices.size(), 0);
+  for (const RidgeEdge& re : o.ridges) on_loop[re.from] = on_loop[re.to] = 1;
+  o.theta.assign(mesh.vertices.size(), 0);
+  tbb::parallel_for(std::size_t(0), o.theta.size(), [&](std::size_t v) {
+    if (!on_loop[v]) return;
+    const Vec3 p = o.local[v];
+    o.theta[v] = frame.point_light() ? std::atan2(p.y, p.z) : p.y;
+  });
+  for (const RidgeEdge& re : o.ridges) {
+    double a = o.theta[re.from], b = o.theta[re.to];
+    if (a > b) std::swap(a, b);
+    o.wraps = o.wraps || (frame.point_light() && b - a > kPi);
+    o.theta_lo = std::min(o.theta_lo, a);
+    o.theta_hi = std::max(o.theta_hi, b);
+  }
 }
 
-// Sec. 3: theta from the global minimum to the global maximum over the hidden triangles
-// (the whole turn when they go around the light), in R entries.
+// Sec. 3: theta from the global minimum to the global maximum over the RE loops (the whole
+// turn when they go around the light), cut to the theta the camera can see (eq. 4's range
+// "based on the view volume"), in R entries.
 ThetaQuantization quantize(const Scene& scene, const LightFrame& frame,
-                           const std::vector<ThetaArc>& arcs, int resolution) {
+                           const std::vector<ObjectLoops>& objects, int resolution) {
   ThetaQuantization q;
-  double lo = 0, hi = 1;  // no hidden face: an empty table of any range
-  for (std::size_t i = 0; i < arcs.size(); ++i) {
-    q.full_turn = q.full_turn || arcs[i].all || (frame.point_light() && arcs[i].hi > kPi);
-    lo = i == 0 ? arcs[i].lo : std::min(lo, arcs[i].lo);
-    hi = i == 0 ? arcs[i].hi : std::max(hi, arcs[i].hi);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const ObjectLoops& o : objects) {
+    q.full_turn = q.full_turn || o.wraps || !o.axis_faces.empty();
+    lo = std::min(lo, o.theta_lo);
+    hi = std::max(hi, o.theta_hi);
   }
   if (q.full_turn) lo = -kPi, hi = kPi;
+  const ViewTheta view = view_theta(scene, frame);
+  if (view.bounded) {
+    q.full_turn = false;
+    lo = std::max(lo, view.lo);
+    hi = std::min(hi, view.hi);
+  }
+  if (!(lo <= hi)) lo = 0, hi = 1;  // no ridge edge in view: an empty table of any range
+  if (!q.full_turn) {  // hazard: a visible point on the range's edge must round into it
+    const double pad = 1e-9 * std::max({std::abs(lo), std::abs(hi), hi - lo});
+    lo -= pad, hi += pad;
+  }
   const double range = std::max(hi - lo, 1e-12);
   q.resolution = resolution > 0 ? resolution : automatic_resolution(scene, frame, range);
-  q.theta_min = lo;
   q.step = range / q.resolution;
+  q.theta_min = lo;
   return q;
 }
 
-// The pairs of one triangle (corners \p v, theta arc \p arc) in every entry it spans.
-void append_pairs(const LightFrame& frame, const Vec3 (&v)[3], const ThetaQuantization& q,
-                  const ThetaArc& arc, AngularPair pair, std::vector<EntryPair>& out) {
-  int k0 = 0, k1 = q.resolution - 1;
-  if (!arc.all) {
-    k0 = int(std::floor((arc.lo - q.theta_min) / q.step));
-    k1 = int(std::floor((arc.hi - q.theta_min) / q.step));
-    if (!q.full_turn) k0 = std::max(k0, 0), k1 = std::min(k1, q.resolution - 1);
+// Depth along the rays of one slice as a function of phi, (alpha phi + beta) / (gamma phi +
+// delta): where the ray at phi meets a plane (a point light's ray scaled to unit rho);
+// +inf where it does not.
+struct RayDepth {
+  double alpha = 0, beta = 0, gamma = 0, delta = 1;
+
+  RayDepth() = default;
+  RayDepth(const ThetaSlice& s, const FrameAffine& plane) {
+    if (s.point_light) {
+      beta = -plane.b, gamma = plane.a.x, delta = plane.a.y * s.sin + plane.a.z * s.cos;
+    } else {
+      alpha = -plane.a.x, beta = -(plane.a.y * s.theta + plane.b), delta = plane.a.z;
+    }
   }
-  for (int k = k0; k <= k1; ++k) {
-    const int entry = q.entry(k);
-    if (entry_span(frame, v, q, entry, pair)) out.emplace_back(entry, pair);
+  double at(double phi) const {
+    const double t = (alpha * phi + beta) / (gamma * phi + delta);
+    return std::isfinite(t) && t > 0 ? t : std::numeric_limits<double>::infinity();
   }
-}
+};
+
+// Sec. 10 within one entry, its pairs offered in order of phi_begin: a pair adds nothing
+// when one of the last two kept pairs holds its phi range and lies nearer the light at both
+// its ends (depth along the rays is linear-fractional in phi, so the ends decide). The pair
+// reaching furthest is no better a candidate: on the cube field it is the ground's, behind
+// everything.
+class Saturation {
+ public:
+  Saturation(const AngularTable& table, const ThetaSlice& s) : table_(table), s_(s) {}
+
+  bool covers(const AngularPair& q) const {
+    if (!std::isfinite(q.phi_begin) || !std::isfinite(q.phi_end)) return false;
+    double depth[2] = {-1, -1};  // q's own, once needed
+    const auto nearer = [&](const Kept& p) {
+      if (p.begin > q.phi_begin || p.end < q.phi_end) return false;
+      if (depth[0] < 0) {
+        const RayDepth own(s_, table_.hidden(q.hidden).plane);
+        depth[0] = own.at(q.phi_begin), depth[1] = own.at(q.phi_end);
+      }
+      return std::isfinite(depth[0]) && std::isfinite(depth[1]) &&
+             depth[0] > p.depth.at(q.phi_begin) * (1 + 1e-9) &&
+             depth[1] > p.depth.at(q.phi_end) * (1 + 1e-9);
+    };
+    for (std::size_t i = 0; i < std::min<std::size_t>(kept_, 2); ++i) {
+      if (nearer(recent_[i])) return true;
+    }
+    return false;
+  }
+  void keep(const AngularPair& p) {
+    recent_[kept_++ % 2] = {p.phi_begin, p.phi_end, RayDepth(s_, table_.hidden(p.hidden).plane)};
+  }
+
+ private:
+  struct Kept {
+    double begin = 0, end = 0;
+    RayDepth depth;
+  };
+  const AngularTable& table_;
+  const ThetaSlice& s_;
+  std::size_t kept_ = 0;
+  Kept recent_[2];
+};
 
 }  // namespace
 
-HiddenTriangle hidden_triangle(const LightFrame& frame, const Vec3 (&v)[3], const Plane& plane) {
-  HiddenTriangle h;
-  h.plane = frame.plane(plane);
-  h.light_side = (frame.point_light() ? h.plane.b : -h.plane.a.z) > 0 ? 1 : -1;
-  for (int i = 0; i < 3; ++i) {
-    FrameAffine s = frame.ray_plane(v[i], v[(i + 1) % 3]);
-    if (s.at(v[(i + 2) % 3]) < 0) s = {-s.a, -s.b};
-    h.side[i] = s;
-  }
-  return h;
-}
-
-std::span<const AngularPair> AngularTable::narrow_from(int k, double phi) const {
+std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow_from(
+    int k, double phi) const {
   if (k < 0) return {};
   const std::span<const AngularPair> narrow = entry(k).subspan(wide_[k]);
   const auto first = std::partition_point(narrow.begin(), narrow.end(),
                                           [phi](const AngularPair& p) { return p.reach < phi; });
-  return narrow.subspan(std::size_t(first - narrow.begin()));
-}
-
-const AngularPair* AngularTable::narrow_before(int k, double phi) const {
-  if (k < 0) return nullptr;
-  const std::span<const AngularPair> narrow = entry(k).subspan(wide_[k]);
-  const std::size_t skipped = narrow.size() - narrow_from(k, phi).size();
-  return skipped ? &narrow[skipped - 1] : nullptr;
+  const std::size_t skipped = std::size_t(first - narrow.begin());
+  return {skipped ? &narrow[skipped - 1] : nullptr, narrow.subspan(skipped)};
 }
 
 int ThetaQuantization::entry(int k) const {
@@ -128,153 +208,159 @@ int ThetaQuantization::entry(int k) const {
   return k >= 0 && k < resolution ? k : -1;
 }
 
-bool cut_triangle(const LightFrame& frame, const Vec3 (&v)[3], double theta, AngularPair& out) {
-  const FrameAffine plane = frame.theta_plane(theta);
-  double g[3];
-  for (int i = 0; i < 3; ++i) g[i] = plane.at(v[i]);
-  // Sec. 3.1: the points where the constant-theta plane crosses the triangle's edges.
-  Vec3 p[2];
-  int n = 0;
-  for (int i = 0; i < 3 && n < 2; ++i) {
-    for (int j = i + 1; j < 3 && n < 2; ++j) {
-      if ((g[i] >= 0) == (g[j] >= 0)) continue;
-      p[n++] = v[i] + (v[j] - v[i]) * (g[i] / (g[i] - g[j]));
-    }
-  }
-  if (n < 2) return false;
-  double rho[2] = {0, 0};
-  if (frame.point_light()) {
-    // Keep the part in the half-plane at theta (rho >= 0), not the one at theta + pi.
-    const double sn = -plane.a.z, cs = plane.a.y;  // theta_plane is (0, cos, -sin)
-    for (int i = 0; i < 2; ++i) rho[i] = p[i].y * sn + p[i].z * cs;
-    if (rho[0] < 0 && rho[1] < 0) return false;
-    if (rho[0] < 0 || rho[1] < 0) {
-      const int out_side = rho[0] < 0 ? 0 : 1;
-      const double t = rho[0] / (rho[0] - rho[1]);
-      p[out_side] = p[0] + (p[1] - p[0]) * t;
-      rho[out_side] = 0;
-    }
-  }
-  double a = plane_phi(frame, p[0], rho[0]), b = plane_phi(frame, p[1], rho[1]);
-  if (a > b) std::swap(a, b);
-  out.phi_begin = a;
-  out.phi_end = b;
-  return true;
-}
-
-bool entry_span(const LightFrame& frame, const Vec3 (&v)[3], const ThetaQuantization& q, int k,
-                AngularPair& out) {
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  AngularPair cut;
-  for (double theta : {q.lower(k), q.centre(k), q.lower(k + 1)}) {
-    if (!cut_triangle(frame, v, theta, cut)) continue;
-    lo = std::min(lo, cut.phi_begin);
-    hi = std::max(hi, cut.phi_end);
-  }
-  for (const Vec3& corner : v) {
-    const AngularPoint a = frame.angular_local(corner);
-    if (q.entry(q.index(a.theta)) != k) continue;
-    lo = std::min(lo, a.phi);
-    hi = std::max(hi, a.phi);
-  }
-  if (lo > hi) return false;
-  if (!std::isfinite(lo) || !std::isfinite(hi)) {  // a corner on the light's X axis
-    out.phi_begin = -std::numeric_limits<double>::infinity();
-    out.phi_end = std::numeric_limits<double>::infinity();
-    return true;
-  }
-  // Hazard: phi along an edge may bulge slightly between the sampled thetas.
-  const double slope = frame.point_light() ? 1 + std::max(lo * lo, hi * hi) : 1;  // sec^2
-  const double margin = (q.step + 1e-3 * (hi - lo)) * slope;
-  out.phi_begin = lo - margin;
-  out.phi_end = hi + margin;
-  return true;
-}
-
-int automatic_resolution(const Scene& scene, const LightFrame& frame, double theta_range) {
-  const Camera& cam = scene.camera;
-  const Vec3 eye = cam.position, fwd = cam.forward();
-  const double row_step = cam.pixel_grid().step;  // tan of one scan line at unit depth
-  const double near = 1e-3 * std::max(scene.bounds().diagonal(), 1e-12);
-  double finest = kPi;  // smallest theta step of one scan line over the vertices in view
-  for (const auto& object : scene.objects) {
-    for (Vec3 p : object.mesh.vertices) {
-      const double depth = dot(p - eye, fwd);
-      if (depth < near) continue;
-      const Vec3 v = frame.local(p);
-      const double span = frame.point_light() ? std::hypot(v.y, v.z) : 1.0;
-      if (span > 0) finest = std::min(finest, depth * row_step / span);
-    }
-  }
-  const double r = theta_range / finest;
-  return int(std::clamp(r, 0.5 * cam.height, double(cam.height)));
-}
-
 AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
-                                 const AngularTableInput& input, const Context& /*ctx*/) {
-  const TriangleList& tris = scene.triangles();
-  std::vector<std::uint32_t> hidden;
-  for (std::uint32_t t = 0; t < tris.triangles.size(); ++t) {
-    if (input.occluder[tris.triangle_face[t]]) hidden.push_back(t);
-  }
+                                 const std::vector<FarSheets>& sheets,
+                                 const AngularTableOptions& options) {
   AngularTable table;
-  // Sec. 7, step 1.3: the hidden triangles in the light's frame, and their theta range.
-  std::vector<ThetaArc> arcs(hidden.size());
-  table.hidden_.resize(hidden.size());
-  tbb::parallel_for(std::size_t(0), hidden.size(), [&](std::size_t i) {
-    Vec3 v[3];
-    light_frame_corners(tris, frame, hidden[i], v);
-    arcs[i] = theta_arc(frame, v);
-    table.hidden_[i] = hidden_triangle(frame, v, scene.face_plane(tris.triangle_face[hidden[i]]));
-    table.hidden_[i].triangle = hidden[i];
+  // Steps 1.1-1.3 per object, and the occluding faces' planes (the depth of Sec. 5).
+  std::vector<ObjectLoops> objects(scene.objects.size());
+  std::vector<std::uint32_t> first_hidden(objects.size() + 1, 0);
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    std::uint32_t n = 0;
+    for (std::uint32_t f = 0; f < scene.objects[o].mesh.face_count(); ++f) {
+      n += sheets[o].occludes(f);
+    }
+    first_hidden[o + 1] = first_hidden[o] + n;
+  }
+  table.hidden_.resize(first_hidden.back());
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], table.hidden_);
+  }
+  tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
+    find_loops(scene.objects[o].mesh, sheets[o], frame, objects[o]);
   });
-  table.theta_ = quantize(scene, frame, arcs, input.resolution);
-  // Steps 1.5-1.6: every entry a hidden triangle spans gets its cut as one pair.
-  tbb::combinable<std::vector<EntryPair>> pairs;
-  tbb::parallel_for(std::size_t(0), hidden.size(), [&](std::size_t i) {
-    Vec3 v[3];
-    light_frame_corners(tris, frame, hidden[i], v);
-    AngularPair pair;
-    pair.hidden = std::uint32_t(i);
-    pair.face = tris.triangle_face[hidden[i]];
-    append_pairs(frame, v, table.theta_, arcs[i], pair, pairs.local());
+  table.theta_ = quantize(scene, frame, objects, options.resolution);
+  for (const ObjectLoops& o : objects) {
+    table.loop_stats_.ridge_edges += double(o.ridges.size());
+    table.loop_stats_.loops += double(o.loops.size());
+    for (const RidgeEdgeLoop& loop : o.loops) table.loop_stats_.open_loops += !loop.closed;
+  }
+  std::vector<ThetaSlice> slices(table.theta_.resolution);
+  for (int k = 0; k < table.theta_.resolution; ++k) {
+    slices[k] = theta_slice(table.theta_, frame.point_light(), k);
+  }
+  // Steps 1.5-1.6: one loop at a time, the loops of all objects in parallel.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> work;  // (object, loop or ~axis face)
+  for (std::uint32_t o = 0; o < objects.size(); ++o) {
+    for (std::uint32_t l = 0; l < objects[o].loops.size(); ++l) work.emplace_back(o, l);
+    for (const std::uint32_t f : objects[o].axis_faces) work.emplace_back(o, ~f);
+  }
+  // Loops in order of phi, so that each entry's pairs arrive nearly sorted (step 1.7).
+  std::vector<double> phi(work.size(), 0);
+  for (std::size_t i = 0; i < work.size(); ++i) {
+    const auto [o, l] = work[i];
+    if (l >= objects[o].loops.size()) continue;
+    const RidgeEdge& re = objects[o].ridges[objects[o].loops[l].edges[0]];
+    phi[i] = frame.phi_local(objects[o].local[re.from]);
+  }
+  std::vector<std::uint32_t> order(work.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return phi[a] < phi[b]; });
+  struct Output {
+    SliceScratch scratch;
+    std::vector<EntryPair> pairs;
+  };
+  tbb::enumerable_thread_specific<Output> outputs;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, work.size(), 64), [&](const auto& range) {
+    Output& out = outputs.local();
+    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+      const auto [o, l] = work[order[i]];
+      const ObjectLoops& loops = objects[o];
+      const SlicedMesh m{scene.objects[o].mesh, sheets[o],    loops.local,
+                         loops.theta,           loops.convex, loops.hidden_id};
+      if (l < loops.loops.size()) {
+        slice_loop(m, loops.ridges, loops.loops[l], table.theta_, slices, out.scratch, out.pairs);
+      } else {
+        slice_from_axis(m, ~l, slices, out.scratch, out.pairs);
+      }
+    }
   });
-  table.fill_entries(pairs);
-  // Step 1.7: sort each entry by phi.
+  std::vector<std::vector<EntryPair>> lists;
+  for (Output& out : outputs) lists.push_back(std::move(out.pairs));
+  table.fill_entries(lists);
+  // Step 1.7: sort each entry by phi; Sec. 10: saturate.
   table.wide_.assign(table.theta_.resolution, 0);
-  tbb::parallel_for(0, table.theta_.resolution, [&](int k) { table.sort_entry(k); });
+  std::vector<std::uint32_t> kept(table.theta_.resolution);
+  tbb::enumerable_thread_specific<SortScratch> scratch;
+  tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
+    kept[k] = table.sort_entry(k, options.saturated ? &slices[k] : nullptr, scratch.local());
+  });
+  table.compact(kept);
   return table;
 }
 
-void AngularTable::fill_entries(tbb::combinable<std::vector<EntryPair>>& pairs) {
-  start_.assign(theta_.resolution + 1, 0);
-  pairs.combine_each([&](const std::vector<EntryPair>& list) {
-    for (const EntryPair& it : list) ++start_[it.first + 1];
+void AngularTable::fill_entries(std::span<const std::vector<EntryPair>> lists) {
+  // Count per list and entry, then every list scatters into its own slots, in parallel.
+  const std::size_t r = std::size_t(theta_.resolution);
+  std::vector<std::vector<std::uint32_t>> slot(lists.size(), std::vector<std::uint32_t>(r, 0));
+  tbb::parallel_for(std::size_t(0), lists.size(), [&](std::size_t l) {
+    for (const EntryPair& it : lists[l]) ++slot[l][it.entry];
   });
-  for (int k = 0; k < theta_.resolution; ++k) start_[k + 1] += start_[k];
-  pairs_.resize(start_.back());
-  std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-  pairs.combine_each([&](const std::vector<EntryPair>& list) {
-    for (const EntryPair& it : list) pairs_[fill[it.first]++] = it.second;
+  start_.assign(r + 1, 0);
+  std::uint32_t total = 0;
+  for (std::size_t k = 0; k < r; ++k) {
+    start_[k] = total;
+    for (std::vector<std::uint32_t>& counts : slot) {
+      const std::uint32_t n = counts[k];
+      counts[k] = total;
+      total += n;
+    }
+  }
+  start_[r] = total;
+  pairs_.resize(total);
+  tbb::parallel_for(std::size_t(0), lists.size(), [&](std::size_t l) {
+    for (const EntryPair& it : lists[l]) {
+      pairs_[slot[l][it.entry]++] = {it.phi_begin, it.phi_end, 0, it.hidden};
+    }
   });
 }
 
-void AngularTable::sort_entry(int k) {
-  const auto begin = pairs_.begin() + start_[k], last = pairs_.begin() + start_[k + 1];
-  if (begin == last) return;
-  std::sort(begin, last, [](const AngularPair& a, const AngularPair& b) {
-    if (a.phi_begin != b.phi_begin) return a.phi_begin < b.phi_begin;
-    return a.hidden != b.hidden ? a.hidden < b.hidden : a.phi_end < b.phi_end;
+std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch) {
+  const std::span<AngularPair> entry(pairs_.data() + start_[k], pairs_.data() + start_[k + 1]);
+  if (entry.empty()) return 0;
+  // Step 1.7: sort by phi_begin.
+  std::sort(entry.begin(), entry.end(), [](const AngularPair& a, const AngularPair& b) {
+    return a.phi_begin != b.phi_begin ? a.phi_begin < b.phi_begin : a.hidden < b.hidden;
   });
+  std::vector<AngularPair>& sorted = scratch.pairs;
+  sorted.clear();
+  std::optional<Saturation> saturation;
+  if (saturate) saturation.emplace(*this, *saturate);
+  double extent_end = -std::numeric_limits<double>::infinity();
+  for (const AngularPair& pair : entry) {
+    if (saturation && saturation->covers(pair)) continue;
+    if (saturation) saturation->keep(pair);
+    extent_end = std::max(extent_end, pair.phi_end);
+    sorted.push_back(pair);
+  }
   // Wide pairs first, so that the reach of the narrow ones skips well.
-  double extent_end = begin->phi_end;
-  for (auto it = begin; it != last; ++it) extent_end = std::max(extent_end, it->phi_end);
-  const double wide = (extent_end - begin->phi_begin) / 16;
-  const auto narrow = std::stable_partition(
-      begin, last, [wide](const AngularPair& p) { return p.phi_end - p.phi_begin > wide; });
-  wide_[k] = std::uint32_t(narrow - begin);
+  const double wide = (extent_end - sorted.front().phi_begin) / 16;
+  const auto is_wide = [wide](const AngularPair& p) { return p.phi_end - p.phi_begin > wide; };
+  std::size_t out = 0;
+  for (const AngularPair& pair : sorted) {
+    if (is_wide(pair)) entry[out++] = pair;
+  }
+  wide_[k] = std::uint32_t(out);
   double reach = -std::numeric_limits<double>::infinity();
-  for (auto it = narrow; it != last; ++it) it->reach = reach = std::max(reach, it->phi_end);
+  for (const AngularPair& pair : sorted) {
+    if (is_wide(pair)) continue;
+    entry[out] = pair;
+    entry[out++].reach = reach = std::max(reach, pair.phi_end);
+  }
+  return std::uint32_t(out);
+}
+
+void AngularTable::compact(const std::vector<std::uint32_t>& kept) {
+  std::vector<std::uint32_t> start(kept.size() + 1, 0);
+  for (std::size_t k = 0; k < kept.size(); ++k) start[k + 1] = start[k] + kept[k];
+  std::vector<AngularPair> pairs(start.back());
+  tbb::parallel_for(std::size_t(0), kept.size(), [&](std::size_t k) {
+    std::copy_n(pairs_.begin() + start_[k], kept[k], pairs.begin() + start[k]);
+  });
+  saturated_ = pairs_.size() - pairs.size();
+  pairs_ = std::move(pairs);
+  start_ = std::move(start);
 }
 
 }  // namespace shadowkit

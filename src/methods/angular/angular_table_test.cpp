@@ -3,12 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "../../testing/method_testing.h"
 #include "../../testing/test_scenes.h"
 #include "../raytrace/raytrace_method.h"
 #include "angular_method.h"
+#include "loop_slicer.h"
 #include "occluders.h"
 #include "shadowkit/core/error.h"
 
@@ -41,48 +43,6 @@ TEST(LightFrame, ADirectionalLightAlongTheScanLinesIsRejectedLoudly) {
   const LightFrame frame(Light::directional({0, -1, -1}), straight_camera(), {}, 0);
   EXPECT_NEAR(frame.angular({5, 1, 1}).theta, frame.angular({-3, 1, 1}).theta, 1e-15);
   EXPECT_NEAR(frame.angular({0, 0, 0}).theta, frame.angular(Vec3{0, -1, -1} * 4.0).theta, 1e-15);
-}
-
-TEST(AngularTable, ACutIsTheTrianglesCrossingOfTheThetaPlane) {
-  const LightFrame frame(Light::point({0, 0, 0}), straight_camera(), {}, 0);
-  const Vec3 v[3] = {{-1, -1, 2}, {1, -1, 2}, {0, 1, 2}};  // light frame, F = 2
-  AngularPair pair;
-  ASSERT_TRUE(cut_triangle(frame, v, 0.0, pair));
-  EXPECT_NEAR(pair.phi_begin, -0.25, 1e-15);  // tan(phi) of (-0.5, 0, 2)
-  EXPECT_NEAR(pair.phi_end, 0.25, 1e-15);
-  EXPECT_FALSE(cut_triangle(frame, v, std::atan2(1.5, 2.0), pair));    // above the apex
-  EXPECT_FALSE(cut_triangle(frame, v, 0.0 + std::numbers::pi, pair));  // the other half-plane
-}
-
-// Two hidden squares of one open mesh overlapping in phi at different depths (a coil seen
-// edge-on, Fig. 4(a)), each entry pairs the crossings of one triangle: points between the
-// squares are shadowed by the near one only where it covers them.
-TEST(AngularTable, PairsComeFromOneHiddenTriangleEachAndAreSortedByPhi) {
-  PolygonSoup coil = testing::horizontal_quad(-1, 0.5, -1, 1, 2);
-  coil.append(testing::horizontal_quad(-0.5, 1, -1, 1, 1));
-  const Scene scene = testing::make_scene(testing::camera({0, 8, 6}, {0, 0, 0}, 64, 48),
-                                          {Light::point({0, 4, 0})}, {coil});
-  const LightFrame frame(scene.lights[0], scene.camera, {}, 0);
-  AngularTableInput input{occluding_faces(scene, scene.lights[0]), 64};
-  const AngularTable table = AngularTable::build(scene, frame, input, {});
-  EXPECT_EQ(table.theta().resolution, 64);
-  std::size_t pairs = 0;
-  for (int k = 0; k < 64; ++k) {
-    const auto entry = table.entry(k);
-    const std::size_t wide = table.wide(k).size();
-    for (std::size_t i = 0; i < entry.size(); ++i) {
-      EXPECT_LE(entry[i].phi_begin, entry[i].phi_end);
-      if (i > 0 && i != wide) {
-        EXPECT_LE(entry[i - 1].phi_begin, entry[i].phi_begin);
-      }
-      EXPECT_EQ(entry[i].face,
-                scene.triangles().triangle_face[table.hidden(entry[i].hidden).triangle]);
-    }
-    // Each square is two triangles; an entry crossing both squares holds up to four pairs.
-    EXPECT_LE(entry.size(), 4u);
-    pairs += entry.size();
-  }
-  EXPECT_GT(pairs, 64u);
 }
 
 // A square frame (a closed solid with a hole, Figs. 13 and 25) over the ground: the light
@@ -118,6 +78,198 @@ PolygonSoup square_frame(double inner, double outer, double y0, double y1) {
     s.add_face({at(0, a[0], a[1]), at(0, b[0], b[1]), at(1, b[0], b[1]), at(1, a[0], a[1])});
   }
   return s;
+}
+
+// The table of light 0 of \p scene at resolution \p r.
+AngularTable table_of(const Scene& scene, int r) {
+  const LightFrame frame(scene.lights[0], scene.camera, {}, 0);
+  return AngularTable::build(scene, frame, occluding_sheets(scene, scene.lights[0]), {r, false});
+}
+
+// The entry whose slice holds world point \p p.
+int entry_at(const Scene& scene, const AngularTable& table, Vec3 p) {
+  const LightFrame frame(scene.lights[0], scene.camera, {}, 0);
+  const ThetaQuantization& q = table.theta();
+  return q.entry(q.index(frame.angular(p).theta));
+}
+
+// tan(phi) of world point \p p (the point light's phi as pairs keep it).
+double phi_at(const Scene& scene, Vec3 p) {
+  return LightFrame(scene.lights[0], scene.camera, {}, 0).angular(p).phi;
+}
+
+std::uint32_t face_of(const AngularTable& table, const AngularPair& pair) {
+  return table.hidden(pair.hidden).face;
+}
+
+// Straight down the light's -Y axis at the slices: a camera looking along -z at the origin,
+// so that phi = x / |y - 4| for a point light at (0, 4, 0).
+Camera front_camera() {
+  return testing::camera({0, 0, 20}, {0, 0, 0}, 64, 48);
+}
+
+// Figs. 3 / 4(a) / 23: a strip folded into a Z (an open mesh: a two-sided thin solid) whose
+// upper and lower parts overlap as seen from the light. Its one RE loop is coiled; each
+// crossing is paired along the far sheet, so the two overlapping spans stay apart (pairing
+// the upper span's begin with the lower span's begin would make a hole between them).
+TEST(Pairing, ACoiledLoopKeepsOverlappingSpansApart) {
+  PolygonSoup z = testing::polygon({{-1, 2, 1}, {1, 2, 1}, {1, 2, -1}, {-1, 2, -1}});
+  z.append(testing::polygon({{1, 2, 1}, {1, 1, 1}, {1, 1, -1}, {1, 2, -1}}));
+  z.append(testing::polygon({{1, 1, 1}, {-0.5, 1, 1}, {-0.5, 1, -1}, {1, 1, -1}}));
+  const Scene scene = testing::make_scene(front_camera(), {Light::point({0, 4, 0})}, {z});
+  const AngularTable table = table_of(scene, 64);
+  const auto pairs = table.entry(entry_at(scene, table, {0, 1.5, 0}));
+  ASSERT_EQ(pairs.size(), 3u);  // upper part, fold, lower part: one hidden face each
+  std::map<std::uint32_t, AngularPair> by_face;
+  for (const AngularPair& p : pairs) by_face[face_of(table, p)] = p;
+  ASSERT_EQ(by_face.size(), 3u);
+  const AngularPair upper = by_face[0], fold = by_face[1], lower = by_face[2];
+  // The slice is the entry's centre, near (not at) the plane z = 0.
+  EXPECT_NEAR(upper.phi_begin, phi_at(scene, {-1, 2, 0}), 1e-4);
+  EXPECT_NEAR(upper.phi_end, phi_at(scene, {1, 2, 0}), 1e-4);
+  EXPECT_NEAR(lower.phi_begin, phi_at(scene, {-0.5, 1, 0}), 1e-4);
+  EXPECT_NEAR(lower.phi_end, phi_at(scene, {1, 1, 0}), 1e-4);
+  // The fold's far sheet (its outside) joins the lower part's underside: its pair starts
+  // where the lower one ends (the hidden edge inserted in duplicate) and reaches the upper
+  // part's end.
+  EXPECT_EQ(fold.phi_begin, lower.phi_end);
+  EXPECT_NEAR(fold.phi_end, upper.phi_end, 1e-4);
+  EXPECT_LT(upper.phi_begin, lower.phi_begin);  // overlapping spans of one loop
+}
+
+// Figs. 13 / 25: a square frame, a closed solid with a hole, lit from above: the slice
+// through the hole crosses the outer and the hole's RE loops; the direction constraint makes
+// shadow begin at the outer loop and end at the hole's, so no pair holds the hole.
+TEST(Pairing, AHoleEndsTheSpanAtItsOwnLoop) {
+  const Scene scene =
+      testing::make_scene(front_camera(), {Light::point({0, 4, 0})}, {square_frame(1, 2, 1.5, 2)});
+  const AngularTable table = table_of(scene, 64);
+  EXPECT_EQ(table.loop_stats().loops, 2);
+  const auto pairs = table.entry(entry_at(scene, table, {0, 1.5, 0}));
+  ASSERT_FALSE(pairs.empty());
+  for (const AngularPair& p : pairs) {
+    EXPECT_TRUE(p.phi_end <= phi_at(scene, {-1, 1.5, 0}) + 1e-4 ||
+                p.phi_begin >= phi_at(scene, {1, 1.5, 0}) - 1e-4)
+        << p.phi_begin << " " << p.phi_end;
+  }
+  // The hidden outer walls and bottoms: from the top of each outer wall to the hole's rim.
+  double covered = 0;
+  for (const AngularPair& p : pairs) covered += p.phi_end - p.phi_begin;
+  EXPECT_NEAR(covered, 2 * (phi_at(scene, {2, 2, 0}) - phi_at(scene, {1, 1.5, 0})), 1e-3);
+}
+
+// A prism over the U-shaped (non-convex) outline \p u in the xy plane, z in [-1, 1].
+PolygonSoup prism(const std::vector<Vec3>& u) {
+  PolygonSoup s;
+  const std::uint32_t n = std::uint32_t(u.size());
+  for (const Vec3& p : u) s.positions.push_back({p.x, p.y, 1});
+  for (const Vec3& p : u) s.positions.push_back({p.x, p.y, -1});
+  std::vector<std::uint32_t> front, back;
+  for (std::uint32_t i = 0; i < n; ++i) front.push_back(i), back.push_back(2 * n - 1 - i);
+  s.add_face(front);
+  s.add_face(back);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t j = (i + 1) % n;
+    s.add_face({i, n + i, n + j, j});
+  }
+  return s;
+}
+
+// Figs. 26 / 27: a U-shaped solid (a hole-like notch between two arms, whose tops are equal
+// adjacent peaks of its RE loop) lit from straight above: the slice through the notch gives
+// one span whose depth is the far sheet (outer walls and bottom, exact faces), so the notch
+// floor in front of it stays lit while the ground beyond it is shadowed.
+TEST(Pairing, AHoleLikeNotchIsOneSpanWithTheFarSheetsDepth) {
+  const std::vector<Vec3> u = {{-2, 0, 0},  {2, 0, 0},    {2, 2, 0},  {1, 2, 0},
+                               {1, 0.5, 0}, {-1, 0.5, 0}, {-1, 2, 0}, {-2, 2, 0}};
+  const Scene scene = testing::make_scene(front_camera(), {Light::point({0, 6, 0})}, {prism(u)});
+  ASSERT_TRUE(scene.objects[0].mesh.closed());
+  ASSERT_TRUE(scene.objects[0].mesh.consistently_oriented());
+  const AngularTable table = table_of(scene, 64);
+  std::vector<AngularPair> pairs;
+  for (const AngularPair& p : table.entry(entry_at(scene, table, {0, 1, 0}))) pairs.push_back(p);
+  std::sort(pairs.begin(), pairs.end(),
+            [](const AngularPair& a, const AngularPair& b) { return a.phi_begin < b.phi_begin; });
+  ASSERT_EQ(pairs.size(), 3u);  // left outer wall, bottom, right outer wall
+  EXPECT_NEAR(pairs[0].phi_begin, phi_at(scene, {-2, 2, 0}), 1e-4);
+  EXPECT_EQ(pairs[1].phi_begin, pairs[0].phi_end);
+  EXPECT_EQ(pairs[2].phi_begin, pairs[1].phi_end);
+  EXPECT_NEAR(pairs[2].phi_end, phi_at(scene, {2, 2, 0}), 1e-4);
+  const HiddenFace& bottom = table.hidden(pairs[1].hidden);
+  const LightFrame frame(scene.lights[0], scene.camera, {}, 0);
+  EXPECT_FALSE(bottom.behind(frame.local({0, 0.5, 0}), 1e-9));  // the notch floor
+  EXPECT_TRUE(bottom.behind(frame.local({0, -1, 0}), 1e-9));    // the ground under it
+}
+
+// Fig. 27: the U-shaped solid under a directional light tilted towards -z, sliced exactly at
+// the height of its arms' top back edges. Each edge joins two equal adjacent peaks of the RE
+// loop and lies in the slice (exactly: a directional slice is Y = theta, and both ends have
+// the same Y). As in the papers, the edge between the peaks crosses nothing and the peaks
+// pair with each other: one pair per arm, from its left peak to its right one, on the hidden
+// back face; the notch between the arms holds nothing.
+TEST(Pairing, EqualAdjacentPeaksPairWithEachOther) {
+  const std::vector<Vec3> u = {{-2, 0, 0},  {2, 0, 0},    {2, 2, 0},  {1, 2, 0},
+                               {1, 0.5, 0}, {-1, 0.5, 0}, {-1, 2, 0}, {-2, 2, 0}};
+  const Light light = Light::directional(normalize(Vec3{0, -1, -0.5}));
+  const Scene scene = testing::make_scene(front_camera(), {light}, {prism(u)});
+  const Mesh& mesh = scene.objects[0].mesh;
+  const LightFrame frame(light, scene.camera, {}, 0);
+  const FarSheets sheets = far_sheets(mesh, light, true);
+  std::vector<Vec3> local;
+  std::vector<double> theta;
+  for (const Vec3& v : mesh.vertices)
+    local.push_back(frame.local(v)), theta.push_back(local.back().y);
+  std::vector<std::uint32_t> hidden_id(mesh.face_count());
+  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) hidden_id[f] = f;
+  const std::vector<RidgeEdge> ridges = find_ridge_edges(mesh, sheets);
+  const std::vector<RidgeEdgeLoop> loops = chain_ridge_edge_loops(ridges);
+  ASSERT_EQ(loops.size(), 1u);
+
+  ThetaSlice peak;
+  peak.theta = frame.local({-2, 2, -1}).y;
+  peak.point_light = false;
+  ASSERT_EQ(frame.local({-1, 2, -1}).y, peak.theta);  // equal adjacent peaks, exactly
+  ASSERT_EQ(frame.local({1, 2, -1}).y, peak.theta);
+  const ThetaQuantization one_entry{-1e3, 2e3, 1, false};
+  const std::vector<char> convex(mesh.face_count(), 0);  // the U's front and back are not
+  const SlicedMesh sliced{mesh, sheets, local, theta, convex, hidden_id};
+  SliceScratch scratch;
+  std::vector<EntryPair> out;
+  slice_loop(sliced, ridges, loops[0], one_entry, {&peak, 1}, scratch, out);
+
+  ASSERT_EQ(out.size(), 2u);
+  std::sort(out.begin(), out.end(),
+            [](const EntryPair& a, const EntryPair& b) { return a.phi_begin < b.phi_begin; });
+  const double phi[4] = {frame.local({-2, 2, -1}).x, frame.local({-1, 2, -1}).x,
+                         frame.local({1, 2, -1}).x, frame.local({2, 2, -1}).x};
+  EXPECT_DOUBLE_EQ(out[0].phi_begin, phi[0]);
+  EXPECT_DOUBLE_EQ(out[0].phi_end, phi[1]);
+  EXPECT_DOUBLE_EQ(out[1].phi_begin, phi[2]);
+  EXPECT_DOUBLE_EQ(out[1].phi_end, phi[3]);
+  for (const EntryPair& p : out) {
+    EXPECT_NEAR(mesh.planes[p.hidden].normal.z, -1, 1e-12);  // the back face
+  }
+}
+
+// Sec. 5: with hidden edges inserted in duplicate, a cube lit from a corner gives, in the
+// slice through its far corner, one pair per hidden face crossed, meeting exactly at the
+// hidden edges: the depth inside the span is the hidden faces' own.
+TEST(Pairing, HiddenEdgesSplitASpanIntoExactFaces) {
+  const Scene scene = testing::make_scene(front_camera(), {Light::point({3, 4, 5})},
+                                          {testing::box({-1, -1, -1}, {1, 1, 1})});
+  const AngularTable table = table_of(scene, 256);
+  const auto pairs = table.entry(entry_at(scene, table, {-1, -1, -1}));
+  ASSERT_GE(pairs.size(), 2u);
+  std::vector<AngularPair> sorted(pairs.begin(), pairs.end());
+  std::sort(sorted.begin(), sorted.end(),
+            [](const AngularPair& a, const AngularPair& b) { return a.phi_begin < b.phi_begin; });
+  for (std::size_t i = 1; i < sorted.size(); ++i) {
+    EXPECT_EQ(sorted[i].phi_begin, sorted[i - 1].phi_end);  // bit-identical: no crack
+    EXPECT_NE(face_of(table, sorted[i]), face_of(table, sorted[i - 1]));
+  }
+  for (const AngularPair& p : sorted) {
+    EXPECT_LT(scene.face_plane(face_of(table, p)).distance({3, 4, 5}), 0);  // hidden
+  }
 }
 
 TEST(AngularTable, AHoleLetsTheLightThroughAndDepthIsExactInsideSpans) {

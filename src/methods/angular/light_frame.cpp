@@ -33,8 +33,7 @@ LightFrame::LightFrame(const Light& light, const Camera& camera, Vec3 scene_cent
 
 AngularPoint LightFrame::angular_local(Vec3 v) const {
   if (!point_) return {v.z, v.y, v.x};
-  const double rho = std::hypot(v.y, v.z);
-  return {length(v), std::atan2(v.y, v.z), v.x / rho};
+  return {length(v), std::atan2(v.y, v.z), phi_local(v)};
 }
 
 FrameAffine LightFrame::theta_plane(double theta) const {

@@ -54,6 +54,8 @@ class LightFrame {
   /// Eqs. 1-3 of a light-frame point.
   AngularPoint angular_local(Vec3 v) const;
   AngularPoint angular(Vec3 p) const { return angular_local(local(p)); }
+  /// phi alone (eq. 3) of a light-frame point, as AngularPoint keeps it.
+  double phi_local(Vec3 v) const { return point_ ? v.x / std::sqrt(v.y * v.y + v.z * v.z) : v.x; }
 
   /// The constant-theta plane at \p theta (for a point light it also holds theta + pi).
   FrameAffine theta_plane(double theta) const;

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <limits>
 
-#include "ridge_edges.h"
-
 namespace shadowkit {
 namespace {
 
@@ -35,18 +33,15 @@ bool eye_and_light_may_be_apart(const Scene& scene, const Light& light, const Bo
 
 }  // namespace
 
-std::vector<char> occluding_faces(const Scene& scene, const Light& light) {
-  std::vector<char> occluder(scene.face_count(), 0);
+std::vector<FarSheets> occluding_sheets(const Scene& scene, const Light& light) {
+  std::vector<FarSheets> sheets;
+  sheets.reserve(scene.objects.size());
   for (const SceneObject& object : scene.objects) {
     const Mesh& mesh = object.mesh;
-    const bool hidden_only =
-        one_solid(mesh) && !eye_and_light_may_be_apart(scene, light, mesh.bounds());
-    for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
-      const double side = light_side(mesh.planes[f], light);
-      occluder[object.first_face + f] = hidden_only ? side < 0 : side != 0;
-    }
+    const bool solid = one_solid(mesh) && !eye_and_light_may_be_apart(scene, light, mesh.bounds());
+    sheets.push_back(far_sheets(mesh, light, solid));
   }
-  return occluder;
+  return sheets;
 }
 
 }  // namespace shadowkit

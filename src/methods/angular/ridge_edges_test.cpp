@@ -14,6 +14,15 @@ Mesh build(const PolygonSoup& soup) {
   return Mesh::build(soup, "test", {});
 }
 
+std::vector<RidgeEdge> find_ridge_edges(const Mesh& mesh, const Light& light) {
+  return shadowkit::find_ridge_edges(mesh, far_sheets(mesh, light, one_solid(mesh)));
+}
+
+std::vector<std::uint32_t> hidden_edges_at_loops(const Mesh& mesh, const Light& light,
+                                                 std::span<const RidgeEdge> edges) {
+  return shadowkit::hidden_edges_at_loops(mesh, far_sheets(mesh, light, one_solid(mesh)), edges);
+}
+
 // Sec. 2: at every vertex as many REs leave as arrive, so every loop closes.
 void expect_closed_loops(const Mesh& mesh, const Light& light) {
   const std::vector<RidgeEdge> ridges = find_ridge_edges(mesh, light);

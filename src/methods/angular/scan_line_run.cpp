@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace shadowkit {
 namespace {
@@ -65,10 +66,43 @@ double ScanLineRun::phi_crossing(double phi, double c0) const {
   return best;
 }
 
-double max_run_end(const ScanLineRun& run, const LightFrame& frame, const ThetaQuantization& q,
-                   int k, double c0) {
-  return std::min(run.crossing(frame.theta_plane(q.lower(k)), c0),
-                  run.crossing(frame.theta_plane(q.lower(k + 1)), c0));
+bool ScanLineRun::phi_increasing(double c) const {
+  const Vec3 w = m_ + n_ * c;
+  const double d = dm_ + dn_ * c;
+  // Point light: tan(phi) = W.x sign(D) / |W.yz|; directional: phi = W.x / D.
+  const double slope = point_light_
+                           ? (n_.x * (w.y * w.y + w.z * w.z) - w.x * (w.y * n_.y + w.z * n_.z)) * d
+                           : n_.x * d - w.x * dn_;
+  return slope >= 0;
+}
+
+ThetaBoundaries::ThetaBoundaries(const LightFrame& frame, const ThetaQuantization& q)
+    : q_(q), point_light_(frame.point_light()) {
+  planes_.reserve(std::size_t(q.resolution) + 3);
+  for (int k = -1; k <= q.resolution + 1; ++k) planes_.push_back(frame.theta_plane(q.lower(k)));
+}
+
+int ThetaBoundaries::locate(Vec3 v, int guess) const {
+  // A plane's side tells theta's side only within half a turn of it.
+  constexpr int kReach = 4;
+  if (guess != -2 && (!point_light_ || q_.step * kReach < std::numbers::pi / 2)) {
+    int k = guess;
+    for (int step = 0; step < kReach; ++step) {
+      if (!q_.full_turn && (k < 0 || k >= q_.resolution)) break;
+      if (lower(k).at(v) < 0) {
+        --k;
+      } else if (lower(k + 1).at(v) >= 0) {
+        ++k;
+      } else {
+        return k;
+      }
+    }
+  }
+  return q_.index(point_light_ ? std::atan2(v.y, v.z) : v.y);
+}
+
+double max_run_end(const ScanLineRun& run, const ThetaBoundaries& bounds, int k, double c0) {
+  return std::min(run.crossing(bounds.lower(k), c0), run.crossing(bounds.lower(k + 1), c0));
 }
 
 }  // namespace shadowkit

@@ -52,6 +52,7 @@ TEST(ScanLineRun, MaximumRunLengthAgreesWithBruteForce) {
   int compared = 0;
   for (const Case& test : cases()) {
     const LightFrame frame(test.light, cam, {}, 0);
+    const ThetaBoundaries bounds(frame, test.q);
     for (int row = 110; row < 200; row += 7) {
       const ScanLineRun run(frame, cam, kGround, row);
       for (int c0 = 0; c0 < 400; c0 += 13) {
@@ -61,7 +62,7 @@ TEST(ScanLineRun, MaximumRunLengthAgreesWithBruteForce) {
                test.q.index(frame.angular(ground_point(cam, brute, row)).theta) == k) {
           ++brute;
         }
-        const double end = max_run_end(run, frame, test.q, k, c0);
+        const double end = max_run_end(run, bounds, k, c0);
         const int predicted = int(std::min(std::ceil(end), 400.0));
         EXPECT_EQ(predicted, brute) << "row " << row << " c0 " << c0;
         compared += brute < 400;
@@ -97,6 +98,50 @@ TEST(ScanLineRun, PhiCrossingAgreesWithBruteForce) {
     }
   }
   EXPECT_GT(compared, 20);
+}
+
+// phi's direction along the run, in closed form, against the next pixel's phi.
+TEST(ScanLineRun, PhiDirectionAgreesWithTheNextPixel) {
+  const Camera cam = testing::camera({0, 4, 8}, {0, 0, 0}, 400, 200);
+  int compared = 0;
+  for (const Case& test : cases()) {
+    const LightFrame frame(test.light, cam, {}, 0);
+    for (const Plane& plane : {kGround, kFlat}) {
+      for (int row = 110; row < 200; row += 17) {
+        const ScanLineRun run(frame, cam, plane, row);
+        for (int c = 0; c + 1 < 400; c += 23) {
+          const double here = frame.angular(ground_point(cam, c, row, plane)).phi;
+          const double next = frame.angular(ground_point(cam, c + 1, row, plane)).phi;
+          if (std::abs(next - here) < 1e-12) continue;
+          EXPECT_EQ(run.phi_increasing(c), next > here) << "row " << row << " c " << c;
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 100);
+}
+
+// The entry found from a nearby entry by the boundary planes' sides is eq. 2's, as long as
+// the guess is within reach; a guess out of reach or unknown falls back to eq. 2.
+TEST(ThetaBoundaries, LocateAgreesWithTheArctangent) {
+  const Camera cam = testing::camera({0, 4, 8}, {0, 0, 0}, 400, 200);
+  int compared = 0;
+  for (const Case& test : cases()) {
+    const LightFrame frame(test.light, cam, {}, 0);
+    const ThetaBoundaries bounds(frame, test.q);
+    for (int row = 100; row < 200; row += 9) {
+      for (int c = 0; c < 400; c += 37) {
+        const Vec3 v = frame.local(ground_point(cam, c, row));
+        const int k = test.q.index(frame.angular_local(v).theta);
+        for (const int guess : {-2, k - 3, k - 1, k, k + 2, k + 40}) {
+          EXPECT_EQ(test.q.entry(bounds.locate(v, guess)), test.q.entry(k)) << guess;
+          ++compared;
+        }
+      }
+    }
+  }
+  EXPECT_GT(compared, 500);
 }
 
 }  // namespace

@@ -5,19 +5,13 @@
 
 #include <limits>
 
+#include "../../testing/method_testing.h"
 #include "raytrace_method.h"
-#include "shadowkit/scene/scene_file.h"
 
 namespace shadowkit {
 namespace {
 
-struct Fixture {
-  Scene scene;
-  VisibleSurfaceBuffer vsb;
-  explicit Fixture(const std::string& name) : scene(load_scene(name, {})) {
-    vsb = render_visible_surfaces(scene, {});
-  }
-};
+using Fixture = testing::RenderedScene;
 
 const Fixture& cubes() {
   static const Fixture f("cubes:2000");

@@ -28,6 +28,12 @@ SceneParts table_scene(const ParamReader& params);
 SceneParts three_lights_scene(const ParamReader& params);
 /// The analytic test: a square above a plane under a point light on its axis.
 SceneParts square_scene(const ParamReader& params);
+/// Thakur et al. Figs. 2b / 3: a helical band of "turns" turns whose RE loop is coiled.
+SceneParts coil_scene(const ParamReader& params);
+/// Thakur et al. Figs. 13 / 25: a thick square frame, an object with a hole.
+SceneParts holed_scene(const ParamReader& params);
+/// Thakur et al. Figs. 26 / 27: a standing U, a hole-like notch with equal adjacent peaks.
+SceneParts hole_like_scene(const ParamReader& params);
 
 /// A camera at \p position looking at \p look_at with +y up, 1920×1080.
 Camera camera_looking_at(Vec3 position, Vec3 look_at, double fov_y_deg = 45);

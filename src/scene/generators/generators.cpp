@@ -112,6 +112,9 @@ constexpr SceneEntry kScenes[] = {
     {"table", table_scene, "", false, "table"},
     {"three-lights", three_lights_scene, "", false, "three-lights"},
     {"square", square_scene, "height", false, "square:1.5"},
+    {"coil", coil_scene, "turns", false, "coil:1.6"},
+    {"holed", holed_scene, "", false, "holed"},
+    {"hole-like", hole_like_scene, "", false, "hole-like"},
 };
 
 const SceneEntry* find_scene(std::string_view name) {

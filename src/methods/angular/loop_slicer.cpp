@@ -1,0 +1,217 @@
+#include "loop_slicer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace shadowkit {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+bool crosses(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t e) {
+  const MeshEdge& edge = m.mesh.edges[e];
+  return (s.side(m.local[edge.v0]) >= 0) != (s.side(m.local[edge.v1]) >= 0);
+}
+
+// Computed from the edge's lower vertex id, so that both faces of an edge get the same bits
+// and neighbouring pairs meet without a crack.
+Crossing edge_crossing(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t e) {
+  const MeshEdge& edge = m.mesh.edges[e];
+  const Vec3 a = m.local[edge.v0], b = m.local[edge.v1];
+  const double ga = s.side(a), gb = s.side(b);
+  Crossing c;
+  c.p = a + (b - a) * (ga / (ga - gb));
+  c.phi = s.phi(c.p);
+  c.edge = e;
+  return c;
+}
+
+// The crossings of face f's edges by the slice, ordered along the cut line.
+void face_cuts(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f,
+               std::vector<Crossing>& cuts) {
+  cuts.clear();
+  const std::uint32_t n = m.mesh.face_size(f);
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const std::uint32_t e = m.mesh.corner_edge[m.mesh.face_start[f] + k];
+    if (crosses(m, s, e)) cuts.push_back(edge_crossing(m, s, e));
+  }
+  if (cuts.size() <= 2) return;
+  // A non-convex face: the cut is several segments along one line.
+  Vec3 lo = cuts[0].p, hi = lo;
+  for (const Crossing& c : cuts) lo = min(lo, c.p), hi = max(hi, c.p);
+  const Vec3 spread = hi - lo;
+  const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : spread.y >= spread.z ? 1 : 2;
+  std::sort(cuts.begin(), cuts.end(),
+            [axis](const Crossing& a, const Crossing& b) { return a.p[axis] < b.p[axis]; });
+}
+
+// The other end of the segment of face f's cut that starts at \p at: the next crossing
+// along the cut line (segments alternate inside and outside a non-convex face). From the
+// light's X axis: the nearest crossing in the half-plane at theta. False if none.
+bool partner(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, const Crossing& at,
+             std::vector<Crossing>& cuts, Crossing& out) {
+  if (at.edge >= 0) {
+    // The common case, a cut with two ends: the other crossing edge, without sorting.
+    const std::uint32_t first = m.mesh.face_start[f], n = m.mesh.face_size(f);
+    std::int64_t other = -1;
+    int crossings = 0;
+    bool above = s.side(m.local[m.mesh.face_vertices[first]]) >= 0;
+    for (std::uint32_t k = 0; k < n; ++k) {  // corner k's edge ends at corner k + 1
+      const bool next_above = s.side(m.local[m.mesh.face_vertices[first + (k + 1) % n]]) >= 0;
+      if (next_above != above) {
+        ++crossings;
+        const std::uint32_t e = m.mesh.corner_edge[first + k];
+        if (e != at.edge) other = e;
+      }
+      above = next_above;
+    }
+    if (crossings == 2 && other >= 0) {
+      out = edge_crossing(m, s, std::uint32_t(other));
+      return true;
+    }
+  }
+  face_cuts(m, s, f, cuts);
+  if (at.edge < 0) {
+    double best = kInf;
+    for (const Crossing& c : cuts) {
+      const double d = length(c.p - at.p);
+      if (s.rho(c.p) > 0 && d < best) best = d, out = c;
+    }
+    return best < kInf;
+  }
+  for (std::size_t i = 0; i < cuts.size(); ++i) {
+    if (cuts[i].edge != at.edge) continue;
+    const std::size_t j = i ^ 1;
+    if (j >= cuts.size()) return false;
+    out = cuts[j];
+    return true;
+  }
+  return false;
+}
+
+// Hazard: a point light's slice is a half-plane. When the segment from \p at leaves it
+// through the light's X axis, it is clipped there: phi runs to +-inf (tan(phi) of a point
+// on the axis). True when clipped.
+bool clip_at_axis(const ThetaSlice& s, const Crossing& at, Crossing& next) {
+  const double ra = s.rho(at.p), rb = s.rho(next.p);
+  if (rb >= 0) return false;
+  const double x = at.p.x + (next.p.x - at.p.x) * (ra / (ra - rb));
+  next.phi = x > 0 ? kInf : -kInf;
+  return true;
+}
+
+void emit(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, double a, double b,
+          std::vector<EntryPair>& out) {
+  out.push_back({s.entry, m.hidden_id[f], std::min(a, b), std::max(a, b)});
+}
+
+// Walks the far sheet from \p at (on face f's edge, or on the light's X axis) across the
+// slice: one pair per face, each hidden edge crossed shared by two pairs (inserted in
+// duplicate), until the RE crossing where the shadow ends. While the walk crosses the convex
+// faces of the previous entry's walk from the same start, their exit edges still cross the
+// slice and are the only other crossings: they are taken from \p scratch's path.
+void walk(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, Crossing at,
+          SliceScratch& scratch, std::vector<EntryPair>& out) {
+  std::vector<WalkStep>& path = scratch.path;
+  for (std::size_t step = 0; step < m.mesh.face_count(); ++step) {
+    Crossing next;
+    if (step < path.size() && path[step].face == f && m.convex[f] &&
+        crosses(m, s, path[step].exit)) {
+      next = edge_crossing(m, s, path[step].exit);
+    } else {
+      path.resize(step);
+      if (!partner(m, s, f, at, scratch.cuts, next)) return;
+      const auto exit = std::uint32_t(next.edge);
+      path.push_back({f, exit, sheet_neighbour(m.mesh, m.sheets, f, exit)});
+    }
+    const bool clipped = clip_at_axis(s, at, next);
+    emit(m, s, f, at.phi, next.phi, out);
+    if (clipped || path[step].beyond < 0) return;
+    f = std::uint32_t(path[step].beyond);
+    at = next;
+  }
+}
+
+}  // namespace
+
+ThetaSlice theta_slice(const ThetaQuantization& q, bool point_light, int k) {
+  ThetaSlice s;
+  s.entry = std::uint32_t(k);
+  s.theta = q.centre(k);
+  s.cos = std::cos(s.theta);
+  s.sin = std::sin(s.theta);
+  s.point_light = point_light;
+  return s;
+}
+
+void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const RidgeEdgeLoop& loop,
+                const ThetaQuantization& q, std::span<const ThetaSlice> slices,
+                SliceScratch& scratch, std::vector<EntryPair>& out) {
+  if (slices.empty()) return;
+  const bool point = slices[0].point_light;
+  for (const std::uint32_t i : loop.edges) {
+    const RidgeEdge& re = ridges[i];
+    double lo = m.theta[re.from], hi = m.theta[re.to];
+    const bool wraps = point && std::abs(hi - lo) > std::numbers::pi;  // behind the light
+    // Direction constraint (RE-loops paper, Sec. 3.2): seen from the light, every far sheet
+    // lies to the right of its REs (larger phi), so shadow begins where an RE goes up
+    // through a slice and ends where one comes down, the begin's partner. An RE clearly
+    // going down begins nothing; near-constant theta is left to the side test.
+    if ((hi - lo) * (wraps ? -1 : 1) < -1e-9) continue;
+    if (lo > hi) std::swap(lo, hi);
+    if (wraps) {
+      std::swap(lo, hi);
+      hi += 2 * std::numbers::pi;
+    }
+    scratch.path.clear();
+    // Entries whose centre the edge may cross, one more at each end against rounding (the
+    // side test decides), within the table unless it goes all around.
+    const double first = std::floor((lo - q.theta_min) / q.step - 0.5);
+    const double last = std::ceil((hi - q.theta_min) / q.step - 0.5);
+    const double end = q.full_turn ? first + q.resolution : q.resolution - 1;
+    const int k0 = int(std::max(first, q.full_turn ? first : 0.0));
+    const int k1 = int(std::min(last, end));
+    for (int k = k0; k <= k1; ++k) {
+      const int entry = q.entry(k);
+      if (entry < 0) continue;
+      const ThetaSlice& s = slices[entry];
+      if (!(s.side(m.local[re.from]) < 0 && s.side(m.local[re.to]) >= 0)) continue;  // up
+      const Crossing at = edge_crossing(m, s, re.edge);
+      if (s.rho(at.p) <= 0) continue;  // in the half-plane at theta + pi: another entry's
+      walk(m, s, re.face, at, scratch, out);
+    }
+  }
+}
+
+void slice_from_axis(const SlicedMesh& m, std::uint32_t f, std::span<const ThetaSlice> slices,
+                     SliceScratch& scratch, std::vector<EntryPair>& out) {
+  Crossing at;
+  at.p = {axis_piercing(m, f), 0, 0};
+  at.phi = -kInf;
+  for (const ThetaSlice& s : slices) {
+    scratch.path.clear();  // from the axis, the exit is not the only other crossing
+    walk(m, s, f, at, scratch, out);
+  }
+}
+
+double axis_piercing(const SlicedMesh& m, std::uint32_t f) {
+  const std::uint32_t n = m.mesh.face_size(f);
+  // The origin inside the face's projection on the (Y, F) plane (crossing number), and the
+  // face's Newell normal.
+  bool inside = false;
+  Vec3 normal{0, 0, 0};
+  for (std::uint32_t k = 0; k < n; ++k) {
+    const Vec3 a = m.local[m.mesh.face_vertex(f, k)];
+    const Vec3 b = m.local[m.mesh.face_vertex(f, (k + 1) % n)];
+    if ((a.y > 0) != (b.y > 0) && 0 < a.z + (b.z - a.z) * (0 - a.y) / (b.y - a.y)) {
+      inside = !inside;
+    }
+    normal = normal + cross(a, b);
+  }
+  if (!inside || normal.x == 0) return std::numeric_limits<double>::quiet_NaN();
+  return dot(normal, m.local[m.mesh.face_vertex(f, 0)]) / normal.x;
+}
+
+}  // namespace shadowkit

@@ -1,0 +1,82 @@
+#pragma once
+// Slicing RE loops at constant theta (discretized-shadow-volume paper, Sec. 7, steps
+// 1.3-1.6; RE-loops paper, Secs. 3.2-3.3).
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "angular_table.h"
+#include "ridge_edges.h"
+
+namespace shadowkit {
+
+/// \brief The constant-theta plane at the centre of one table entry.
+struct ThetaSlice {
+  std::uint32_t entry = 0;
+  double theta = 0, cos = 1, sin = 0;
+  bool point_light = true;
+
+  /// Signed distance-like value whose sign tells the side of the plane (shared by every
+  /// edge test of the entry, so that neighbours agree on which edges the plane crosses).
+  double side(Vec3 v) const { return point_light ? v.y * cos - v.z * sin : v.y - theta; }
+  /// Distance from the light's X axis inside the half-plane at theta; negative in the
+  /// half-plane at theta + pi. Always 1 for a directional light.
+  double rho(Vec3 v) const { return point_light ? v.y * sin + v.z * cos : 1; }
+  /// phi as AngularPoint keeps it (tan(phi) for a point light) of a point on the plane.
+  double phi(Vec3 v) const { return point_light ? v.x / rho(v) : v.x; }
+};
+
+/// \brief A point where a slice crosses the far sheet's boundary or a face's edge.
+struct Crossing {
+  Vec3 p;
+  double phi = 0;
+  std::int64_t edge = -1;  ///< mesh edge; -1 on the light's X axis
+};
+
+/// \brief One face crossed by a walk along the far sheet: the edge it is left by and the
+/// face beyond (-1: the edge is an RE, where the shadow ends).
+struct WalkStep {
+  std::uint32_t face = 0, exit = 0;
+  std::int64_t beyond = -1;
+};
+
+/// \brief Reused buffers of one thread's slicing: a face's cut, and the last walk from the RE
+/// being sliced (consecutive entries mostly cross the same faces by the same edges).
+struct SliceScratch {
+  std::vector<Crossing> cuts;
+  std::vector<WalkStep> path;
+};
+
+/// The slice of entry \p k.
+ThetaSlice theta_slice(const ThetaQuantization& q, bool point_light, int k);
+
+/// \brief One mesh, seen from the light, while its RE loops are sliced.
+struct SlicedMesh {
+  const Mesh& mesh;
+  const FarSheets& sheets;
+  std::span<const Vec3> local;               ///< light-frame vertices
+  std::span<const double> theta;             ///< per vertex on an RE: its theta (eq. 2)
+  std::span<const char> convex;              ///< per face: convex, so a slice cuts it once
+  std::span<const std::uint32_t> hidden_id;  ///< per face: its AngularTable::hidden() index
+};
+
+/// \brief Sec. 7, steps 1.5-1.6 for one RE loop. At every entry an edge of the loop crosses
+/// where shadow begins (the loop's far sheet lies towards larger phi: the direction
+/// constraint of Sec. 3.2 of the RE-loops paper), walks the far sheet across the slice:
+/// each hidden face crossed gives one pair, each hidden edge crossed is inserted in duplicate
+/// (the end of one pair and the start of the next, Sec. 5), and the walk ends on the RE
+/// crossing where the shadow ends, the begin's partner.
+void slice_loop(const SlicedMesh& mesh, std::span<const RidgeEdge> ridges,
+                const RidgeEdgeLoop& loop, const ThetaQuantization& q,
+                std::span<const ThetaSlice> slices, SliceScratch& scratch,
+                std::vector<EntryPair>& out);
+
+/// \brief A point light's X axis pierces occluding face \p f at X < 0 (light inside the
+/// scene, Sec. 11.2): in every entry a far-sheet walk starts on the axis (phi = -inf) in \p f.
+void slice_from_axis(const SlicedMesh& mesh, std::uint32_t f, std::span<const ThetaSlice> slices,
+                     SliceScratch& scratch, std::vector<EntryPair>& out);
+
+/// Where the light's X axis pierces face \p f (its X), if it does: NaN otherwise.
+double axis_piercing(const SlicedMesh& mesh, std::uint32_t f);
+
+}  // namespace shadowkit

@@ -1,0 +1,28 @@
+#pragma once
+// Eq. 4's inputs taken from the view volume (discretized-shadow-volume paper, Sec. 3): "this
+// range is computed at the set up time based on the view volume".
+#include <span>
+
+#include "light_frame.h"
+#include "shadowkit/scene/scene.h"
+
+namespace shadowkit {
+
+/// \brief The theta the camera can see: every visible point lies in the view frustum and in
+/// the scene's bounding box, so its theta lies in [lo, hi] unless \p bounded is false (the
+/// light's X axis passes through that region, or it wraps past theta = +-pi).
+struct ViewTheta {
+  double lo = 0, hi = 0;
+  bool bounded = false;
+};
+
+/// The theta range of the scene's bounding box clipped to the view frustum.
+ViewTheta view_theta(const Scene& scene, const LightFrame& frame);
+
+/// \brief Eq. 4 generalized: R such that one entry is no coarser than one scan line (Sec. 3:
+/// "at the limiting range there is a unique theta value for each scan line") at three
+/// quarters of the scene vertices in view, over \p theta_range, at most 8 per scan line of
+/// the image; the number of scan lines when no vertex is in view.
+int automatic_resolution(const Scene& scene, const LightFrame& frame, double theta_range);
+
+}  // namespace shadowkit
