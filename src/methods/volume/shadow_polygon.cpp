@@ -105,8 +105,8 @@ std::optional<ShadowPolygon> side_polygon(const Mesh& mesh, const ContourEdge& e
   return oriented(poly, edge.weight, eye);
 }
 
-void cap_polygons(const Scene& scene, std::uint32_t t, const Light& light, Vec3 eye,
-                  std::vector<ShadowPolygon>& out) {
+void cap_polygons(const Scene& scene, std::uint32_t t, std::uint32_t sub_object, const Light& light,
+                  Vec3 eye, std::vector<ShadowPolygon>& out) {
   const TriangleList& list = scene.triangles();
   const std::uint32_t face = list.triangle_face[t];
   const Plane& plane = scene.face_plane(face);
@@ -117,6 +117,7 @@ void cap_polygons(const Scene& scene, std::uint32_t t, const Light& light, Vec3 
   ShadowPolygon cap;
   cap.depth_fail = true;
   cap.face = face;
+  cap.sub_object = sub_object;
   cap.corner_count = 3;
   for (int k = 0; k < 3; ++k) cap.corners[k] = {list.positions[list.triangles[t][k]], 1};
   cap.normal = side > 0 ? -plane.normal : plane.normal;

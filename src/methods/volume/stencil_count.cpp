@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "../../raster/tile_bins.h"
+#include "depth_keys.h"
 
 namespace shadowkit {
 namespace {
@@ -17,9 +18,7 @@ using raster::TileBins;
 constexpr int kTile = TileBins::kTile;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-// Relative slack of the depth-key bounds below. Rounding in the keys and in the exact plane
-// test is about 1e-15 relative; keys closer than this fall back to the exact test.
-constexpr double kKeySlack = 1e-7;
+constexpr std::uint32_t kNoSubObject = std::numeric_limits<std::uint32_t>::max();
 
 // Shadow polygons as screen triangles, face = polygon index. Order does not matter: counts
 // add up.
@@ -39,53 +38,11 @@ std::vector<ScreenTriangle> setup_shadow_polygons(const std::vector<ShadowPolygo
   return all;
 }
 
-// The depth key of a plane along the pixel rays: key = 1 / s where the ray eye + s dir meets
-// it (dir = forward + x right + y up, so s is the view depth). Linear in the pixel column and
-// row; a point is nearer than another on the same ray when its key is larger, and a plane the
-// ray meets behind the eye (or never) has key <= 0. The exact plane test "the visible point
-// lies beyond the polygon's plane" is key(polygon) > key(visible point): comparing keys
-// settles whole spans and tiles at once (Crow's scan-line coherence).
-struct KeyPlane {
-  double a = 0, b = 0, c = 0;  ///< key = a column + b row + c
-  double slack = 0;            ///< bound on its rounding, with kKeySlack to spare
-  double at(double column, double row) const { return a * column + b * row + c; }
-};
-
-// The camera's pixel-ray grid, computed once.
-struct RayGrid {
-  Vec3 eye, forward, right, up;
-  Camera::PixelGrid grid;
-  double x_extent, y_extent;  ///< bounds of |x| and |y| over the raster
-  explicit RayGrid(const Camera& cam)
-      : eye(cam.position),
-        forward(cam.forward()),
-        right(cam.right()),
-        up(cam.true_up()),
-        grid(cam.pixel_grid()),
-        x_extent(std::abs(grid.x0) + grid.step * cam.width),
-        y_extent(std::abs(grid.y0) + grid.step * cam.height) {}
-};
-
-KeyPlane key_plane(Vec3 normal, double d, const RayGrid& rays) {
-  const Camera::PixelGrid& g = rays.grid;
-  const double nf = dot(normal, rays.forward), nr = dot(normal, rays.right),
-               nu = dot(normal, rays.up);
-  const double e = dot(normal, rays.eye) + d;  // nonzero: the eye is off every plane it sees
-  KeyPlane k;
-  k.a = -g.step * nr / e;
-  k.b = g.step * nu / e;
-  k.c = -(nf + g.x0 * nr + g.y0 * nu) / e;
-  k.slack = kKeySlack *
-            (std::abs(nf) + rays.x_extent * std::abs(nr) + rays.y_extent * std::abs(nu)) /
-            std::abs(e);
-  return k;
-}
-
 std::vector<KeyPlane> polygon_keys(const std::vector<ShadowPolygon>& polygons,
                                    const RayGrid& rays) {
   std::vector<KeyPlane> keys(polygons.size());
   tbb::parallel_for(std::size_t(0), polygons.size(), [&](std::size_t i) {
-    keys[i] = key_plane(polygons[i].normal, polygons[i].d, rays);
+    keys[i] = rays.key_plane(polygons[i].normal, polygons[i].d);
   });
   return keys;
 }
@@ -99,7 +56,7 @@ struct FaceTable {
       : keys(scene.face_count()), lit_side(scene.face_count()) {
     tbb::parallel_for(std::uint32_t(0), scene.face_count(), [&](std::uint32_t f) {
       const Plane& plane = scene.face_plane(f);
-      keys[f] = key_plane(plane.normal, plane.d, rays);
+      keys[f] = rays.key_plane(plane.normal, plane.d);
       lit_side[f] = faces_light(plane, rays.eye, light);
     });
   }
@@ -122,45 +79,29 @@ bool overlaps_tile(const ScreenTriangle& s, int x0, int y0, int x1, int y1) {
   return true;
 }
 
-// Narrows rows [ya, yb] to those where triangle \p s can own pixel centres in columns
-// [xa, xb]: the y extent of the triangle within that column strip, widened by a pixel. A thin
-// slanted shadow polygon spans many more rows of a tile than it crosses within its columns.
-void narrow_rows(const ScreenTriangle& s, int xa, int xb, int& ya, int& yb) {
+// Narrows [va, vb], pixels along one axis, to those where triangle \p s can own pixel
+// centres within pixels [ua, ub] along the other (u = x for rows, u = y for columns): the
+// extent of the triangle within that strip, widened by a pixel. A thin slanted shadow polygon
+// spans many more rows of a tile than it crosses within its columns, and the other way round.
+void narrow_to_strip(const std::int64_t* u, const std::int64_t* v, int ua, int ub, int& va,
+                     int& vb) {
   constexpr double kSub = double(raster::kSubpixel);
-  const double lo = (xa - 0.5) * kSub, hi = (xb + 1.5) * kSub;  // centres +- one pixel
-  double y_min = kInf, y_max = -kInf;
+  const double lo = (ua - 0.5) * kSub, hi = (ub + 1.5) * kSub;  // centres +- one pixel
+  double v_min = kInf, v_max = -kInf;
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3;
-    double x0 = double(s.x[i]), y0 = double(s.y[i]), x1 = double(s.x[j]), y1 = double(s.y[j]);
-    if (x0 > x1) std::swap(x0, x1), std::swap(y0, y1);
-    if (x1 < lo || x0 > hi) continue;
-    // The part of the edge inside the strip; y is linear in x along it.
-    const double slope = x1 > x0 ? (y1 - y0) / (x1 - x0) : 0;
-    const double ya_edge = x0 < lo ? y0 + slope * (lo - x0) : y0;
-    const double yb_edge = x1 > hi ? y0 + slope * (hi - x0) : y1;
-    y_min = std::min({y_min, ya_edge, yb_edge});
-    y_max = std::max({y_max, ya_edge, yb_edge});
+    double u0 = double(u[i]), v0 = double(v[i]), u1 = double(u[j]), v1 = double(v[j]);
+    if (u0 > u1) std::swap(u0, u1), std::swap(v0, v1);
+    if (u1 < lo || u0 > hi) continue;
+    // The part of the edge inside the strip; v is linear in u along it.
+    const double slope = u1 > u0 ? (v1 - v0) / (u1 - u0) : 0;
+    const double va_edge = u0 < lo ? v0 + slope * (lo - u0) : v0;
+    const double vb_edge = u1 > hi ? v0 + slope * (hi - u0) : v1;
+    v_min = std::min({v_min, va_edge, vb_edge});
+    v_max = std::max({v_max, va_edge, vb_edge});
   }
-  ya = std::max(ya, int(std::floor(y_min / kSub)) - 1);
-  yb = std::min(yb, int(std::ceil(y_max / kSub)) + 1);
-}
-
-// The range of visible keys over some covered pixels, widened by the slack; empty (lo = +inf,
-// hi = -inf) when none is covered.
-struct KeyRange {
-  double lo = kInf, hi = -kInf;
-  void add(double key) { lo = std::min(lo, key), hi = std::max(hi, key); }
-  void add(const KeyRange& r) { lo = std::min(lo, r.lo), hi = std::max(hi, r.hi); }
-  void widen() { lo -= kKeySlack * std::abs(lo), hi += kKeySlack * std::abs(hi); }
-};
-
-// Where the crossings of a polygon over some pixels lie, from its key range there.
-enum class Crossing { all_before, all_behind, mixed };
-
-Crossing classify(double key_lo, double key_hi, double slack, const KeyRange& visible) {
-  if (key_lo - slack > visible.hi) return Crossing::all_before;
-  if (key_hi + slack < visible.lo) return Crossing::all_behind;
-  return Crossing::mixed;
+  va = std::max(va, int(std::floor(v_min / kSub)) - 1);
+  vb = std::min(vb, int(std::ceil(v_max / kSub)) + 1);
 }
 
 // What a polygon adds to every pixel of a span settled as a whole: depth-pass counts the
@@ -186,13 +127,19 @@ struct TileCounts {
   std::uint32_t face[kTile * kTile];
   int count[kTile * kTile];
   int delta[kTile * (kTile + 1)];
-  KeyRange block[kTile][kTile / kBlock], band[kTile / kBand], all;
+  KeyRange block[kTile][kTile / kBlock], band[kTile / kBand][kTile / kBlock], all;
+  Bounds3 receivers, band_receivers[kTile / kBand];  ///< hold every visible point there
   bool points_loaded[kTile];
   int x0, y0, w, h;
 
   KeyRange span_keys(int row, int first, int last) const {
     KeyRange r;
     for (int b = first / kBlock; b <= last / kBlock; ++b) r.add(block[row][b]);
+    return r;
+  }
+  KeyRange band_keys(int b, int first, int last) const {
+    KeyRange r;
+    for (int k = first / kBlock; k <= last / kBlock; ++k) r.add(band[b][k]);
     return r;
   }
 };
@@ -225,10 +172,13 @@ void count_span(const ShadowPolygon& p, const TileCounts& t, int* count, int fir
 class TileCounter {
  public:
   TileCounter(const std::vector<ShadowPolygon>& polygons, const std::vector<KeyPlane>& keys,
-              const FaceTable& faces, const VisibleSurfaceBuffer& surfaces, int eye_count)
+              const FaceTable& faces, const SubObjects& parts, const RayGrid& rays,
+              const VisibleSurfaceBuffer& surfaces, int eye_count)
       : polygons_(polygons),
         keys_(keys),
         faces_(faces),
+        parts_(parts),
+        rays_(rays),
         surfaces_(surfaces),
         eye_count_(eye_count) {}
 
@@ -237,27 +187,51 @@ class TileCounter {
   bool load(int x0, int y0, int w, int h, TileCounts& t) const {
     t.x0 = x0, t.y0 = y0, t.w = w, t.h = h;
     t.all = {};
-    std::fill_n(t.band, kTile / kBand, KeyRange{});
+    t.receivers = {};
+    std::fill_n(t.band_receivers, kTile / kBand, Bounds3{});
+    std::fill_n(&t.band[0][0], kTile / kBand * (kTile / kBlock), KeyRange{});
     std::fill_n(t.delta, h * (kTile + 1), 0);
     std::fill_n(t.points_loaded, h, false);
+    std::uint32_t last_face = kNoFace;
     for (int y = 0; y < h; ++y) {
+      if (y % kBand == 0) last_face = kNoFace;
       for (int b = 0; b < kTile / kBlock; ++b) t.block[y][b] = {};
       for (int x = 0; x < w; ++x) {
         const std::uint32_t f = surfaces_.face[surfaces_.index(x0 + x, y0 + y)];
         t.face[y * w + x] = f;
         t.count[y * w + x] = eye_count_;
-        if (f != kNoFace) t.block[y][x / kBlock].add(faces_.keys[f].at(x0 + x, y0 + y));
+        if (f == kNoFace) continue;
+        t.block[y][x / kBlock].add(faces_.keys[f].at(x0 + x, y0 + y));
+        if (f != last_face) {
+          t.band_receivers[y / kBand].add(parts_.bounds[parts_.of_face[f]]);
+          last_face = f;
+        }
       }
-      for (KeyRange& b : t.block[y]) b.widen(), t.band[y / kBand].add(b);
+      for (int b = 0; b < kTile / kBlock; ++b) {
+        t.block[y][b].widen();
+        t.band[y / kBand][b].add(t.block[y][b]);
+      }
     }
-    for (const KeyRange& b : t.band) t.all.add(b);
-    return t.all.lo <= t.all.hi;
+    // Crow's receivers: the visible sub-objects' boxes, within the piece of the view the
+    // keys span.
+    for (int b = 0; b * kBand < h; ++b) {
+      KeyRange keys;
+      for (const KeyRange& k : t.band[b]) keys.add(k);
+      t.all.add(keys);
+      if (keys.empty()) continue;
+      const Bounds3 piece = view_piece(rays_, x0, y0 + b * kBand, x0 + w - 1,
+                                       std::min(y0 + h, y0 + (b + 1) * kBand) - 1, keys);
+      Bounds3& r = t.band_receivers[b];
+      r = {max(r.lo, piece.lo), min(r.hi, piece.hi)};
+      t.receivers.add(r);
+    }
+    return !t.all.empty();
   }
 
   // Walks one triangle's spans over the tile; settles each span by keys where it can and
   // tests pixel by pixel where the polygon passes through the visible surfaces. Returns the
   // pixels tested one by one.
-  std::size_t count_triangle(const ScreenTriangle& s, TileCounts& t) const {
+  std::size_t count_triangle(const ScreenTriangle& s, unsigned bands, TileCounts& t) const {
     const ShadowPolygon& poly = polygons_[s.face];
     const KeyPlane& key = keys_[s.face];
     int ya = std::max(t.y0, s.min_y), yb = std::min(t.y0 + t.h - 1, s.max_y);
@@ -270,12 +244,14 @@ class TileCounter {
         classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}), key.slack, t.all);
     if (whole != Crossing::mixed && settled_jump(poly, whole) == 0) return 0;
     if (!overlaps_tile(s, xa0, ya, xb0, yb)) return 0;
-    narrow_rows(s, xa0, xb0, ya, yb);
+    narrow_to_strip(s.x, s.y, xa0, xb0, ya, yb);
     if (ya > yb) return 0;
     std::size_t tested = 0;
     for (int first = ya; first <= yb;) {
       const int next = t.y0 + ((first - t.y0) / kBand + 1) * kBand;  // the next band's first row
-      tested += count_band(s, poly, key, first, std::min(yb, next - 1), xa0, xb0, t);
+      if (bands & (1u << ((first - t.y0) / kBand))) {
+        tested += count_band(s, poly, key, first, std::min(yb, next - 1), xa0, xb0, t);
+      }
       first = next;
     }
     return tested;
@@ -285,10 +261,13 @@ class TileCounter {
   // restarts per band, so that bands which settle as a whole (Hi-Z on kBand rows) are skipped.
   std::size_t count_band(const ScreenTriangle& s, const ShadowPolygon& poly, const KeyPlane& key,
                          int first, int last, int xa0, int xb0, TileCounts& t) const {
+    narrow_to_strip(s.y, s.x, first, last, xa0, xb0);
+    if (xa0 > xb0) return 0;
     const double k00 = key.at(xa0, first), k10 = key.at(xb0, first), k01 = key.at(xa0, last),
                  k11 = key.at(xb0, last);
-    const Crossing whole = classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}),
-                                    key.slack, t.band[(first - t.y0) / kBand]);
+    const Crossing whole =
+        classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}), key.slack,
+                 t.band_keys((first - t.y0) / kBand, xa0 - t.x0, xb0 - t.x0));
     if (whole != Crossing::mixed && settled_jump(poly, whole) == 0) return 0;
     std::size_t tested = 0;
     raster::SpanWalker walker(s, first);
@@ -351,14 +330,31 @@ class TileCounter {
   const std::vector<ShadowPolygon>& polygons_;
   const std::vector<KeyPlane>& keys_;
   const FaceTable& faces_;
+  const SubObjects& parts_;
+  const RayGrid& rays_;
   const VisibleSurfaceBuffer& surfaces_;
   int eye_count_;
 };
 
+// Whether the shadow polygons of a sub-object may be skipped over a tile whose visible points
+// lie outside its shadow frustum: their crossings there add up to the sub-object's share of
+// the eye's count, taken away again (depth-pass), or to nothing (depth-fail). Depth-pass
+// sub-objects whose frustum may hold the eye are never skipped.
+std::vector<char> tile_cullable(const std::vector<ShadowFrustum>& frusta,
+                                const std::vector<ShadowPolygon>& polygons, Vec3 eye) {
+  std::vector<char> cullable(frusta.size(), 1);
+  const Bounds3 at_eye{eye, eye};
+  for (const ShadowPolygon& p : polygons) {
+    if (!p.depth_fail && !frusta[p.sub_object].misses(at_eye)) cullable[p.sub_object] = 0;
+  }
+  return cullable;
+}
+
 }  // namespace
 
 StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, int eye_count,
-                                   const Scene& scene, const Light& light,
+                                   const Scene& scene, const Light& light, const SubObjects& parts,
+                                   const std::vector<ShadowFrustum>& frusta,
                                    const VisibleSurfaceBuffer& surfaces, ShadowMask& mask) {
   const Camera& cam = scene.camera;
   const RasterProjection view =
@@ -368,8 +364,9 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   const std::vector<KeyPlane> keys = polygon_keys(polygons, rays);
   const FaceTable faces(scene, light, rays);
   const TileBins bins(tris, view.width, view.height);
-  const TileCounter counter(polygons, keys, faces, surfaces, eye_count);
-  std::atomic<std::size_t> fill = 0, negative = 0;
+  const TileCounter counter(polygons, keys, faces, parts, rays, surfaces, eye_count);
+  const std::vector<char> cullable = tile_cullable(frusta, polygons, cam.position);
+  std::atomic<std::size_t> fill = 0, negative = 0, culled = 0;
 
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
     thread_local TileCounts t;
@@ -378,14 +375,32 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
                       t)) {
       return;
     }
-    std::size_t tile_fill = 0;
+    std::size_t tile_fill = 0, tile_culled = 0;
+    std::uint32_t part = kNoSubObject;
+    unsigned bands = 0;  // of the tile, those whose visible points the sub-object can shadow
     for (std::uint32_t b = bins.start[tile]; b < bins.start[tile + 1]; ++b) {
-      tile_fill += counter.count_triangle(tris[bins.items[b]], t);
+      const ScreenTriangle& s = tris[bins.items[b]];
+      // Crow's receiver test, once per sub-object: polygons come grouped by sub-object.
+      if (const std::uint32_t k = polygons[s.face].sub_object; k != part) {
+        part = k;
+        bands = ~0u;
+        if (cullable[k]) {
+          bands = 0;
+          if (!frusta[k].misses(t.receivers)) {
+            for (int band = 0; band < kTile / kBand; ++band) {
+              bands |= unsigned(!frusta[k].misses(t.band_receivers[band])) << band;
+            }
+          }
+        }
+        tile_culled += bands == 0;
+      }
+      if (bands) tile_fill += counter.count_triangle(s, bands, t);
     }
     fill += tile_fill;
+    culled += tile_culled;
     negative += counter.finish(t, mask);
   });
-  return {fill.load(), negative.load()};
+  return {fill.load(), negative.load(), culled.load()};
 }
 
 }  // namespace shadowkit

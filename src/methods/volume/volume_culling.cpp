@@ -14,6 +14,27 @@ double box_distance(const Bounds3& b, Vec3 p) {
   return length(p - max(b.lo, min(p, b.hi)));
 }
 
+double max_abs(Vec3 v) {
+  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+// Hazard: a relative margin, far above the rounding of the planes built on the widened box
+// (about 1e-16 of the coordinates' magnitude), far below any scene's features.
+Bounds3 widened(const Bounds3& box, const Light& light) {
+  double scale = std::max({max_abs(box.lo), max_abs(box.hi), box.diagonal()});
+  if (light.type == Light::Type::point) scale = std::max(scale, max_abs(light.position));
+  const Vec3 margin = Vec3{1, 1, 1} * (1e-9 * scale + 1e-300);
+  return {box.lo - margin, box.hi + margin};
+}
+
+// Whether the box's face on \p side of \p axis (0: lo, 1: hi) faces the light.
+bool face_lit(const Bounds3& box, int axis, int side, const Light& light) {
+  if (light.type == Light::Type::directional) {
+    return side ? light.direction[axis] < 0 : light.direction[axis] > 0;
+  }
+  return side ? light.position[axis] > box.hi[axis] : light.position[axis] < box.lo[axis];
+}
+
 }  // namespace
 
 ViewFrustum ViewFrustum::of(const Camera& camera, double near) {
@@ -38,26 +59,75 @@ bool ViewFrustum::excludes(std::span<const Vec3> points) const {
   });
 }
 
-bool shadow_volume_reaches_view(const Bounds3& box, const Light& light, const Reach& reach,
-                                const ViewFrustum& view) {
-  // The volume within the reach lies in the hull of the box's corners and the corners pushed
-  // away from the light until they leave the reach: a point light at distance g from the box
+ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Reach& reach) {
+  const Bounds3 box = widened(tight, light);
+  const bool point = light.type == Light::Type::point;
+  // Within the reach the region lies in the hull of the box's corners and the corners pushed
+  // away from the light until they leave it: a point light at distance g from the box
   // needs them pushed to reach / g times their distance.
-  std::array<Vec3, 16> hull;
   double push = 0;
-  if (light.type == Light::Type::point) {
+  if (point) {
     const double gap = box_distance(box, light.position);
-    if (gap == 0) return true;  // the light inside the box: the volume surrounds it
-    push = reach.limit / gap;
+    if (gap == 0) {  // the light inside the box: the volume surrounds it
+      everywhere_ = true;
+      return;
+    }
+    push = std::max(reach.limit / gap, 1.0);
   }
   for (int c = 0; c < 8; ++c) {
     const Vec3 p = corner(box, c);
-    hull[c] = p;
-    hull[8 + c] = light.type == Light::Type::point
-                      ? light.position + (p - light.position) * std::max(push, 1.0)
-                      : p + light.direction * std::max(0.0, reach.limit - dot(p, light.direction));
+    hull_[c] = p;
+    hull_[8 + c] = point
+                       ? light.position + (p - light.position) * push
+                       : p + light.direction * std::max(0.0, reach.limit - dot(p, light.direction));
   }
-  return !view.excludes(hull);
+  for (const Vec3& p : hull_) hull_box_.add(p);
+  hull_box_ = widened(hull_box_, light);
+
+  const Vec3 centre = box.center();
+  for (int a = 0; a < 3; ++a) {
+    // Behind a light-facing face.
+    for (int side = 0; side < 2; ++side) {
+      if (!face_lit(box, a, side, light)) continue;
+      Vec3 n{};
+      n[a] = side ? -1 : 1;
+      planes_[plane_count_++] = {n, side ? box.hi[a] : -box.lo[a]};
+    }
+    // Inside the plane through the light and each contour edge along axis a, between the
+    // faces on sides (sb, sc) of the other two axes.
+    const int b = (a + 1) % 3, c = (a + 2) % 3;
+    for (int sb = 0; sb < 2; ++sb) {
+      for (int sc = 0; sc < 2; ++sc) {
+        if (face_lit(box, b, sb, light) == face_lit(box, c, sc, light)) continue;
+        Vec3 p0 = box.lo, p1;
+        p0[b] = sb ? box.hi[b] : box.lo[b];
+        p0[c] = sc ? box.hi[c] : box.lo[c];
+        p1 = p0;
+        p1[a] = box.hi[a];
+        const Vec3 n = normalize(cross(p1 - p0, point ? light.position - p0 : light.direction));
+        if (!is_finite(n)) continue;  // the light on the edge's line: no plane, no cull
+        const Plane plane{n, -dot(n, p0)};
+        planes_[plane_count_++] =
+            plane.distance(centre) >= 0 ? plane : Plane{-plane.normal, -plane.d};
+      }
+    }
+  }
+}
+
+bool ShadowFrustum::misses(const Bounds3& r) const {
+  if (everywhere_) return false;
+  const Bounds3& h = hull_box_;
+  if (r.hi.x < h.lo.x || r.hi.y < h.lo.y || r.hi.z < h.lo.z || r.lo.x > h.hi.x || r.lo.y > h.hi.y ||
+      r.lo.z > h.hi.z) {
+    return true;
+  }
+  for (int k = 0; k < plane_count_; ++k) {
+    const Vec3 n = planes_[k].normal;
+    const Vec3 farthest{n.x > 0 ? r.hi.x : r.lo.x, n.y > 0 ? r.hi.y : r.lo.y,
+                        n.z > 0 ? r.hi.z : r.lo.z};
+    if (planes_[k].distance(farthest) < 0) return true;
+  }
+  return false;
 }
 
 }  // namespace shadowkit

@@ -20,10 +20,26 @@ struct ViewFrustum {
   bool excludes(std::span<const Vec3> points) const;
 };
 
-/// Whether the shadow volume of anything inside \p box (the box and the space behind it,
-/// seen from the light, up to \p reach) can meet the view. When it cannot, no visible point
-/// lies in it and its caster is skipped.
-bool shadow_volume_reaches_view(const Bounds3& box, const Light& light, const Reach& reach,
-                                const ViewFrustum& view);
+/// \brief A convex region holding the shadow volume of anything inside a box, up to the
+/// reach: the box swept away from the light (Crow's bounding box, Sec. VI). It is the space
+/// behind the box's light-facing faces and inside the planes through the light and the
+/// box's contour edges. The box is widened by far more than the rounding of these planes,
+/// so the tests below never miss a shadowed point.
+class ShadowFrustum {
+ public:
+  ShadowFrustum(const Bounds3& box, const Light& light, const Reach& reach);
+
+  /// No point of \p receiver can lie in the region: nothing inside the box shadows it.
+  bool misses(const Bounds3& receiver) const;
+  /// Whether the region, within the reach, can meet the view.
+  bool reaches(const ViewFrustum& view) const { return everywhere_ || !view.excludes(hull_); }
+
+ private:
+  bool everywhere_ = false;  ///< a point light inside the box
+  std::array<Plane, 9> planes_{};
+  int plane_count_ = 0;
+  std::array<Vec3, 16> hull_{};  ///< the box's corners and the same pushed to the reach
+  Bounds3 hull_box_;
+};
 
 }  // namespace shadowkit
