@@ -7,33 +7,34 @@
 #include <cmath>
 #include <limits>
 
+#include "../../raster/convex_polygon.h"
 #include "../../raster/tile_bins.h"
 #include "depth_keys.h"
 
 namespace shadowkit {
 namespace {
 
-using raster::ScreenTriangle;
+using raster::ScreenPolygon;
 using raster::TileBins;
 constexpr int kTile = TileBins::kTile;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::uint32_t kNoSubObject = std::numeric_limits<std::uint32_t>::max();
 
-// Shadow polygons as screen triangles, face = polygon index. Order does not matter: counts
-// add up.
-std::vector<ScreenTriangle> setup_shadow_polygons(const std::vector<ShadowPolygon>& polygons,
-                                                  const RasterProjection& view) {
+// Shadow polygons as convex screen polygons, face = polygon index. Order does not matter:
+// counts add up.
+std::vector<ScreenPolygon> setup_shadow_polygons(const std::vector<ShadowPolygon>& polygons,
+                                                 const RasterProjection& view) {
   constexpr std::size_t kChunk = 1024;
-  std::vector<std::vector<ScreenTriangle>> chunks((polygons.size() + kChunk - 1) / kChunk);
+  std::vector<std::vector<ScreenPolygon>> chunks((polygons.size() + kChunk - 1) / kChunk);
   tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
     for (std::size_t i = c * kChunk; i < std::min(polygons.size(), (c + 1) * kChunk); ++i) {
       const ShadowPolygon& p = polygons[i];
-      raster::setup_polygon({p.corners.data(), std::size_t(p.corner_count)}, std::uint32_t(i), view,
-                            chunks[c]);
+      raster::setup_convex_polygon({p.corners.data(), std::size_t(p.corner_count)},
+                                   std::uint32_t(i), view, chunks[c]);
     }
   });
-  std::vector<ScreenTriangle> all;
+  std::vector<ScreenPolygon> all;
   for (const auto& c : chunks) all.insert(all.end(), c.begin(), c.end());
   return all;
 }
@@ -62,35 +63,35 @@ struct FaceTable {
   }
 };
 
-// Whether triangle \p s may own a pixel centre of the tile [x0, x1] x [y0, y1]: no edge has
+// Whether polygon \p s may own a pixel centre of the tile [x0, x1] x [y0, y1]: no edge has
 // all four corner centres outside. Long thin shadow polygons cross few of the tiles their
 // bounds overlap; this keeps the span walk off the rest.
-bool overlaps_tile(const ScreenTriangle& s, int x0, int y0, int x1, int y1) {
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    const std::int64_t dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i];
+bool overlaps_tile(const ScreenPolygon& s, int x0, int y0, int x1, int y1) {
+  for (int i = 0; i < s.count; ++i) {
+    const raster::FixedPoint a = s.corners[i].p, b = s.corners[(i + 1) % s.count].p;
+    const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
     // As EdgeWalker: E = dx (256 py + 128 - y_i) - dy (256 px + 128 - x_i), >= 0 inside.
     const auto e = [&](int px, int py) {
-      return dx * (py * raster::kSubpixel + raster::kSubpixel / 2 - s.y[i]) -
-             dy * (px * raster::kSubpixel + raster::kSubpixel / 2 - s.x[i]);
+      return dx * (py * raster::kSubpixel + raster::kSubpixel / 2 - a.y) -
+             dy * (px * raster::kSubpixel + raster::kSubpixel / 2 - a.x);
     };
     if (std::max({e(x0, y0), e(x1, y0), e(x0, y1), e(x1, y1)}) < 0) return false;
   }
   return true;
 }
 
-// Narrows [va, vb], pixels along one axis, to those where triangle \p s can own pixel
-// centres within pixels [ua, ub] along the other (u = x for rows, u = y for columns): the
-// extent of the triangle within that strip, widened by a pixel. A thin slanted shadow polygon
-// spans many more rows of a tile than it crosses within its columns, and the other way round.
-void narrow_to_strip(const std::int64_t* u, const std::int64_t* v, int ua, int ub, int& va,
-                     int& vb) {
+// Narrows [va, vb], pixels along one axis, to those where polygon \p s can own pixel centres
+// within pixels [ua, ub] along the other (u = x for rows, u = y for columns): the extent of
+// the polygon within that strip, widened by a pixel. A thin slanted shadow polygon spans
+// many more rows of a tile than it crosses within its columns, and the other way round.
+void narrow_to_strip(const ScreenPolygon& s, bool u_is_x, int ua, int ub, int& va, int& vb) {
   constexpr double kSub = double(raster::kSubpixel);
   const double lo = (ua - 0.5) * kSub, hi = (ub + 1.5) * kSub;  // centres +- one pixel
   double v_min = kInf, v_max = -kInf;
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    double u0 = double(u[i]), v0 = double(v[i]), u1 = double(u[j]), v1 = double(v[j]);
+  for (int i = 0; i < s.count; ++i) {
+    const raster::FixedPoint a = s.corners[i].p, b = s.corners[(i + 1) % s.count].p;
+    double u0 = double(u_is_x ? a.x : a.y), v0 = double(u_is_x ? a.y : a.x);
+    double u1 = double(u_is_x ? b.x : b.y), v1 = double(u_is_x ? b.y : b.x);
     if (u0 > u1) std::swap(u0, u1), std::swap(v0, v1);
     if (u1 < lo || u0 > hi) continue;
     // The part of the edge inside the strip; v is linear in u along it.
@@ -231,7 +232,7 @@ class TileCounter {
   // Walks one triangle's spans over the tile; settles each span by keys where it can and
   // tests pixel by pixel where the polygon passes through the visible surfaces. Returns the
   // pixels tested one by one.
-  std::size_t count_triangle(const ScreenTriangle& s, unsigned bands, TileCounts& t) const {
+  std::size_t count_polygon(const ScreenPolygon& s, unsigned bands, TileCounts& t) const {
     const ShadowPolygon& poly = polygons_[s.face];
     const KeyPlane& key = keys_[s.face];
     int ya = std::max(t.y0, s.min_y), yb = std::min(t.y0 + t.h - 1, s.max_y);
@@ -244,7 +245,7 @@ class TileCounter {
         classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}), key.slack, t.all);
     if (whole != Crossing::mixed && settled_jump(poly, whole) == 0) return 0;
     if (!overlaps_tile(s, xa0, ya, xb0, yb)) return 0;
-    narrow_to_strip(s.x, s.y, xa0, xb0, ya, yb);
+    narrow_to_strip(s, true, xa0, xb0, ya, yb);
     if (ya > yb) return 0;
     std::size_t tested = 0;
     for (int first = ya; first <= yb;) {
@@ -259,9 +260,9 @@ class TileCounter {
 
   // Adds the walked pixels and spans of rows [first, last] of one triangle: the span walk
   // restarts per band, so that bands which settle as a whole (Hi-Z on kBand rows) are skipped.
-  std::size_t count_band(const ScreenTriangle& s, const ShadowPolygon& poly, const KeyPlane& key,
+  std::size_t count_band(const ScreenPolygon& s, const ShadowPolygon& poly, const KeyPlane& key,
                          int first, int last, int xa0, int xb0, TileCounts& t) const {
-    narrow_to_strip(s.y, s.x, first, last, xa0, xb0);
+    narrow_to_strip(s, false, first, last, xa0, xb0);
     if (xa0 > xb0) return 0;
     const double k00 = key.at(xa0, first), k10 = key.at(xb0, first), k01 = key.at(xa0, last),
                  k11 = key.at(xb0, last);
@@ -270,7 +271,7 @@ class TileCounter {
                  t.band_keys((first - t.y0) / kBand, xa0 - t.x0, xb0 - t.x0));
     if (whole != Crossing::mixed && settled_jump(poly, whole) == 0) return 0;
     std::size_t tested = 0;
-    raster::SpanWalker walker(s, first);
+    raster::PolygonSpanWalker walker(s, first, last);
     for (int py = first; py <= last; ++py, walker.next_row()) {
       int xa = xa0, xb = xb0;
       if (!walker.span(xa, xb)) continue;
@@ -359,7 +360,7 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   const Camera& cam = scene.camera;
   const RasterProjection view =
       RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position));
-  const std::vector<ScreenTriangle> tris = setup_shadow_polygons(polygons, view);
+  const std::vector<ScreenPolygon> tris = setup_shadow_polygons(polygons, view);
   const RayGrid rays(cam);
   const std::vector<KeyPlane> keys = polygon_keys(polygons, rays);
   const FaceTable faces(scene, light, rays);
@@ -379,7 +380,7 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
     std::uint32_t part = kNoSubObject;
     unsigned bands = 0;  // of the tile, those whose visible points the sub-object can shadow
     for (std::uint32_t b = bins.start[tile]; b < bins.start[tile + 1]; ++b) {
-      const ScreenTriangle& s = tris[bins.items[b]];
+      const ScreenPolygon& s = tris[bins.items[b]];
       // Crow's receiver test, once per sub-object: polygons come grouped by sub-object.
       if (const std::uint32_t k = polygons[s.face].sub_object; k != part) {
         part = k;
@@ -394,7 +395,7 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
         }
         tile_culled += bands == 0;
       }
-      if (bands) tile_fill += counter.count_triangle(s, bands, t);
+      if (bands) tile_fill += counter.count_polygon(s, bands, t);
     }
     fill += tile_fill;
     culled += tile_culled;
