@@ -8,16 +8,12 @@
 #include <limits>
 
 #include "../../raster/convex_polygon.h"
-#include "../../raster/tile_bins.h"
-#include "depth_keys.h"
+#include "counting_tile.h"
 
 namespace shadowkit {
 namespace {
 
 using raster::ScreenPolygon;
-using raster::TileBins;
-constexpr int kTile = TileBins::kTile;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::uint32_t kNoSubObject = std::numeric_limits<std::uint32_t>::max();
 
@@ -47,21 +43,6 @@ std::vector<KeyPlane> polygon_keys(const std::vector<ShadowPolygon>& polygons,
   });
   return keys;
 }
-
-// Per scene face: its depth key plane (the visible keys of its pixels) and whether its
-// visible side faces the light (contract condition 1).
-struct FaceTable {
-  std::vector<KeyPlane> keys;
-  std::vector<char> lit_side;
-  FaceTable(const Scene& scene, const Light& light, const RayGrid& rays)
-      : keys(scene.face_count()), lit_side(scene.face_count()) {
-    tbb::parallel_for(std::uint32_t(0), scene.face_count(), [&](std::uint32_t f) {
-      const Plane& plane = scene.face_plane(f);
-      keys[f] = rays.key_plane(plane.normal, plane.d);
-      lit_side[f] = faces_light(plane, rays.eye, light);
-    });
-  }
-};
 
 // Whether polygon \p s may own a pixel centre of the tile [x0, x1] x [y0, y1]: no edge has
 // all four corner centres outside. Long thin shadow polygons cross few of the tiles their
@@ -112,44 +93,21 @@ int settled_jump(const ShadowPolygon& p, Crossing c) {
   return c == Crossing::all_behind ? -p.jump : 0;
 }
 
-// Visible keys are kept per run of kBlock pixels of a row: a span is settled against the
-// runs it touches, so a polygon in front of the near cubes of one part of a row is not tested
-// pixel by pixel because the row also shows the far ground elsewhere.
-constexpr int kBlock = 8;
-// Rows of a band: the Hi-Z test between the whole tile and single spans.
-constexpr int kBand = 8;
+// The polygon's key plane over columns [xa, xb] of rows [ya, yb], against visible keys.
+Crossing classify_rectangle(const KeyPlane& key, int xa, int xb, int ya, int yb,
+                            const KeyRange& visible) {
+  const double k00 = key.at(xa, ya), k10 = key.at(xb, ya), k01 = key.at(xa, yb),
+               k11 = key.at(xb, yb);
+  return classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}), key.slack,
+                  visible);
+}
 
-// One tile: visible faces, keys and counts; visible points (NaN for background, so that no
-// plane test passes) loaded per row when an unsettled span first needs them. Whole-span jumps
-// go into `delta` (+jump at the first column, -jump past the last) and are summed along each
-// row at the end: O(1) per span.
-struct TileCounts {
-  double x[kTile * kTile], y[kTile * kTile], z[kTile * kTile];
-  std::uint32_t face[kTile * kTile];
-  int count[kTile * kTile];
-  int delta[kTile * (kTile + 1)];
-  KeyRange block[kTile][kTile / kBlock], band[kTile / kBand][kTile / kBlock], all;
-  Bounds3 receivers, band_receivers[kTile / kBand];  ///< hold every visible point there
-  bool points_loaded[kTile];
-  int x0, y0, w, h;
-
-  KeyRange span_keys(int row, int first, int last) const {
-    KeyRange r;
-    for (int b = first / kBlock; b <= last / kBlock; ++b) r.add(block[row][b]);
-    return r;
-  }
-  KeyRange band_keys(int b, int first, int last) const {
-    KeyRange r;
-    for (int k = first / kBlock; k <= last / kBlock; ++k) r.add(band[b][k]);
-    return r;
-  }
-};
-
-// Adds one polygon's crossings on one span of a row. The plane test is exact in double on
-// the visible point itself, so only coverage depends on the raster.
-void count_span(const ShadowPolygon& p, const TileCounts& t, int* count, int first, int last) {
+// Adds one polygon's crossings on one span of a row, pixel by pixel. The plane test is exact
+// in double on the visible point itself, so only coverage depends on the raster.
+void count_span(const ShadowPolygon& p, CountingTile& t, int first, int last) {
   const double nx = p.normal.x, ny = p.normal.y, nz = p.normal.z, d = p.d;
   const int jump = p.jump;
+  int* count = t.count;
   if (!p.depth_fail) {
     // Crow's depth-pass: the crossing lies between the eye and the visible point.
     for (int i = first; i <= last; ++i) {
@@ -169,180 +127,149 @@ void count_span(const ShadowPolygon& p, const TileCounts& t, int* count, int fir
   }
 }
 
-// Counts the shadow polygons over the tiles of one frame.
-class TileCounter {
+// Crow's receiver test for one sub-object over the cells of one tile, made on first use:
+// its polygons are skipped over cells whose visible points lie outside its shadow frustum.
+class ReceiverTest {
  public:
-  TileCounter(const std::vector<ShadowPolygon>& polygons, const std::vector<KeyPlane>& keys,
-              const FaceTable& faces, const SubObjects& parts, const RayGrid& rays,
-              const VisibleSurfaceBuffer& surfaces, int eye_count)
-      : polygons_(polygons),
-        keys_(keys),
-        faces_(faces),
-        parts_(parts),
-        rays_(rays),
-        surfaces_(surfaces),
-        eye_count_(eye_count) {}
-
-  // Loads the faces and keys of the tile at (x0, y0), w x h pixels; false if it shows only
-  // background.
-  bool load(int x0, int y0, int w, int h, TileCounts& t) const {
-    t.x0 = x0, t.y0 = y0, t.w = w, t.h = h;
-    t.all = {};
-    t.receivers = {};
-    std::fill_n(t.band_receivers, kTile / kBand, Bounds3{});
-    std::fill_n(&t.band[0][0], kTile / kBand * (kTile / kBlock), KeyRange{});
-    std::fill_n(t.delta, h * (kTile + 1), 0);
-    std::fill_n(t.points_loaded, h, false);
-    std::uint32_t last_face = kNoFace;
-    for (int y = 0; y < h; ++y) {
-      if (y % kBand == 0) last_face = kNoFace;
-      for (int b = 0; b < kTile / kBlock; ++b) t.block[y][b] = {};
-      for (int x = 0; x < w; ++x) {
-        const std::uint32_t f = surfaces_.face[surfaces_.index(x0 + x, y0 + y)];
-        t.face[y * w + x] = f;
-        t.count[y * w + x] = eye_count_;
-        if (f == kNoFace) continue;
-        t.block[y][x / kBlock].add(faces_.keys[f].at(x0 + x, y0 + y));
-        if (f != last_face) {
-          t.band_receivers[y / kBand].add(parts_.bounds[parts_.of_face[f]]);
-          last_face = f;
-        }
-      }
-      for (int b = 0; b < kTile / kBlock; ++b) {
-        t.block[y][b].widen();
-        t.band[y / kBand][b].add(t.block[y][b]);
-      }
-    }
-    // Crow's receivers: the visible sub-objects' boxes, within the piece of the view the
-    // keys span.
-    for (int b = 0; b * kBand < h; ++b) {
-      KeyRange keys;
-      for (const KeyRange& k : t.band[b]) keys.add(k);
-      t.all.add(keys);
-      if (keys.empty()) continue;
-      const Bounds3 piece = view_piece(rays_, x0, y0 + b * kBand, x0 + w - 1,
-                                       std::min(y0 + h, y0 + (b + 1) * kBand) - 1, keys);
-      Bounds3& r = t.band_receivers[b];
-      r = {max(r.lo, piece.lo), min(r.hi, piece.hi)};
-      t.receivers.add(r);
-    }
-    return !t.all.empty();
+  ReceiverTest(const ShadowFrustum& frustum, bool cullable, const CountingTile& t)
+      : frustum_(frustum), tile_(t) {
+    if (!cullable) tested_ = reached_ = ~std::uint64_t(0);
   }
-
-  // Walks one triangle's spans over the tile; settles each span by keys where it can and
-  // tests pixel by pixel where the polygon passes through the visible surfaces. Returns the
-  // pixels tested one by one.
-  std::size_t count_polygon(const ScreenPolygon& s, unsigned bands, TileCounts& t) const {
-    const ShadowPolygon& poly = polygons_[s.face];
-    const KeyPlane& key = keys_[s.face];
-    int ya = std::max(t.y0, s.min_y), yb = std::min(t.y0 + t.h - 1, s.max_y);
-    const int xa0 = std::max(t.x0, s.min_x), xb0 = std::min(t.x0 + t.w - 1, s.max_x);
-    // Hi-Z: over the tile the key is bounded by its corners; polygons wholly in front of or
-    // behind every visible point of the tile settle without a span walk when they add nothing.
-    const double k00 = key.at(xa0, ya), k10 = key.at(xb0, ya), k01 = key.at(xa0, yb),
-                 k11 = key.at(xb0, yb);
-    const Crossing whole =
-        classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}), key.slack, t.all);
-    if (whole != Crossing::mixed && settled_jump(poly, whole) == 0) return 0;
-    if (!overlaps_tile(s, xa0, ya, xb0, yb)) return 0;
-    narrow_to_strip(s, true, xa0, xb0, ya, yb);
-    if (ya > yb) return 0;
-    std::size_t tested = 0;
-    for (int first = ya; first <= yb;) {
-      const int next = t.y0 + ((first - t.y0) / kBand + 1) * kBand;  // the next band's first row
-      if (bands & (1u << ((first - t.y0) / kBand))) {
-        tested += count_band(s, poly, key, first, std::min(yb, next - 1), xa0, xb0, t);
-      }
-      first = next;
+  bool reaches(int cell_row, int cell_column) {
+    const std::uint64_t bit = std::uint64_t(1) << (cell_row * kCellColumns + cell_column);
+    if (!(tested_ & bit)) {
+      tested_ |= bit;
+      if (!frustum_.misses(tile_.cell_receivers[cell_row][cell_column])) reached_ |= bit;
     }
-    return tested;
-  }
-
-  // Adds the walked pixels and spans of rows [first, last] of one triangle: the span walk
-  // restarts per band, so that bands which settle as a whole (Hi-Z on kBand rows) are skipped.
-  std::size_t count_band(const ScreenPolygon& s, const ShadowPolygon& poly, const KeyPlane& key,
-                         int first, int last, int xa0, int xb0, TileCounts& t) const {
-    narrow_to_strip(s, false, first, last, xa0, xb0);
-    if (xa0 > xb0) return 0;
-    const double k00 = key.at(xa0, first), k10 = key.at(xb0, first), k01 = key.at(xa0, last),
-                 k11 = key.at(xb0, last);
-    const Crossing whole =
-        classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}), key.slack,
-                 t.band_keys((first - t.y0) / kBand, xa0 - t.x0, xb0 - t.x0));
-    if (whole != Crossing::mixed && settled_jump(poly, whole) == 0) return 0;
-    std::size_t tested = 0;
-    raster::PolygonSpanWalker walker(s, first, last);
-    for (int py = first; py <= last; ++py, walker.next_row()) {
-      int xa = xa0, xb = xb0;
-      if (!walker.span(xa, xb)) continue;
-      const int row = py - t.y0;
-      const double ka = key.at(xa, py), kb = key.at(xb, py);
-      const Crossing c = whole != Crossing::mixed
-                             ? whole
-                             : classify(std::min(ka, kb), std::max(ka, kb), key.slack,
-                                        t.span_keys(row, xa - t.x0, xb - t.x0));
-      if (c == Crossing::mixed) {
-        tested += std::size_t(xb - xa + 1);
-        load_points(row, t);
-        const int first_pixel = row * t.w - t.x0;
-        count_span(poly, t, t.count, first_pixel + xa, first_pixel + xb);
-      } else if (const int jump = settled_jump(poly, c)) {
-        int* delta = t.delta + row * (kTile + 1) - t.x0;
-        delta[xa] += jump;
-        delta[xb + 1] -= jump;
-      }
-    }
-    return tested;
-  }
-
-  // Adds the whole-span jumps to the counts; writes the tile's mask pixels (shadow where the
-  // count is positive, or where the camera sees the face's unlit side: contract condition 1)
-  // and returns the number of negative counts.
-  std::size_t finish(TileCounts& t, ShadowMask& mask) const {
-    std::size_t negative = 0;
-    for (int y = 0; y < t.h; ++y) {
-      int jump = 0;
-      for (int x = 0; x < t.w; ++x) {
-        jump += t.delta[y * (kTile + 1) + x];
-        const int k = y * t.w + x;
-        if (t.face[k] == kNoFace) continue;
-        const int c = t.count[k] + jump;
-        negative += c < 0;
-        const bool lit = c <= 0 && faces_.lit_side[t.face[k]];
-        mask.pixels[surfaces_.index(t.x0 + x, t.y0 + y)] = lit ? kMaskLit : kMaskShadow;
-      }
-    }
-    return negative;
+    return reached_ & bit;
   }
 
  private:
-  // The exact visible points of one row, on first use: most rows settle by keys alone.
-  void load_points(int row, TileCounts& t) const {
-    if (t.points_loaded[row]) return;
-    t.points_loaded[row] = true;
-    for (int x = 0; x < t.w; ++x) {
-      const std::size_t i = surfaces_.index(t.x0 + x, t.y0 + row);
-      const Vec3 p = surfaces_.covered(i) ? surfaces_.point(i) : Vec3{kNaN, kNaN, kNaN};
-      const int k = row * t.w + x;
-      t.x[k] = p.x, t.y[k] = p.y, t.z[k] = p.z;
+  const ShadowFrustum& frustum_;
+  const CountingTile& tile_;
+  std::uint64_t tested_ = 0, reached_ = 0;
+};
+
+// Counts the shadow polygons over one tile.
+class TileCounter {
+ public:
+  TileCounter(const std::vector<ShadowPolygon>& polygons, const std::vector<KeyPlane>& keys,
+              const VisibleFrame& frame)
+      : polygons_(polygons), keys_(keys), frame_(frame) {}
+
+  // Walks one polygon over the tile; returns the pixels tested one by one.
+  std::size_t count_polygon(const ScreenPolygon& s, ReceiverTest& receivers,
+                            CountingTile& t) const {
+    const ShadowPolygon& poly = polygons_[s.face];
+    const KeyPlane& key = keys_[s.face];
+    int ya = std::max(t.y0, s.min_y), yb = std::min(t.y0 + t.h - 1, s.max_y);
+    const int xa = std::max(t.x0, s.min_x), xb = std::min(t.x0 + t.w - 1, s.max_x);
+    // Hi-Z over the whole tile first: a polygon wholly behind (depth-pass) or in front of
+    // (depth-fail) every visible point adds nothing.
+    const Crossing whole = classify_rectangle(key, xa, xb, ya, yb, t.all_keys);
+    if (whole != Crossing::mixed && settled_jump(poly, whole) == 0) return 0;
+    if (!overlaps_tile(s, xa, ya, xb, yb)) return 0;
+    narrow_to_strip(s, true, xa, xb, ya, yb);
+    if (ya > yb) return 0;
+    // The polygon's span on each of those rows (empty: first > last), then band by band.
+    int span_a[kTile], span_b[kTile];
+    raster::PolygonSpanWalker walker(s, ya, yb);
+    for (int py = ya; py <= yb; ++py, walker.next_row()) {
+      int& a = span_a[py - t.y0] = xa;
+      int& b = span_b[py - t.y0] = xb;
+      if (!walker.span(a, b)) a = xb + 1;
     }
+    std::size_t tested = 0;
+    for (int first = ya; first <= yb;) {
+      const int band = (first - t.y0) / kBand, last = std::min(yb, t.y0 + (band + 1) * kBand - 1);
+      tested += count_band(poly, key, band, first, last, span_a, span_b, receivers, t);
+      first = last + 1;
+    }
+    return tested;
+  }
+
+ private:
+  // Rows [first, last] of one band. Each cell the polygon reaches is settled first, by the
+  // receiver test and by its depth keys against the cell's: only the rows of cells it passes
+  // through are tested run by run, and only runs it passes through pixel by pixel.
+  std::size_t count_band(const ShadowPolygon& poly, const KeyPlane& key, int band, int first,
+                         int last, const int* span_a, const int* span_b, ReceiverTest& receivers,
+                         CountingTile& t) const {
+    int xa = t.x0 + t.w, xb = t.x0 - 1;
+    for (int row = first - t.y0; row <= last - t.y0; ++row) {
+      if (span_a[row] > span_b[row]) continue;
+      xa = std::min(xa, span_a[row]);
+      xb = std::max(xb, span_b[row]);
+    }
+    if (xa > xb) return 0;
+    const int ca = (xa - t.x0) / kBlock, cb = (xb - t.x0) / kBlock;
+    std::size_t tested = 0;
+    for (int c = ca; c <= cb; ++c) {
+      if (!receivers.reaches(band, c)) continue;
+      const int cx0 = std::max(xa, t.x0 + c * kBlock),
+                cx1 = std::min(xb, t.x0 + c * kBlock + kBlock - 1);
+      const Crossing cross = classify_rectangle(key, cx0, cx1, first, last, t.cell_keys[band][c]);
+      const int jump = settled_jump(poly, cross);
+      if (cross == Crossing::mixed || jump != 0) {
+        tested += count_cell(poly, key, band, c, first, last, span_a, span_b, jump, t);
+      }
+    }
+    return tested;
+  }
+
+  // One cell: a settled \p jump over the polygon's spans (over the whole cell when they
+  // cover it), or, where the polygon passes through the visible points (jump 0), run by run
+  // and pixel by pixel.
+  std::size_t count_cell(const ShadowPolygon& poly, const KeyPlane& key, int band, int c, int first,
+                         int last, const int* span_a, const int* span_b, int jump,
+                         CountingTile& t) const {
+    const int cx0 = t.x0 + c * kBlock, cx1 = std::min(t.x0 + t.w, cx0 + kBlock) - 1;
+    if (jump != 0 && first == t.y0 + band * kBand &&
+        last == std::min(t.y0 + t.h, first + kBand) - 1 &&
+        std::all_of(span_a + first - t.y0, span_a + last - t.y0 + 1,
+                    [&](int a) { return a <= cx0; }) &&
+        std::all_of(span_b + first - t.y0, span_b + last - t.y0 + 1,
+                    [&](int b) { return b >= cx1; })) {
+      t.cell_jump[band][c] += jump;
+      return 0;
+    }
+    std::size_t tested = 0;
+    for (int py = first; py <= last; ++py) {
+      const int a = std::max(span_a[py - t.y0], cx0), b = std::min(span_b[py - t.y0], cx1);
+      if (a > b) continue;
+      const int row = py - t.y0;
+      int j = jump;
+      if (j == 0) {
+        const double ka = key.at(a, py), kb = key.at(b, py);
+        const Crossing cross =
+            classify(std::min(ka, kb), std::max(ka, kb), key.slack, t.run_keys[row][c]);
+        if (cross == Crossing::mixed) {
+          t.load_points(frame_, row);
+          count_span(poly, t, row * t.w + a - t.x0, row * t.w + b - t.x0);
+          tested += std::size_t(b - a + 1);
+          continue;
+        }
+        j = settled_jump(poly, cross);
+        if (j == 0) continue;
+      }
+      int* delta = t.delta + row * (kTile + 1) - t.x0;
+      delta[a] += j;
+      delta[b + 1] -= j;
+    }
+    return tested;
   }
 
   const std::vector<ShadowPolygon>& polygons_;
   const std::vector<KeyPlane>& keys_;
-  const FaceTable& faces_;
-  const SubObjects& parts_;
-  const RayGrid& rays_;
-  const VisibleSurfaceBuffer& surfaces_;
-  int eye_count_;
+  const VisibleFrame& frame_;
 };
 
-// Whether the shadow polygons of a sub-object may be skipped over a tile whose visible points
+// Whether the shadow polygons of a sub-object may be skipped over pixels whose visible points
 // lie outside its shadow frustum: their crossings there add up to the sub-object's share of
 // the eye's count, taken away again (depth-pass), or to nothing (depth-fail). Depth-pass
 // sub-objects whose frustum may hold the eye are never skipped.
-std::vector<char> tile_cullable(const std::vector<ShadowFrustum>& frusta,
-                                const std::vector<ShadowPolygon>& polygons, Vec3 eye) {
+std::vector<char> receiver_cullable(const std::vector<ShadowFrustum>& frusta,
+                                    const std::vector<ShadowPolygon>& polygons, Vec3 eye) {
   std::vector<char> cullable(frusta.size(), 1);
   const Bounds3 at_eye{eye, eye};
   for (const ShadowPolygon& p : polygons) {
@@ -360,46 +287,40 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   const Camera& cam = scene.camera;
   const RasterProjection view =
       RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position));
-  const std::vector<ScreenPolygon> tris = setup_shadow_polygons(polygons, view);
-  const RayGrid rays(cam);
-  const std::vector<KeyPlane> keys = polygon_keys(polygons, rays);
-  const FaceTable faces(scene, light, rays);
-  const TileBins bins(tris, view.width, view.height);
-  const TileCounter counter(polygons, keys, faces, parts, rays, surfaces, eye_count);
-  const std::vector<char> cullable = tile_cullable(frusta, polygons, cam.position);
+  const std::vector<ScreenPolygon> screen = setup_shadow_polygons(polygons, view);
+  const VisibleFrame frame(scene, light, parts, surfaces, eye_count);
+  const std::vector<KeyPlane> keys = polygon_keys(polygons, frame.rays);
+  const raster::TileBins bins(screen, view.width, view.height);
+  const TileCounter counter(polygons, keys, frame);
+  const std::vector<char> cullable = receiver_cullable(frusta, polygons, cam.position);
   std::atomic<std::size_t> fill = 0, negative = 0, culled = 0;
 
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
-    thread_local TileCounts t;
+    thread_local CountingTile t;
     const int x0 = (tile % bins.tiles_x) * kTile, y0 = (tile / bins.tiles_x) * kTile;
-    if (!counter.load(x0, y0, std::min(kTile, view.width - x0), std::min(kTile, view.height - y0),
-                      t)) {
+    if (!t.load(frame, x0, y0, std::min(kTile, view.width - x0),
+                std::min(kTile, view.height - y0))) {
       return;
     }
     std::size_t tile_fill = 0, tile_culled = 0;
     std::uint32_t part = kNoSubObject;
-    unsigned bands = 0;  // of the tile, those whose visible points the sub-object can shadow
+    std::optional<ReceiverTest> receivers;
     for (std::uint32_t b = bins.start[tile]; b < bins.start[tile + 1]; ++b) {
-      const ScreenPolygon& s = tris[bins.items[b]];
-      // Crow's receiver test, once per sub-object: polygons come grouped by sub-object.
+      const ScreenPolygon& s = screen[bins.items[b]];
+      // Polygons come grouped by sub-object: Crow's receiver test once per sub-object and
+      // tile, then per cell.
       if (const std::uint32_t k = polygons[s.face].sub_object; k != part) {
         part = k;
-        bands = ~0u;
-        if (cullable[k]) {
-          bands = 0;
-          if (!frusta[k].misses(t.receivers)) {
-            for (int band = 0; band < kTile / kBand; ++band) {
-              bands |= unsigned(!frusta[k].misses(t.band_receivers[band])) << band;
-            }
-          }
-        }
-        tile_culled += bands == 0;
+        receivers.reset();
+        if (!cullable[k] || !frusta[k].misses(t.receivers))
+          receivers.emplace(frusta[k], cullable[k], t);
+        tile_culled += !receivers;
       }
-      if (bands) tile_fill += counter.count_polygon(s, bands, t);
+      if (receivers) tile_fill += counter.count_polygon(s, *receivers, t);
     }
     fill += tile_fill;
     culled += tile_culled;
-    negative += counter.finish(t, mask);
+    negative += t.finish(frame, mask);
   });
   return {fill.load(), negative.load(), culled.load()};
 }
