@@ -27,46 +27,72 @@ bool CountingTile::load(const VisibleFrame& frame, int x0_, int y0_, int w_, int
   std::fill_n(delta, h * (kTile + 1), 0);
   std::fill_n(&cell_jump[0][0], kCellRows * kCellColumns, 0);
   std::fill_n(points_loaded_, h, false);
-  std::fill_n(&cell_keys[0][0], kCellRows * kCellColumns, KeyRange{});
-  std::fill_n(&cell_receivers[0][0], kCellRows * kCellColumns, Bounds3{});
-  for (int r = 0; r < h; ++r) {
-    std::uint32_t last_face = kNoFace;
-    for (int c = 0; c < w; ++c) {
-      const int k = r * w + c;
-      face[k] = frame.surfaces.face[frame.surfaces.index(x0 + c, y0 + r)];
-      count[k] = frame.eye_count;
-      if (c % kBlock == 0) run_keys[r][c / kBlock] = {}, last_face = kNoFace;
-      if (face[k] == kNoFace) continue;
-      run_keys[r][c / kBlock].add(frame.face_keys[face[k]].at(x0 + c, y0 + r));
-      if (face[k] != last_face) {
-        last_face = face[k];
-        cell_receivers[r / kBand][c / kBlock].add(
-            frame.parts.bounds[frame.parts.of_face[last_face]]);
-      }
-    }
-    for (int b = 0; b * kBlock < w; ++b) {
-      run_keys[r][b].widen();
-      cell_keys[r / kBand][b].add(run_keys[r][b]);
-    }
-  }
-  // Crow's receivers per cell: the visible sub-objects' boxes, within the piece of the view
-  // that the cell's keys span.
   all_keys = {};
   receivers = {};
-  for (int cr = 0; cr * kBand < h; ++cr) {
-    for (int cc = 0; cc * kBlock < w; ++cc) {
-      const KeyRange& keys = cell_keys[cr][cc];
-      Bounds3& box = cell_receivers[cr][cc];
-      if (keys.empty()) continue;
-      const Bounds3 piece = view_piece(frame.rays, x0 + cc * kBlock, y0 + cr * kBand,
-                                       x0 + std::min(w, (cc + 1) * kBlock) - 1,
-                                       y0 + std::min(h, (cr + 1) * kBand) - 1, keys);
-      box = {max(box.lo, piece.lo), min(box.hi, piece.hi)};
-      all_keys.add(keys);
-      receivers.add(box);
+  for (int band = 0; band * kBand < h; ++band) load_band(frame, band);
+  return !all_keys.empty();
+}
+
+void CountingTile::load_band(const VisibleFrame& frame, int band) {
+  // Per cell: the visible sub-objects and their keys (a count past kCellReceivers: too many
+  // to keep apart), and the box of them all.
+  std::uint32_t part[kCellColumns][kCellReceivers];
+  KeyRange part_keys[kCellColumns][kCellReceivers];
+  int parts[kCellColumns] = {};
+  Bounds3 all_parts[kCellColumns];
+  std::fill_n(cell_keys[band], kCellColumns, KeyRange{});
+  for (int r = band * kBand; r < std::min(h, (band + 1) * kBand); ++r) {
+    std::uint32_t last_face = kNoFace;
+    int slot = 0;
+    for (int c = 0; c < w; ++c) {
+      const int k = r * w + c, cell = c / kBlock;
+      face[k] = frame.surfaces.face[frame.surfaces.index(x0 + c, y0 + r)];
+      count[k] = frame.eye_count;
+      if (c % kBlock == 0) run_keys[r][cell] = {}, last_face = kNoFace;
+      if (face[k] == kNoFace) continue;
+      const double key = frame.face_keys[face[k]].at(x0 + c, y0 + r);
+      run_keys[r][cell].add(key);
+      if (face[k] != last_face) {
+        last_face = face[k];
+        const std::uint32_t p = frame.parts.of_face[last_face];
+        all_parts[cell].add(frame.parts.bounds[p]);
+        slot = int(std::find(part[cell], part[cell] + std::min(parts[cell], kCellReceivers), p) -
+                   part[cell]);
+        if (slot == parts[cell] && slot < kCellReceivers)
+          part[cell][slot] = p, part_keys[cell][slot] = {};
+        if (slot == parts[cell]) ++parts[cell];
+      }
+      if (slot < kCellReceivers) part_keys[cell][slot].add(key);
+    }
+    for (int cell = 0; cell * kBlock < w; ++cell) {
+      run_keys[r][cell].widen();
+      cell_keys[band][cell].add(run_keys[r][cell]);
     }
   }
-  return !all_keys.empty();
+  // Crow's receivers: each visible sub-object's box within the piece of the view that its
+  // keys span.
+  const int ya = y0 + band * kBand, yb = y0 + std::min(h, (band + 1) * kBand) - 1;
+  for (int cell = 0; cell * kBlock < w; ++cell) {
+    CellReceivers& out = cell_receivers[band][cell];
+    out.count = 0;
+    if (cell_keys[band][cell].empty()) continue;
+    const int xa = x0 + cell * kBlock, xb = x0 + std::min(w, (cell + 1) * kBlock) - 1;
+    const auto add = [&](const Bounds3& box, const KeyRange& keys) {
+      const Bounds3 piece = view_piece(frame.rays, xa, ya, xb, yb, keys);
+      Bounds3& r = out.boxes[out.count++];
+      r = {max(box.lo, piece.lo), min(box.hi, piece.hi)};
+      receivers.add(r);
+    };
+    if (parts[cell] > kCellReceivers) {
+      add(all_parts[cell], cell_keys[band][cell]);
+    } else {
+      for (int i = 0; i < parts[cell]; ++i) {
+        part_keys[cell][i].widen();
+        add(frame.parts.bounds[part[cell][i]], part_keys[cell][i]);
+      }
+    }
+    all_keys.add(cell_keys[band][cell]);
+  }
 }
 
 void CountingTile::load_points(const VisibleFrame& frame, int row) {

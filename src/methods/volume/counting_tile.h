@@ -15,6 +15,8 @@ inline constexpr int kTile = raster::TileBins::kTile;
 /// A cell is kBand rows by kBlock columns: the unit of the depth-key and receiver tests.
 inline constexpr int kBlock = 8, kBand = 8;
 inline constexpr int kCellColumns = kTile / kBlock, kCellRows = kTile / kBand;
+/// Receivers kept apart per cell; a cell showing more sub-objects keeps the box of them all.
+inline constexpr int kCellReceivers = 4;
 
 /// \brief The frame as the counting pass sees it: the visible surfaces and, per scene face,
 /// its depth-key plane and whether its visible side faces the light (contract condition 1).
@@ -30,10 +32,17 @@ struct VisibleFrame {
                const VisibleSurfaceBuffer& surfaces, int eye_count);
 };
 
+/// \brief Crow's receivers in one cell: boxes that hold its visible points, one per visible
+/// sub-object (its box within the piece of the view that its keys there span).
+struct CellReceivers {
+  int count = 0;
+  Bounds3 boxes[kCellReceivers];
+};
+
 /// \brief One tile of pixels: their faces and counts, and the ranges of visible depth keys
-/// per kBlock pixels of a row and per cell, with the boxes that hold the visible points of
-/// each cell (Crow's receivers). Jumps settled for a whole span go into a per-row difference
-/// array (+jump at its first column, -jump past its last), summed once in finish().
+/// per kBlock pixels of a row and per cell, with the receivers of each cell. Jumps settled
+/// for a whole span go into a per-row difference array (+jump at its first column, -jump past
+/// its last), summed once in finish().
 struct CountingTile {
   int x0 = 0, y0 = 0, w = 0, h = 0;
   std::uint32_t face[kTile * kTile];
@@ -42,7 +51,8 @@ struct CountingTile {
   int cell_jump[kCellRows][kCellColumns];  ///< settled jumps over whole cells
   KeyRange run_keys[kTile][kCellColumns];  ///< per row and kBlock-pixel run
   KeyRange cell_keys[kCellRows][kCellColumns], all_keys;
-  Bounds3 cell_receivers[kCellRows][kCellColumns], receivers;
+  CellReceivers cell_receivers[kCellRows][kCellColumns];
+  Bounds3 receivers;  ///< holds every visible point of the tile
 
   /// Loads the tile at (x0, y0), w x h pixels; false if it shows only background.
   bool load(const VisibleFrame& frame, int x0, int y0, int w, int h);
@@ -57,6 +67,7 @@ struct CountingTile {
   std::size_t finish(const VisibleFrame& frame, ShadowMask& mask);
 
  private:
+  void load_band(const VisibleFrame& frame, int band);
   bool points_loaded_[kTile];
 };
 

@@ -139,7 +139,13 @@ class ReceiverTest {
     const std::uint64_t bit = std::uint64_t(1) << (cell_row * kCellColumns + cell_column);
     if (!(tested_ & bit)) {
       tested_ |= bit;
-      if (!frustum_.misses(tile_.cell_receivers[cell_row][cell_column])) reached_ |= bit;
+      const CellReceivers& cell = tile_.cell_receivers[cell_row][cell_column];
+      for (int i = 0; i < cell.count; ++i) {
+        if (!frustum_.misses(cell.boxes[i])) {
+          reached_ |= bit;
+          break;
+        }
+      }
     }
     return reached_ & bit;
   }

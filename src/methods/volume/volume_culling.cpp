@@ -18,13 +18,18 @@ double max_abs(Vec3 v) {
   return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 
-// Hazard: a relative margin, far above the rounding of the planes built on the widened box
-// (about 1e-16 of the coordinates' magnitude), far below any scene's features.
-Bounds3 widened(const Bounds3& box, const Light& light) {
+// Hazard: a relative margin, far above the rounding of planes and distances among the points
+// of the reach, the box and the light (about 1e-16 of their magnitude), far below any
+// scene's features.
+double tolerance(const Bounds3& box, const Light& light, const Reach& reach) {
   double scale = std::max({max_abs(box.lo), max_abs(box.hi), box.diagonal()});
+  if (!reach.box.empty()) scale = std::max({scale, max_abs(reach.box.lo), max_abs(reach.box.hi)});
   if (light.type == Light::Type::point) scale = std::max(scale, max_abs(light.position));
-  const Vec3 margin = Vec3{1, 1, 1} * (1e-9 * scale + 1e-300);
-  return {box.lo - margin, box.hi + margin};
+  return 1e-9 * scale + 1e-300;
+}
+
+Bounds3 widened(const Bounds3& box, double margin) {
+  return {box.lo - Vec3{1, 1, 1} * margin, box.hi + Vec3{1, 1, 1} * margin};
 }
 
 // Whether the box's face on \p side of \p axis (0: lo, 1: hi) faces the light.
@@ -59,8 +64,9 @@ bool ViewFrustum::excludes(std::span<const Vec3> points) const {
   });
 }
 
-ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Reach& reach) {
-  const Bounds3 box = widened(tight, light);
+ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Reach& reach)
+    : light_(light), tolerance_(tolerance(tight, light, reach)) {
+  const Bounds3 box = widened(tight, tolerance_);
   const bool point = light.type == Light::Type::point;
   // Within the reach the region lies in the hull of the box's corners and the corners pushed
   // away from the light until they leave it: a point light at distance g from the box
@@ -82,7 +88,7 @@ ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Rea
                        : p + light.direction * std::max(0.0, reach.limit - dot(p, light.direction));
   }
   for (const Vec3& p : hull_) hull_box_.add(p);
-  hull_box_ = widened(hull_box_, light);
+  hull_box_ = widened(hull_box_, tolerance_);
 
   const Vec3 centre = box.center();
   for (int a = 0; a < 3; ++a) {
@@ -112,6 +118,29 @@ ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Rea
       }
     }
   }
+}
+
+void ShadowFrustum::cut(std::span<const Vec3> corners, const Plane& plane) {
+  if (everywhere_ || cuts_ == kMaxCuts || !is_finite(plane.normal) || plane.normal == Vec3{})
+    return;
+  double lo = INFINITY, hi = -INFINITY;
+  for (const Vec3& p : corners) {
+    const double d = plane.distance(p);
+    lo = std::min(lo, d), hi = std::max(hi, d);
+  }
+  const bool positive = lo >= -tolerance_, negative = hi <= tolerance_;
+  if (!positive && !negative) return;  // corners on both sides
+  // The corners' side; the one away from the light when they all lie on the plane.
+  Plane inward = plane;
+  if (!positive || (negative && light_side(plane, light_) > 0)) inward = {-plane.normal, -plane.d};
+  const double light_at = light_side(inward, light_);
+  if (light_at > (light_.type == Light::Type::point ? tolerance_ : 1e-12)) return;
+  // Moved out past the corners' tolerance and the rounding of later tests.
+  inward.d += 2 * tolerance_;
+  // Cuts go first: they are the tighter.
+  planes_[plane_count_] = planes_[cuts_];
+  planes_[cuts_++] = inward;
+  ++plane_count_;
 }
 
 bool ShadowFrustum::misses(const Bounds3& r) const {

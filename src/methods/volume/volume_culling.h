@@ -23,11 +23,20 @@ struct ViewFrustum {
 /// \brief A convex region holding the shadow volume of anything inside a box, up to the
 /// reach: the box swept away from the light (Crow's bounding box, Sec. VI). It is the space
 /// behind the box's light-facing faces and inside the planes through the light and the
-/// box's contour edges. The box is widened by far more than the rounding of these planes,
-/// so the tests below never miss a shadowed point.
+/// box's contour edges, cut further by planes that bound the volume of what the box holds.
+/// The box is widened, and every plane moved out, by far more than their rounding, so the
+/// tests below never miss a shadowed point.
 class ShadowFrustum {
  public:
   ShadowFrustum(const Bounds3& box, const Light& light, const Reach& reach);
+
+  /// Cuts the region by \p plane where it bounds the shadow volume of the convex hull of
+  /// \p corners: all of them lie on one side of it, and the light does not lie strictly on
+  /// that side (then every ray from the light through the hull stays there). For the planes
+  /// of a sub-object's shadow polygons and faces, and its vertices, this makes the region
+  /// the exact volume of a convex sub-object. Keeps at most kMaxCuts planes.
+  void cut(std::span<const Vec3> corners, const Plane& plane);
+  static constexpr int kMaxCuts = 16;
 
   /// No point of \p receiver can lie in the region: nothing inside the box shadows it.
   bool misses(const Bounds3& receiver) const;
@@ -36,8 +45,10 @@ class ShadowFrustum {
 
  private:
   bool everywhere_ = false;  ///< a point light inside the box
-  std::array<Plane, 9> planes_{};
-  int plane_count_ = 0;
+  Light light_;
+  double tolerance_ = 0;  ///< far above the rounding of distances to points in the reach
+  std::array<Plane, 9 + kMaxCuts> planes_{};  ///< inward normals
+  int plane_count_ = 0, cuts_ = 0;
   std::array<Vec3, 16> hull_{};  ///< the box's corners and the same pushed to the reach
   Bounds3 hull_box_;
 };

@@ -147,6 +147,26 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
     open_loops_ += double(v.open_loops);
     depth_fail_objects_ += v.depth_fail;
   }
+  cut_frusta(scene);
+}
+
+void VolumeMethod::cut_frusta(const Scene& scene) {
+  // The planes of a sub-object's shadow polygons and faces bound its volume where its
+  // vertices lie on one side: the receiver test then knows the volume of a convex
+  // sub-object exactly.
+  std::vector<std::size_t> runs;  // where each sub-object's polygons begin
+  for (std::size_t i = 0; i < polygons_.size(); ++i) {
+    if (i == 0 || polygons_[i].sub_object != polygons_[i - 1].sub_object) runs.push_back(i);
+  }
+  runs.push_back(polygons_.size());
+  tbb::parallel_for(std::size_t(0), runs.size() - 1, [&](std::size_t r) {
+    const std::uint32_t k = polygons_[runs[r]].sub_object;
+    const std::span<const Vec3> corners = parts_.corners(k);
+    for (std::size_t i = runs[r]; i < runs[r + 1]; ++i) {
+      frusta_[k].cut(corners, {polygons_[i].normal, polygons_[i].d});
+    }
+    for (std::uint32_t f : parts_.faces(k)) frusta_[k].cut(corners, scene.face_plane(f));
+  });
 }
 
 void VolumeMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,

@@ -28,6 +28,8 @@ class VolumeMethod final : public ShadowMethod {
   MethodCounters counters() const override;
 
  private:
+  void cut_frusta(const Scene& scene);
+
   Counting counting_ = Counting::automatic;
   SubObjects parts_;
   Light light_;
