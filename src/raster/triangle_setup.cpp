@@ -181,7 +181,12 @@ std::vector<FixedPoint> snapped_polygon(std::span<const HomogeneousPoint> corner
     const Vec3 v = c.xyz - view.eye * c.w;
     poly.push_back({dot(v, view.right), dot(v, view.up), dot(v, view.forward), c.w});
   }
-  poly = clip(std::move(poly), clip_planes(view));
+  const auto planes = clip_planes(view);
+  const bool inside = std::all_of(poly.begin(), poly.end(), [&](const Vec4& v) {
+    return std::all_of(planes.begin(), planes.end(),
+                       [&](const ClipPlane& plane) { return eval(plane, v) >= 0; });
+  });
+  if (!inside) poly = clip(std::move(poly), planes);  // else clipping would keep it as it is
   std::vector<FixedPoint> fixed;
   if (poly.size() < 3) return fixed;
   fixed.reserve(poly.size());

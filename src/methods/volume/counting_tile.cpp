@@ -6,6 +6,9 @@
 #include <limits>
 
 namespace shadowkit {
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+}  // namespace
 
 VisibleFrame::VisibleFrame(const Scene& scene, const Light& light, const SubObjects& parts_,
                            const VisibleSurfaceBuffer& surfaces_, int eye_count_)
@@ -26,7 +29,6 @@ bool CountingTile::load(const VisibleFrame& frame, int x0_, int y0_, int w_, int
   x0 = x0_, y0 = y0_, w = w_, h = h_;
   std::fill_n(delta, h * (kTile + 1), 0);
   std::fill_n(&cell_jump[0][0], kCellRows * kCellColumns, 0);
-  std::fill_n(points_loaded_, h, false);
   all_keys = {};
   receivers = {};
   for (int band = 0; band * kBand < h; ++band) load_band(frame, band);
@@ -42,36 +44,43 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
   Bounds3 all_parts[kCellColumns];
   std::fill_n(cell_keys[band], kCellColumns, KeyRange{});
   for (int r = band * kBand; r < std::min(h, (band + 1) * kBand); ++r) {
-    std::uint32_t last_face = kNoFace;
-    int slot = 0;
-    for (int c = 0; c < w; ++c) {
-      const int k = r * w + c, cell = c / kBlock;
-      face[k] = frame.surfaces.face[frame.surfaces.index(x0 + c, y0 + r)];
-      count[k] = frame.eye_count;
-      if (c % kBlock == 0) run_keys[r][cell] = {}, last_face = kNoFace;
-      if (face[k] == kNoFace) continue;
-      const double key = frame.face_keys[face[k]].at(x0 + c, y0 + r);
-      run_keys[r][cell].add(key);
-      if (face[k] != last_face) {
-        last_face = face[k];
-        const std::uint32_t p = frame.parts.of_face[last_face];
-        all_parts[cell].add(frame.parts.bounds[p]);
-        slot = int(std::find(part[cell], part[cell] + std::min(parts[cell], kCellReceivers), p) -
-                   part[cell]);
-        if (slot == parts[cell] && slot < kCellReceivers)
-          part[cell][slot] = p, part_keys[cell][slot] = {};
-        if (slot == parts[cell]) ++parts[cell];
-      }
-      if (slot < kCellReceivers) part_keys[cell][slot].add(key);
-    }
+    std::copy_n(frame.surfaces.face.begin() + std::ptrdiff_t(frame.surfaces.index(x0, y0 + r)), w,
+                face + r * w);
+    std::fill_n(count + r * w, w, frame.eye_count);
     for (int cell = 0; cell * kBlock < w; ++cell) {
-      run_keys[r][cell].widen();
-      cell_keys[band][cell].add(run_keys[r][cell]);
+      KeyRange& keys = run_keys[r][cell];
+      keys = {};
+      const int end = std::min(w, (cell + 1) * kBlock);
+      for (int c = cell * kBlock, next; c < end; c = next) {
+        // A run of one face: its key is linear along the run, so the ends bound it.
+        const std::uint32_t f = face[r * w + c];
+        for (next = c + 1; next < end && face[r * w + next] == f;) ++next;
+        if (f == kNoFace) {
+          std::fill(key + r * w + c, key + r * w + next, kNaN);
+          continue;
+        }
+        const KeyPlane& plane = frame.face_keys[f];
+        for (int i = c; i < next; ++i) key[r * w + i] = plane.at(x0 + i, y0 + r);
+        KeyRange run;
+        run.add(key[r * w + c]);
+        run.add(key[r * w + next - 1]);
+        keys.add(run);
+        const std::uint32_t p = frame.parts.of_face[f];
+        all_parts[cell].add(frame.parts.bounds[p]);
+        const int known = std::min(parts[cell], kCellReceivers);
+        const int slot = int(std::find(part[cell], part[cell] + known, p) - part[cell]);
+        if (slot == known && parts[cell]++ < kCellReceivers)
+          part[cell][slot] = p, part_keys[cell][slot] = {};
+        if (slot < kCellReceivers && slot < parts[cell]) part_keys[cell][slot].add(run);
+      }
+      keys.widen();
+      cell_keys[band][cell].add(keys);
     }
   }
   // Crow's receivers: each visible sub-object's box within the piece of the view that its
   // keys span.
   const int ya = y0 + band * kBand, yb = y0 + std::min(h, (band + 1) * kBand) - 1;
+  band_receivers[band] = {};
   for (int cell = 0; cell * kBlock < w; ++cell) {
     CellReceivers& out = cell_receivers[band][cell];
     out.count = 0;
@@ -81,6 +90,7 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
       const Bounds3 piece = view_piece(frame.rays, xa, ya, xb, yb, keys);
       Bounds3& r = out.boxes[out.count++];
       r = {max(box.lo, piece.lo), min(box.hi, piece.hi)};
+      band_receivers[band].add(r);
       receivers.add(r);
     };
     if (parts[cell] > kCellReceivers) {
@@ -92,18 +102,6 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
       }
     }
     all_keys.add(cell_keys[band][cell]);
-  }
-}
-
-void CountingTile::load_points(const VisibleFrame& frame, int row) {
-  if (points_loaded_[row]) return;
-  points_loaded_[row] = true;
-  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  for (int c = 0; c < w; ++c) {
-    const std::size_t i = frame.surfaces.index(x0 + c, y0 + row);
-    const Vec3 p = frame.surfaces.covered(i) ? frame.surfaces.point(i) : Vec3{kNaN, kNaN, kNaN};
-    const int k = row * w + c;
-    x[k] = p.x, y[k] = p.y, z[k] = p.z;
   }
 }
 

@@ -52,15 +52,13 @@ struct CountingTile {
   KeyRange run_keys[kTile][kCellColumns];  ///< per row and kBlock-pixel run
   KeyRange cell_keys[kCellRows][kCellColumns], all_keys;
   CellReceivers cell_receivers[kCellRows][kCellColumns];
-  Bounds3 receivers;  ///< holds every visible point of the tile
+  Bounds3 band_receivers[kCellRows];  ///< hold every visible point of a cell row
+  Bounds3 receivers;                  ///< holds every visible point of the tile
 
   /// Loads the tile at (x0, y0), w x h pixels; false if it shows only background.
   bool load(const VisibleFrame& frame, int x0, int y0, int w, int h);
-  /// The exact visible points of tile row \p row (NaN for background, so that no plane test
-  /// passes), computed on first use: most rows settle by keys alone.
-  void load_points(const VisibleFrame& frame, int row);
-  /// Visible point coordinates, per pixel.
-  double x[kTile * kTile], y[kTile * kTile], z[kTile * kTile];
+  /// Visible depth keys, per pixel (NaN for background).
+  double key[kTile * kTile];
   /// Adds the settled jumps to the counts and writes the tile's mask pixels: shadow where
   /// the count is positive or where the camera sees a face's unlit side. Returns the number
   /// of negative counts (an error in the counting).
@@ -68,7 +66,6 @@ struct CountingTile {
 
  private:
   void load_band(const VisibleFrame& frame, int band);
-  bool points_loaded_[kTile];
 };
 
 }  // namespace shadowkit

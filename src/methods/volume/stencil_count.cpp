@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "../../raster/convex_polygon.h"
 #include "counting_tile.h"
@@ -102,28 +103,33 @@ Crossing classify_rectangle(const KeyPlane& key, int xa, int xb, int ya, int yb,
                   visible);
 }
 
-// Adds one polygon's crossings on one span of a row, pixel by pixel. The plane test is exact
-// in double on the visible point itself, so only coverage depends on the raster.
-void count_span(const ShadowPolygon& p, CountingTile& t, int first, int last) {
-  const double nx = p.normal.x, ny = p.normal.y, nz = p.normal.z, d = p.d;
-  const int jump = p.jump;
-  int* count = t.count;
+// Adds one polygon's crossings on columns [first, last] of tile row \p row, pixel by pixel:
+// where the visible point lies beyond the polygon's plane, its key is smaller than the
+// polygon's. Keys within the slack of each other fall back to the exact plane test on the
+// visible point itself, so only coverage depends on the raster.
+void count_span(const ShadowPolygon& p, const KeyPlane& key, const VisibleFrame& frame,
+                CountingTile& t, int row, int first, int last) {
+  const int py = t.y0 + row;
+  const auto beyond = [&](int column, double visible) {
+    const double k = key.at(column, py);
+    if (k - key.slack > visible) return true;
+    if (k + key.slack < visible) return false;
+    const std::size_t i = frame.surfaces.index(column, py);
+    return frame.surfaces.covered(i) && dot(p.normal, frame.surfaces.point(i)) + p.d > 0;
+  };
+  const int base = row * t.w - t.x0;
   if (!p.depth_fail) {
     // Crow's depth-pass: the crossing lies between the eye and the visible point.
-    for (int i = first; i <= last; ++i) {
-      count[i] += (nx * t.x[i] + ny * t.y[i] + nz * t.z[i] + d > 0) ? jump : 0;
-    }
-  } else if (p.face == kNoFace) {
-    // Depth-fail: the crossing lies behind the visible point.
-    for (int i = first; i <= last; ++i) {
-      count[i] -= (nx * t.x[i] + ny * t.y[i] + nz * t.z[i] + d <= 0) ? jump : 0;
-    }
-  } else {
-    // A light cap through its own visible point: the volume begins right behind it.
-    for (int i = first; i <= last; ++i) {
-      const bool behind = nx * t.x[i] + ny * t.y[i] + nz * t.z[i] + d <= 0 || t.face[i] == p.face;
-      count[i] -= behind ? jump : 0;
-    }
+    for (int c = first; c <= last; ++c)
+      t.count[base + c] += beyond(c, t.key[base + c]) ? p.jump : 0;
+    return;
+  }
+  // Depth-fail: the crossing lies behind the visible point; a light cap passes through its
+  // own visible point, and its volume begins right behind it.
+  for (int c = first; c <= last; ++c) {
+    if (t.face[base + c] == kNoFace) continue;
+    const bool behind = !beyond(c, t.key[base + c]) || t.face[base + c] == p.face;
+    t.count[base + c] -= behind ? p.jump : 0;
   }
 }
 
@@ -133,8 +139,18 @@ class ReceiverTest {
  public:
   ReceiverTest(const ShadowFrustum& frustum, bool cullable, const CountingTile& t)
       : frustum_(frustum), tile_(t) {
-    if (!cullable) tested_ = reached_ = ~std::uint64_t(0);
+    if (!cullable) tested_ = reached_ = ~std::uint64_t(0), bands_tested_ = bands_reached_ = ~0u;
   }
+  /// Whether it can shadow a visible point of cell row (band) \p band.
+  bool reaches_band(int band) {
+    const unsigned bit = 1u << band;
+    if (!(bands_tested_ & bit)) {
+      bands_tested_ |= bit;
+      if (!frustum_.misses(tile_.band_receivers[band])) bands_reached_ |= bit;
+    }
+    return bands_reached_ & bit;
+  }
+  /// Whether it can shadow a visible point of the cell.
   bool reaches(int cell_row, int cell_column) {
     const std::uint64_t bit = std::uint64_t(1) << (cell_row * kCellColumns + cell_column);
     if (!(tested_ & bit)) {
@@ -154,6 +170,7 @@ class ReceiverTest {
   const ShadowFrustum& frustum_;
   const CountingTile& tile_;
   std::uint64_t tested_ = 0, reached_ = 0;
+  unsigned bands_tested_ = 0, bands_reached_ = 0;
 };
 
 // Counts the shadow polygons over one tile.
@@ -177,18 +194,23 @@ class TileCounter {
     if (!overlaps_tile(s, xa, ya, xb, yb)) return 0;
     narrow_to_strip(s, true, xa, xb, ya, yb);
     if (ya > yb) return 0;
-    // The polygon's span on each of those rows (empty: first > last), then band by band.
+    // Band by band, those the receiver test leaves: the polygon's span on each row (empty:
+    // first > last), walked on from the band before where it can.
     int span_a[kTile], span_b[kTile];
-    raster::PolygonSpanWalker walker(s, ya, yb);
-    for (int py = ya; py <= yb; ++py, walker.next_row()) {
-      int& a = span_a[py - t.y0] = xa;
-      int& b = span_b[py - t.y0] = xb;
-      if (!walker.span(a, b)) a = xb + 1;
-    }
+    std::optional<raster::PolygonSpanWalker> walker;
+    int walked = ya;  // the walker's current row
     std::size_t tested = 0;
     for (int first = ya; first <= yb;) {
       const int band = (first - t.y0) / kBand, last = std::min(yb, t.y0 + (band + 1) * kBand - 1);
-      tested += count_band(poly, key, band, first, last, span_a, span_b, receivers, t);
+      if (receivers.reaches_band(band)) {
+        if (!walker || walked != first) walker.emplace(s, first, yb), walked = first;
+        for (; walked <= last; ++walked, walker->next_row()) {
+          int& a = span_a[walked - t.y0] = xa;
+          int& b = span_b[walked - t.y0] = xb;
+          if (!walker->span(a, b)) a = xb + 1;
+        }
+        tested += count_band(poly, key, band, first, last, span_a, span_b, receivers, t);
+      }
       first = last + 1;
     }
     return tested;
@@ -250,8 +272,7 @@ class TileCounter {
         const Crossing cross =
             classify(std::min(ka, kb), std::max(ka, kb), key.slack, t.run_keys[row][c]);
         if (cross == Crossing::mixed) {
-          t.load_points(frame_, row);
-          count_span(poly, t, row * t.w + a - t.x0, row * t.w + b - t.x0);
+          count_span(poly, key, frame_, t, row, a, b);
           tested += std::size_t(b - a + 1);
           continue;
         }

@@ -121,7 +121,7 @@ ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Rea
 }
 
 void ShadowFrustum::cut(std::span<const Vec3> corners, const Plane& plane) {
-  if (everywhere_ || cuts_ == kMaxCuts || !is_finite(plane.normal) || plane.normal == Vec3{})
+  if (everywhere_ || cuts_ == kMaxPlanes || !is_finite(plane.normal) || plane.normal == Vec3{})
     return;
   double lo = INFINITY, hi = -INFINITY;
   for (const Vec3& p : corners) {
@@ -137,10 +137,9 @@ void ShadowFrustum::cut(std::span<const Vec3> corners, const Plane& plane) {
   if (light_at > (light_.type == Light::Type::point ? tolerance_ : 1e-12)) return;
   // Moved out past the corners' tolerance and the rounding of later tests.
   inward.d += 2 * tolerance_;
-  // Cuts go first: they are the tighter.
-  planes_[plane_count_] = planes_[cuts_];
+  // Cuts go first: they are the tighter. Without room, the box plane in the way goes.
+  if (plane_count_ < kMaxPlanes) planes_[plane_count_++] = planes_[cuts_];
   planes_[cuts_++] = inward;
-  ++plane_count_;
 }
 
 bool ShadowFrustum::misses(const Bounds3& r) const {

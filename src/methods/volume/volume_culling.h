@@ -34,9 +34,10 @@ class ShadowFrustum {
   /// \p corners: all of them lie on one side of it, and the light does not lie strictly on
   /// that side (then every ray from the light through the hull stays there). For the planes
   /// of a sub-object's shadow polygons and faces, and its vertices, this makes the region
-  /// the exact volume of a convex sub-object. Keeps at most kMaxCuts planes.
+  /// the exact volume of a convex sub-object. Keeps at most kMaxPlanes planes in all: a cut
+  /// takes the place of one of the box's planes when there is no room.
   void cut(std::span<const Vec3> corners, const Plane& plane);
-  static constexpr int kMaxCuts = 16;
+  static constexpr int kMaxPlanes = 12;
 
   /// No point of \p receiver can lie in the region: nothing inside the box shadows it.
   bool misses(const Bounds3& receiver) const;
@@ -47,7 +48,7 @@ class ShadowFrustum {
   bool everywhere_ = false;  ///< a point light inside the box
   Light light_;
   double tolerance_ = 0;  ///< far above the rounding of distances to points in the reach
-  std::array<Plane, 9 + kMaxCuts> planes_{};  ///< inward normals
+  std::array<Plane, kMaxPlanes> planes_{};  ///< inward normals: the cuts, then the box's
   int plane_count_ = 0, cuts_ = 0;
   std::array<Vec3, 16> hull_{};  ///< the box's corners and the same pushed to the reach
   Bounds3 hull_box_;
