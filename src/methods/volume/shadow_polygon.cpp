@@ -102,7 +102,15 @@ std::optional<ShadowPolygon> side_polygon(const Mesh& mesh, const ContourEdge& e
   if (!is_finite(plane.normal)) return std::nullopt;
   poly.normal = plane.normal;
   poly.d = plane.d;
-  return oriented(poly, edge.weight, eye);
+  std::optional<ShadowPolygon> seen = oriented(poly, edge.weight, eye);
+  if (!seen) return seen;
+  const MeshEdge& mesh_edge = mesh.edges[edge.edge];
+  for (std::uint32_t k = 0; k < std::min(mesh_edge.use_count, 2u); ++k) {
+    const EdgeUse& use = mesh.edge_uses[mesh_edge.first_use + k];
+    seen->edge_faces[k] = use.face;
+    seen->edge_face_sides[k] = face_side(mesh, mesh_edge, use, seen->normal);
+  }
+  return seen;
 }
 
 void cap_polygons(const Scene& scene, std::uint32_t t, std::uint32_t sub_object, const Light& light,

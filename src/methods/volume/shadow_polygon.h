@@ -35,6 +35,12 @@ struct ShadowPolygon {
   bool depth_fail = false;
   std::uint32_t face = kNoFace;  ///< the scene face of a light cap
   std::uint32_t sub_object = 0;  ///< the sub-object whose volume it bounds (SubObjects)
+  /// A side polygon's first two faces along its contour edge (mesh face ids from
+  /// side_polygon, global ones in the scene's polygon list; kNoFace where there are fewer)
+  /// and the side of the polygon each lies on. Their points next to the edge are placed by
+  /// this, not by a plane test that rounding can tip either way.
+  std::array<std::uint32_t, 2> edge_faces{kNoFace, kNoFace};
+  std::array<int, 2> edge_face_sides{};
 };
 
 /// The shadow polygon of a contour edge: the edge and the rays from the light through its

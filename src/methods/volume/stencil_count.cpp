@@ -111,11 +111,22 @@ void count_span(const ShadowPolygon& p, const KeyPlane& key, const VisibleFrame&
                 CountingTile& t, int row, int first, int last) {
   const int py = t.y0 + row;
   const auto beyond = [&](int column, double visible) {
+    const std::size_t i = frame.surfaces.index(column, py);
+    if (!frame.surfaces.covered(i)) return false;
+    for (int k = 0; k < 2; ++k) {
+      if (frame.surfaces.face[i] != p.edge_faces[k]) continue;
+      // Hazard: a face along the polygon's edge. Where the raster gives it a pixel whose
+      // ray passes just outside it (vertices snap to 1/256 pixel), the visible point is
+      // taken on its plane a little past the edge, across the polygon's plane: within a
+      // pixel's width of the edge, the face's side of the edge decides.
+      const double side = dot(p.normal, frame.surfaces.point(i)) + p.d;
+      if (std::abs(side) <= frame.rays.grid.step / visible) return p.edge_face_sides[k] > 0;
+      return side > 0;
+    }
     const double k = key.at(column, py);
     if (k - key.slack > visible) return true;
     if (k + key.slack < visible) return false;
-    const std::size_t i = frame.surfaces.index(column, py);
-    return frame.surfaces.covered(i) && dot(p.normal, frame.surfaces.point(i)) + p.d > 0;
+    return dot(p.normal, frame.surfaces.point(i)) + p.d > 0;
   };
   const int base = row * t.w - t.x0;
   if (!p.depth_fail) {

@@ -79,6 +79,7 @@ CasterVolume caster_volume(const Scene& scene, const SubObjects& parts,
   for (const ContourEdge& e : edges) {
     if (auto p = side_polygon(mesh, e, light, reach, eye, v.depth_fail)) {
       p->sub_object = edge_sub_object(object, parts, e.edge);
+      for (std::uint32_t& f : p->edge_faces) f = f == kNoFace ? f : object.first_face + f;
       v.polygons.push_back(*p);
     }
   }
