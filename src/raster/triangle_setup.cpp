@@ -208,7 +208,8 @@ EdgeWalker::EdgeWalker(const ScreenTriangle& t, int edge, int first_row)
     : EdgeWalker({t.x[edge], t.y[edge]}, {t.x[(edge + 1) % 3], t.y[(edge + 1) % 3]}, t.bias[edge],
                  first_row) {}
 
-EdgeWalker::EdgeWalker(FixedPoint from, FixedPoint to, std::int64_t bias, int first_row) {
+EdgeWalker::EdgeWalker(FixedPoint from, FixedPoint to, std::int64_t bias, int first_row)
+    : a_(0), abs_a_(0), c_(0), step_c_(0), q_(0), r_(0), step_q_(0), step_r_(0) {
   const std::int64_t dx = to.x - from.x, dy = to.y - from.y;
   // E(px, py) = dx (256 py + 128 - y_i) - dy (256 px + 128 - x_i) - bias = c(py) + a px.
   a_ = -dy * kSubpixel;
