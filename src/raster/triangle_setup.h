@@ -89,9 +89,9 @@ class EdgeWalker {
   static void split(std::int64_t num, std::int64_t den, std::int64_t& q, std::int64_t& r);
   // Left uninitialized by the default constructor, so that arrays of walkers cost nothing
   // until an edge is set up in them; the other constructors set every field.
-  std::int64_t a_, abs_a_;    // change of the edge function per column
-  std::int64_t c_, step_c_;   // horizontal edges: the edge function and its row step
-  std::int64_t q_, r_;        // boundary as quotient and remainder
+  std::int64_t a_, abs_a_;   // change of the edge function per column
+  std::int64_t c_, step_c_;  // horizontal edges: the edge function and its row step
+  std::int64_t q_, r_;       // boundary as quotient and remainder
   std::int64_t step_q_, step_r_;
 };
 

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <optional>
 
 #include "../../raster/convex_polygon.h"
@@ -86,6 +87,46 @@ void narrow_to_strip(const ScreenPolygon& s, bool u_is_x, int ua, int ub, int& v
   va = std::max(va, int(std::floor(v_min / kSub)) - 1);
   vb = std::min(vb, int(std::ceil(v_max / kSub)) + 1);
 }
+
+// \brief Polygon indices per tile, in polygon order. Per row of tiles, a polygon goes only
+// into the tiles its columns there reach, not into every tile of its bounding box: long
+// slanted shadow polygons cross far fewer tiles than their boxes hold.
+struct PolygonBins {
+  int tiles_x, tiles_y;
+  std::vector<std::uint32_t> start, items;
+
+  PolygonBins(const std::vector<ScreenPolygon>& polygons, int width, int height)
+      : tiles_x((width + kTile - 1) / kTile), tiles_y((height + kTile - 1) / kTile) {
+    // (tile, polygon) pairs, chunks of polygons in parallel, kept in order.
+    constexpr std::size_t kChunk = 512;
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> chunks(
+        (polygons.size() + kChunk - 1) / kChunk);
+    tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
+      for (std::size_t i = c * kChunk; i < std::min(polygons.size(), (c + 1) * kChunk); ++i) {
+        const ScreenPolygon& s = polygons[i];
+        for (int ty = s.min_y / kTile; ty <= s.max_y / kTile; ++ty) {
+          int xa = s.min_x, xb = s.max_x;
+          narrow_to_strip(s, false, std::max(s.min_y, ty * kTile),
+                          std::min(s.max_y, ty * kTile + kTile - 1), xa, xb);
+          for (int tx = std::max(0, xa) / kTile; tx <= std::min(width - 1, xb) / kTile; ++tx) {
+            chunks[c].emplace_back(std::uint32_t(ty * tiles_x + tx), std::uint32_t(i));
+          }
+        }
+      }
+    });
+    start.assign(std::size_t(tiles_x) * tiles_y + 1, 0);
+    for (const auto& chunk : chunks) {
+      for (const auto& [tile, polygon] : chunk) ++start[tile + 1];
+    }
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    items.resize(start.back());
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (const auto& chunk : chunks) {
+      for (const auto& [tile, polygon] : chunk) items[next[tile]++] = polygon;
+    }
+  }
+  int tile_count() const { return tiles_x * tiles_y; }
+};
 
 // What a polygon adds to every pixel of a span settled as a whole: depth-pass counts the
 // crossings before the visible point, depth-fail those behind it.
@@ -328,7 +369,7 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   const std::vector<ScreenPolygon> screen = setup_shadow_polygons(polygons, view);
   const VisibleFrame frame(scene, light, parts, surfaces, eye_count);
   const std::vector<KeyPlane> keys = polygon_keys(polygons, frame.rays);
-  const raster::TileBins bins(screen, view.width, view.height);
+  const PolygonBins bins(screen, view.width, view.height);
   const TileCounter counter(polygons, keys, frame);
   const std::vector<char> cullable = receiver_cullable(frusta, polygons, cam.position);
   std::atomic<std::size_t> fill = 0, negative = 0, culled = 0;

@@ -28,6 +28,7 @@ struct ViewFrustum {
 /// tests below never miss a shadowed point.
 class ShadowFrustum {
  public:
+  ShadowFrustum() = default;  ///< empty, until assigned
   ShadowFrustum(const Bounds3& box, const Light& light, const Reach& reach);
 
   /// Cuts the region by \p plane where it bounds the shadow volume of the convex hull of

@@ -91,9 +91,12 @@ CasterVolume caster_volume(const Scene& scene, const SubObjects& parts,
     }
   }
   // Each sub-object's polygons together: the counting pass culls them per sub-object.
-  std::stable_sort(
-      v.polygons.begin(), v.polygons.end(),
-      [](const ShadowPolygon& a, const ShadowPolygon& b) { return a.sub_object < b.sub_object; });
+  const auto by_sub_object = [](const ShadowPolygon& a, const ShadowPolygon& b) {
+    return a.sub_object < b.sub_object;
+  };
+  if (!std::is_sorted(v.polygons.begin(), v.polygons.end(), by_sub_object)) {
+    std::stable_sort(v.polygons.begin(), v.polygons.end(), by_sub_object);
+  }
   return v;
 }
 
@@ -123,11 +126,10 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
   const ViewFrustum view = ViewFrustum::of(cam, near_plane_for(scene.bounds(), cam.position));
   // Crow's bounding boxes: a sub-object whose volume misses the view shadows nothing visible
   // (and, missing the eye, adds nothing to the eye's count).
-  frusta_.clear();
-  frusta_.reserve(parts_.size());
-  for (const Bounds3& box : parts_.bounds) frusta_.emplace_back(box, light_, reach);
+  frusta_.assign(parts_.size(), ShadowFrustum{});
   std::vector<char> casting(parts_.size());
   tbb::parallel_for(std::size_t(0), parts_.size(), [&](std::size_t k) {
+    frusta_[k] = ShadowFrustum(parts_.bounds[k], light_, reach);
     casting[k] = frusta_[k].reaches(view) || !frusta_[k].misses({cam.position, cam.position});
   });
   std::vector<CasterVolume> casters(scene.objects.size());
