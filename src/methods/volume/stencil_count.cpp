@@ -6,17 +6,16 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <optional>
 
 #include "../../raster/convex_polygon.h"
 #include "counting_tile.h"
+#include "polygon_tiles.h"
 
 namespace shadowkit {
 namespace {
 
 using raster::ScreenPolygon;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::uint32_t kNoSubObject = std::numeric_limits<std::uint32_t>::max();
 
 // Shadow polygons as convex screen polygons, face = polygon index. Order does not matter:
@@ -45,88 +44,6 @@ std::vector<KeyPlane> polygon_keys(const std::vector<ShadowPolygon>& polygons,
   });
   return keys;
 }
-
-// Whether polygon \p s may own a pixel centre of the tile [x0, x1] x [y0, y1]: no edge has
-// all four corner centres outside. Long thin shadow polygons cross few of the tiles their
-// bounds overlap; this keeps the span walk off the rest.
-bool overlaps_tile(const ScreenPolygon& s, int x0, int y0, int x1, int y1) {
-  for (int i = 0; i < s.count; ++i) {
-    const raster::FixedPoint a = s.corners[i].p, b = s.corners[(i + 1) % s.count].p;
-    const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
-    // As EdgeWalker: E = dx (256 py + 128 - y_i) - dy (256 px + 128 - x_i), >= 0 inside.
-    const auto e = [&](int px, int py) {
-      return dx * (py * raster::kSubpixel + raster::kSubpixel / 2 - a.y) -
-             dy * (px * raster::kSubpixel + raster::kSubpixel / 2 - a.x);
-    };
-    if (std::max({e(x0, y0), e(x1, y0), e(x0, y1), e(x1, y1)}) < 0) return false;
-  }
-  return true;
-}
-
-// Narrows [va, vb], pixels along one axis, to those where polygon \p s can own pixel centres
-// within pixels [ua, ub] along the other (u = x for rows, u = y for columns): the extent of
-// the polygon within that strip, widened by a pixel. A thin slanted shadow polygon spans
-// many more rows of a tile than it crosses within its columns, and the other way round.
-void narrow_to_strip(const ScreenPolygon& s, bool u_is_x, int ua, int ub, int& va, int& vb) {
-  constexpr double kSub = double(raster::kSubpixel);
-  const double lo = (ua - 0.5) * kSub, hi = (ub + 1.5) * kSub;  // centres +- one pixel
-  double v_min = kInf, v_max = -kInf;
-  for (int i = 0; i < s.count; ++i) {
-    const raster::FixedPoint a = s.corners[i].p, b = s.corners[(i + 1) % s.count].p;
-    double u0 = double(u_is_x ? a.x : a.y), v0 = double(u_is_x ? a.y : a.x);
-    double u1 = double(u_is_x ? b.x : b.y), v1 = double(u_is_x ? b.y : b.x);
-    if (u0 > u1) std::swap(u0, u1), std::swap(v0, v1);
-    if (u1 < lo || u0 > hi) continue;
-    // The part of the edge inside the strip; v is linear in u along it.
-    const double slope = u1 > u0 ? (v1 - v0) / (u1 - u0) : 0;
-    const double va_edge = u0 < lo ? v0 + slope * (lo - u0) : v0;
-    const double vb_edge = u1 > hi ? v0 + slope * (hi - u0) : v1;
-    v_min = std::min({v_min, va_edge, vb_edge});
-    v_max = std::max({v_max, va_edge, vb_edge});
-  }
-  va = std::max(va, int(std::floor(v_min / kSub)) - 1);
-  vb = std::min(vb, int(std::ceil(v_max / kSub)) + 1);
-}
-
-// \brief Polygon indices per tile, in polygon order. Per row of tiles, a polygon goes only
-// into the tiles its columns there reach, not into every tile of its bounding box: long
-// slanted shadow polygons cross far fewer tiles than their boxes hold.
-struct PolygonBins {
-  int tiles_x, tiles_y;
-  std::vector<std::uint32_t> start, items;
-
-  PolygonBins(const std::vector<ScreenPolygon>& polygons, int width, int height)
-      : tiles_x((width + kTile - 1) / kTile), tiles_y((height + kTile - 1) / kTile) {
-    // (tile, polygon) pairs, chunks of polygons in parallel, kept in order.
-    constexpr std::size_t kChunk = 512;
-    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> chunks(
-        (polygons.size() + kChunk - 1) / kChunk);
-    tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
-      for (std::size_t i = c * kChunk; i < std::min(polygons.size(), (c + 1) * kChunk); ++i) {
-        const ScreenPolygon& s = polygons[i];
-        for (int ty = s.min_y / kTile; ty <= s.max_y / kTile; ++ty) {
-          int xa = s.min_x, xb = s.max_x;
-          narrow_to_strip(s, false, std::max(s.min_y, ty * kTile),
-                          std::min(s.max_y, ty * kTile + kTile - 1), xa, xb);
-          for (int tx = std::max(0, xa) / kTile; tx <= std::min(width - 1, xb) / kTile; ++tx) {
-            chunks[c].emplace_back(std::uint32_t(ty * tiles_x + tx), std::uint32_t(i));
-          }
-        }
-      }
-    });
-    start.assign(std::size_t(tiles_x) * tiles_y + 1, 0);
-    for (const auto& chunk : chunks) {
-      for (const auto& [tile, polygon] : chunk) ++start[tile + 1];
-    }
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    items.resize(start.back());
-    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-    for (const auto& chunk : chunks) {
-      for (const auto& [tile, polygon] : chunk) items[next[tile]++] = polygon;
-    }
-  }
-  int tile_count() const { return tiles_x * tiles_y; }
-};
 
 // What a polygon adds to every pixel of a span settled as a whole: depth-pass counts the
 // crossings before the visible point, depth-fail those behind it.
@@ -243,7 +160,7 @@ class TileCounter {
     // (depth-fail) every visible point adds nothing.
     const Crossing whole = classify_rectangle(key, xa, xb, ya, yb, t.all_keys);
     if (whole != Crossing::mixed && settled_jump(poly, whole) == 0) return 0;
-    if (!overlaps_tile(s, xa, ya, xb, yb)) return 0;
+    if (!overlaps_rectangle(s, xa, ya, xb, yb)) return 0;
     narrow_to_strip(s, true, xa, xb, ya, yb);
     if (ya > yb) return 0;
     // Band by band, those the receiver test leaves: the polygon's span on each row (empty:
