@@ -46,6 +46,7 @@ struct CellReceivers {
 struct CountingTile {
   int x0 = 0, y0 = 0, w = 0, h = 0;
   std::uint32_t face[kTile * kTile];
+  double key[kTile * kTile];  ///< visible depth key per pixel (NaN for background)
   int count[kTile * kTile];
   int delta[kTile * (kTile + 1)];
   int cell_jump[kCellRows][kCellColumns];  ///< settled jumps over whole cells
@@ -57,8 +58,6 @@ struct CountingTile {
 
   /// Loads the tile at (x0, y0), w x h pixels; false if it shows only background.
   bool load(const VisibleFrame& frame, int x0, int y0, int w, int h);
-  /// Visible depth keys, per pixel (NaN for background).
-  double key[kTile * kTile];
   /// Adds the settled jumps to the counts and writes the tile's mask pixels: shadow where
   /// the count is positive or where the camera sees a face's unlit side. Returns the number
   /// of negative counts (an error in the counting).
