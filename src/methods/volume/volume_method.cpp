@@ -120,6 +120,7 @@ void VolumeMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
 }
 
 void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
+  SHADOWKIT_CHECK(parts_.of_face.size() == scene.face_count());  // prepare() came first
   light_ = scene.lights.at(light);
   const Camera& cam = scene.camera;
   const Reach reach = Reach::of(scene, light_);
