@@ -84,7 +84,7 @@ std::vector<HomogeneousPoint> ellipse(std::mt19937& rng, int n, double rx, doubl
   return corners;
 }
 
-TEST(ConvexPolygon, OwnsTheSamePixelCentresAsItsFanOfTriangles) {
+TEST(ScreenPolygon, OwnsTheSamePixelCentresAsItsFanOfTriangles) {
   std::mt19937 rng(7);
   for (int trial = 0; trial < 300; ++trial) {
     const auto corners = ellipse(rng, 3 + trial % 8, 0.05 + 0.01 * (trial % 40), 0.3);
@@ -94,7 +94,7 @@ TEST(ConvexPolygon, OwnsTheSamePixelCentresAsItsFanOfTriangles) {
   }
 }
 
-TEST(ConvexPolygon, WalkingRowsBeyondItsBoundsAddsNothing) {
+TEST(ScreenPolygon, WalkingRowsBeyondItsBoundsAddsNothing) {
   std::mt19937 rng(11);
   const auto corners = ellipse(rng, 6, 0.2, 0.1);
   const Image<int> fan = fan_coverage(corners);
@@ -103,7 +103,7 @@ TEST(ConvexPolygon, WalkingRowsBeyondItsBoundsAddsNothing) {
     EXPECT_EQ(differing_pixels(fan, polygon_coverage(corners, band, 9)), 0);
 }
 
-TEST(ConvexPolygon, CornersOnPixelCentresAndHorizontalEdges) {
+TEST(ScreenPolygon, CornersOnPixelCentresAndHorizontalEdges) {
   // A pixel-aligned diamond and square: corners and edges right on pixel centres, where only
   // the fill rule decides.
   const auto at = [](double px, double py) {
@@ -131,7 +131,7 @@ TEST(ConvexPolygon, CornersOnPixelCentresAndHorizontalEdges) {
   for (int y = 11; y <= 19; ++y) EXPECT_EQ(both.at(30, y), 1) << y;
 }
 
-TEST(ConvexPolygon, SliversAndSubPixelPolygonsFallBackToTheFanWhereSnappingBendsThem) {
+TEST(ScreenPolygon, SliversAndSubPixelPolygonsFallBackToTheFanWhereSnappingBendsThem) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-0.5, 0.5);
   int triangles_out = 0;
@@ -152,7 +152,7 @@ TEST(ConvexPolygon, SliversAndSubPixelPolygonsFallBackToTheFanWhereSnappingBends
   EXPECT_GT(triangles_out, 0);
 }
 
-TEST(ConvexPolygon, ClippedByTheNearPlaneAndTheGuardBand) {
+TEST(ScreenPolygon, ClippedByTheNearPlaneAndTheGuardBand) {
   // Corners behind the eye and at infinity (w = 0): clipping adds corners on both.
   const std::vector<HomogeneousPoint> corners{
       {{-0.3, -0.2, -1}, 1}, {{0.4, -0.2, -1}, 1}, {{0.5, -0.1, 2}, 1}, {{-2, 0.3, -1}, 0}};
