@@ -10,16 +10,15 @@
 
 namespace shadowkit::raster {
 
-/// \brief Counting sort of triangle (or polygon) indices into the tiles their bounds overlap;
-/// each bin keeps their order.
+/// \brief Counting sort of triangle indices into the tiles their bounds overlap; each bin
+/// keeps triangle order.
 struct TileBins {
   static constexpr int kTile = ScanConverter::kTileSize;
   int tiles_x = 0, tiles_y = 0;
   std::vector<std::uint32_t> start;
   std::vector<std::uint32_t> items;
 
-  template <class Primitive>
-  TileBins(const std::vector<Primitive>& tris, int width, int height)
+  TileBins(const std::vector<ScreenTriangle>& tris, int width, int height)
       : tiles_x((width + kTile - 1) / kTile), tiles_y((height + kTile - 1) / kTile) {
     std::vector<std::uint32_t> count(std::size_t(tiles_x) * tiles_y + 1, 0);
     for_each_tile(tris, [&](std::size_t tile, std::uint32_t) { ++count[tile + 1]; });
@@ -34,10 +33,10 @@ struct TileBins {
 
   int tile_count() const { return tiles_x * tiles_y; }
 
-  template <class Primitive, class Fn>
-  void for_each_tile(const std::vector<Primitive>& tris, Fn&& fn) const {
+  template <class Fn>
+  void for_each_tile(const std::vector<ScreenTriangle>& tris, Fn&& fn) const {
     for (std::uint32_t t = 0; t < tris.size(); ++t) {
-      const Primitive& s = tris[t];
+      const ScreenTriangle& s = tris[t];
       for (int ty = s.min_y / kTile; ty <= s.max_y / kTile; ++ty) {
         for (int tx = s.min_x / kTile; tx <= s.max_x / kTile; ++tx) {
           fn(std::size_t(ty) * tiles_x + tx, t);
