@@ -64,10 +64,6 @@ DepthPlane depth_plane(const Plane& plane, const RasterProjection& p) {
   return k;
 }
 
-struct FixedPoint {
-  std::int64_t x, y;
-};
-
 FixedPoint to_fixed(const RasterProjection& p, Vec3 v) {
   return {std::llround(p.pixel_x(v) * double(kSubpixel)),
           std::llround(p.pixel_y(v) * double(kSubpixel))};
@@ -175,8 +171,8 @@ std::vector<Vec4> clip(std::vector<Vec4> poly, const std::array<ClipPlane, kClip
 
 }  // namespace
 
-void setup_polygon(std::span<const HomogeneousPoint> corners, std::uint32_t id,
-                   const RasterProjection& view, std::vector<ScreenTriangle>& out) {
+std::vector<FixedPoint> snapped_polygon(std::span<const HomogeneousPoint> corners,
+                                        const RasterProjection& view) {
   // Points at infinity project like any other: pixel = offset + scale * x / z needs no w.
   SHADOWKIT_CHECK(!view.orthographic);
   std::vector<Vec4> poly;
@@ -185,27 +181,40 @@ void setup_polygon(std::span<const HomogeneousPoint> corners, std::uint32_t id,
     const Vec3 v = c.xyz - view.eye * c.w;
     poly.push_back({dot(v, view.right), dot(v, view.up), dot(v, view.forward), c.w});
   }
-  poly = clip(std::move(poly), clip_planes(view));
-  if (poly.size() < 3) return;
+  const auto planes = clip_planes(view);
+  const bool inside = std::all_of(poly.begin(), poly.end(), [&](const Vec4& v) {
+    return std::all_of(planes.begin(), planes.end(),
+                       [&](const ClipPlane& plane) { return eval(plane, v) >= 0; });
+  });
+  if (!inside) poly = clip(std::move(poly), planes);  // else clipping would keep it as it is
+  std::vector<FixedPoint> fixed;
+  if (poly.size() < 3) return fixed;
+  fixed.reserve(poly.size());
+  for (const Vec4& p : poly) fixed.push_back(to_fixed(view, p.xyz()));
+  return fixed;
+}
+
+void setup_polygon(std::span<const HomogeneousPoint> corners, std::uint32_t id,
+                   const RasterProjection& view, std::vector<ScreenTriangle>& out) {
+  const std::vector<FixedPoint> fixed = snapped_polygon(corners, view);
   TriangleBuilder builder(view, out);
   const DepthPlane none{0, 0, 0, true};
-  const FixedPoint f0 = to_fixed(view, poly[0].xyz());
-  FixedPoint prev = to_fixed(view, poly[1].xyz());
-  for (std::size_t i = 2; i < poly.size(); ++i) {
-    const FixedPoint cur = to_fixed(view, poly[i].xyz());
-    builder.emit(f0, prev, cur, none, id);
-    prev = cur;
-  }
+  for (std::size_t i = 2; i < fixed.size(); ++i)
+    builder.emit(fixed[0], fixed[i - 1], fixed[i], none, id);
 }
 
 // The pixel columns of row `py` whose centres satisfy all three edge functions.
-EdgeWalker::EdgeWalker(const ScreenTriangle& t, int edge, int first_row) {
-  const int next = (edge + 1) % 3;
-  const std::int64_t dx = t.x[next] - t.x[edge], dy = t.y[next] - t.y[edge];
+EdgeWalker::EdgeWalker(const ScreenTriangle& t, int edge, int first_row)
+    : EdgeWalker({t.x[edge], t.y[edge]}, {t.x[(edge + 1) % 3], t.y[(edge + 1) % 3]}, t.bias[edge],
+                 first_row) {}
+
+EdgeWalker::EdgeWalker(FixedPoint from, FixedPoint to, std::int64_t bias, int first_row)
+    : a_(0), abs_a_(0), c_(0), step_c_(0), q_(0), r_(0), step_q_(0), step_r_(0) {
+  const std::int64_t dx = to.x - from.x, dy = to.y - from.y;
   // E(px, py) = dx (256 py + 128 - y_i) - dy (256 px + 128 - x_i) - bias = c(py) + a px.
   a_ = -dy * kSubpixel;
   const std::int64_t cy = std::int64_t(first_row) * kSubpixel + kSubpixel / 2;
-  const std::int64_t c = dx * (cy - t.y[edge]) - dy * (kSubpixel / 2 - t.x[edge]) - t.bias[edge];
+  const std::int64_t c = dx * (cy - from.y) - dy * (kSubpixel / 2 - from.x) - bias;
   if (a_ == 0) {
     c_ = c;
     step_c_ = dx * kSubpixel;

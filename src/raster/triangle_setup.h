@@ -32,6 +32,11 @@ struct ScreenTriangle {
 /// tie rule "lower triangle index wins" survives binning). Runs in parallel.
 std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const RasterProjection& view);
 
+/// \brief A point in fixed-point pixel coordinates (1/kSubpixel pixel, y down).
+struct FixedPoint {
+  std::int64_t x, y;
+};
+
 /// \brief A world-space point in homogeneous coordinates: w = 1 for a point, w = 0 for a
 /// direction, the point at infinity where parallel lines meet (shadow polygons reach there).
 struct HomogeneousPoint {
@@ -47,10 +52,19 @@ struct HomogeneousPoint {
 void setup_polygon(std::span<const HomogeneousPoint> corners, std::uint32_t id,
                    const RasterProjection& view, std::vector<ScreenTriangle>& out);
 
+/// The corners that setup_polygon fans into triangles: \p corners clipped against the near
+/// plane and the guard band of the perspective \p view and snapped to fixed point, in order.
+std::vector<FixedPoint> snapped_polygon(std::span<const HomogeneousPoint> corners,
+                                        const RasterProjection& view);
+
 /// \brief One edge's boundary column, row after row, in exact integer arithmetic.
 class EdgeWalker {
  public:
+  EdgeWalker() = default;
   EdgeWalker(const ScreenTriangle& t, int edge, int first_row);
+  /// The edge from \p from to \p to of a positively oriented polygon, with its fill-rule
+  /// \p bias (as ScreenTriangle::bias).
+  EdgeWalker(FixedPoint from, FixedPoint to, std::int64_t bias, int first_row);
   /// Narrows [lo, hi] to the columns on the inner side of the edge in the current row.
   void clip(std::int64_t& lo, std::int64_t& hi) const {
     if (a_ == 0) {
@@ -73,10 +87,12 @@ class EdgeWalker {
 
  private:
   static void split(std::int64_t num, std::int64_t den, std::int64_t& q, std::int64_t& r);
-  std::int64_t a_ = 0, abs_a_ = 0;   // change of the edge function per column
-  std::int64_t c_ = 0, step_c_ = 0;  // horizontal edges: the edge function and its row step
-  std::int64_t q_ = 0, r_ = 0;       // boundary as quotient and remainder
-  std::int64_t step_q_ = 0, step_r_ = 0;
+  // Left uninitialized by the default constructor, so that arrays of walkers cost nothing
+  // until an edge is set up in them; the other constructors set every field.
+  std::int64_t a_, abs_a_;   // change of the edge function per column
+  std::int64_t c_, step_c_;  // horizontal edges: the edge function and its row step
+  std::int64_t q_, r_;       // boundary as quotient and remainder
+  std::int64_t step_q_, step_r_;
 };
 
 /// \brief The pixel columns a triangle owns under the fill rule, row by row from

@@ -9,16 +9,15 @@ int sign(double v) {
   return (v > 0) - (v < 0);
 }
 
-// The side of the edge's shadow polygon, with normal \p polygon_normal, on which face use
-// \p use lies near the edge: its inward direction in its own plane (left of the edge as the
-// face walks it) against the polygon's normal. Exact for non-convex faces too.
+}  // namespace
+
 int face_side(const Mesh& mesh, const MeshEdge& edge, const EdgeUse& use, Vec3 polygon_normal) {
+  // The face's inward direction in its own plane (left of the edge as the face walks it),
+  // against the polygon's normal. Exact for non-convex faces too.
   const Vec3 walk = mesh.vertices[edge.v1] - mesh.vertices[edge.v0];
   const Vec3 inward = cross(mesh.planes[use.face].normal, use.forward ? walk : -walk);
   return sign(dot(polygon_normal, inward));
 }
-
-}  // namespace
 
 Vec3 away_from_light(Vec3 v, const Light& light) {
   return light.type == Light::Type::point ? v - light.position : light.direction;

@@ -14,6 +14,10 @@ namespace shadowkit {
 /// the travel direction of a directional light (then every ray is parallel).
 Vec3 away_from_light(Vec3 v, const Light& light);
 
+/// The side (+1, -1, or 0 in its plane) of a shadow polygon through \p edge, with normal
+/// \p polygon_normal, on which face use \p use lies near the edge.
+int face_side(const Mesh& mesh, const MeshEdge& edge, const EdgeUse& use, Vec3 polygon_normal);
+
 /// \brief A contour edge (Crow's "silhouette edge"): a mesh edge whose shadow polygon does not
 /// cancel. Oriented so that its weight is positive: crossing its shadow polygon toward the
 /// positive side of cross(to - from, away_from_light(from)) enters `weight` more of the

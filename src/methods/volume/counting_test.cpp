@@ -54,6 +54,7 @@ Scene square_scene(Vec3 eye, Vec3 look_at) {
 
 double depth_fail_objects(const Scene& scene, const MethodOptions& options = {}) {
   VolumeMethod m(options);
+  m.prepare(scene, {});
   m.build(scene, 0, {});
   return testing::counter(m, "depth_fail_objects");
 }

@@ -68,6 +68,18 @@ INSTANTIATE_TEST_SUITE_P(Volume, BuiltInScene,
                          ::testing::Values("cubes:125", "tetra:3", "room", "table", "three-lights",
                                            "square"));
 
+TEST(VolumeScenes, NoCountComesOutNegative) {
+  // At full resolution some pixels next to a cube's contour edge are given to the face along
+  // it although their rays pass a sub-pixel outside (snapping); their points, taken on the
+  // face's plane, lay across the edge's shadow polygon and counted its jump (-2).
+  const Scene scene = load_scene("cubes:125", {});
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  VolumeMethod m({});
+  testing::method_mask(m, scene, vsb, 0);
+  EXPECT_EQ(testing::counter(m, "negative_counts"), 0);
+  EXPECT_GT(testing::counter(m, "receiver_culled"), 0);
+}
+
 TEST(VolumeScenes, EveryExampleAgreesWithTheReference) {
   const std::filesystem::path dir = std::filesystem::path(SHADOWKIT_SOURCE_DIR) / "examples";
   int checked = 0;

@@ -102,11 +102,19 @@ std::optional<ShadowPolygon> side_polygon(const Mesh& mesh, const ContourEdge& e
   if (!is_finite(plane.normal)) return std::nullopt;
   poly.normal = plane.normal;
   poly.d = plane.d;
-  return oriented(poly, edge.weight, eye);
+  std::optional<ShadowPolygon> seen = oriented(poly, edge.weight, eye);
+  if (!seen) return seen;
+  const MeshEdge& mesh_edge = mesh.edges[edge.edge];
+  for (std::uint32_t k = 0; k < std::min(mesh_edge.use_count, 2u); ++k) {
+    const EdgeUse& use = mesh.edge_uses[mesh_edge.first_use + k];
+    seen->edge_faces[k] = use.face;
+    seen->edge_face_sides[k] = face_side(mesh, mesh_edge, use, seen->normal);
+  }
+  return seen;
 }
 
-void cap_polygons(const Scene& scene, std::uint32_t t, const Light& light, Vec3 eye,
-                  std::vector<ShadowPolygon>& out) {
+void cap_polygons(const Scene& scene, std::uint32_t t, std::uint32_t sub_object, const Light& light,
+                  Vec3 eye, std::vector<ShadowPolygon>& out) {
   const TriangleList& list = scene.triangles();
   const std::uint32_t face = list.triangle_face[t];
   const Plane& plane = scene.face_plane(face);
@@ -117,6 +125,7 @@ void cap_polygons(const Scene& scene, std::uint32_t t, const Light& light, Vec3 
   ShadowPolygon cap;
   cap.depth_fail = true;
   cap.face = face;
+  cap.sub_object = sub_object;
   cap.corner_count = 3;
   for (int k = 0; k < 3; ++k) cap.corners[k] = {list.positions[list.triangles[t][k]], 1};
   cap.normal = side > 0 ? -plane.normal : plane.normal;

@@ -34,6 +34,13 @@ struct ShadowPolygon {
   /// lies behind it (the visible point's own face included, for a light cap).
   bool depth_fail = false;
   std::uint32_t face = kNoFace;  ///< the scene face of a light cap
+  std::uint32_t sub_object = 0;  ///< the sub-object whose volume it bounds (SubObjects)
+  /// A side polygon's first two faces along its contour edge (mesh face ids from
+  /// side_polygon, global ones in the scene's polygon list; kNoFace where there are fewer)
+  /// and the side of the polygon each lies on. Their points next to the edge are placed by
+  /// this, not by a plane test that rounding can tip either way.
+  std::array<std::uint32_t, 2> edge_faces{kNoFace, kNoFace};
+  std::array<int, 2> edge_face_sides{};
 };
 
 /// The shadow polygon of a contour edge: the edge and the rays from the light through its
@@ -45,11 +52,12 @@ std::optional<ShadowPolygon> side_polygon(const Mesh& mesh, const ContourEdge& e
                                           const Light& light, const Reach& reach, Vec3 eye,
                                           bool depth_fail);
 
-/// The depth-fail caps of scene triangle \p t: the triangle itself (the light cap, where its
-/// face's shadow volume begins) and, for a point light, its projection from the light onto
-/// the plane at infinity (the dark cap, where the volume ends). Appended to \p out.
-void cap_polygons(const Scene& scene, std::uint32_t t, const Light& light, Vec3 eye,
-                  std::vector<ShadowPolygon>& out);
+/// The depth-fail caps of scene triangle \p t of sub-object \p sub_object: the triangle
+/// itself (the light cap, where its face's shadow volume begins) and, for a point light, its
+/// projection from the light onto the plane at infinity (the dark cap, where the volume
+/// ends). Appended to \p out.
+void cap_polygons(const Scene& scene, std::uint32_t t, std::uint32_t sub_object, const Light& light,
+                  Vec3 eye, std::vector<ShadowPolygon>& out);
 
 /// The plane of a side polygon, unit normal: the light and the edge lie in it.
 Plane side_plane(const Mesh& mesh, const ContourEdge& edge, const Light& light);

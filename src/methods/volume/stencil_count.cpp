@@ -6,161 +6,43 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <optional>
 
-#include "../../raster/tile_bins.h"
+#include "../../raster/convex_polygon.h"
+#include "counting_tile.h"
+#include "polygon_tiles.h"
 
 namespace shadowkit {
 namespace {
 
-using raster::ScreenTriangle;
-using raster::TileBins;
-constexpr int kTile = TileBins::kTile;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
-// Relative slack of the depth-key bounds below. Rounding in the keys and in the exact plane
-// test is about 1e-15 relative; keys closer than this fall back to the exact test.
-constexpr double kKeySlack = 1e-7;
+using raster::ScreenPolygon;
+constexpr std::uint32_t kNoSubObject = std::numeric_limits<std::uint32_t>::max();
 
-// Shadow polygons as screen triangles, face = polygon index. Order does not matter: counts
-// add up.
-std::vector<ScreenTriangle> setup_shadow_polygons(const std::vector<ShadowPolygon>& polygons,
-                                                  const RasterProjection& view) {
+// Shadow polygons as convex screen polygons, face = polygon index. Order does not matter:
+// counts add up.
+std::vector<ScreenPolygon> setup_shadow_polygons(const std::vector<ShadowPolygon>& polygons,
+                                                 const RasterProjection& view) {
   constexpr std::size_t kChunk = 1024;
-  std::vector<std::vector<ScreenTriangle>> chunks((polygons.size() + kChunk - 1) / kChunk);
+  std::vector<std::vector<ScreenPolygon>> chunks((polygons.size() + kChunk - 1) / kChunk);
   tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
     for (std::size_t i = c * kChunk; i < std::min(polygons.size(), (c + 1) * kChunk); ++i) {
       const ShadowPolygon& p = polygons[i];
-      raster::setup_polygon({p.corners.data(), std::size_t(p.corner_count)}, std::uint32_t(i), view,
-                            chunks[c]);
+      raster::setup_convex_polygon({p.corners.data(), std::size_t(p.corner_count)},
+                                   std::uint32_t(i), view, chunks[c]);
     }
   });
-  std::vector<ScreenTriangle> all;
+  std::vector<ScreenPolygon> all;
   for (const auto& c : chunks) all.insert(all.end(), c.begin(), c.end());
   return all;
-}
-
-// The depth key of a plane along the pixel rays: key = 1 / s where the ray eye + s dir meets
-// it (dir = forward + x right + y up, so s is the view depth). Linear in the pixel column and
-// row; a point is nearer than another on the same ray when its key is larger, and a plane the
-// ray meets behind the eye (or never) has key <= 0. The exact plane test "the visible point
-// lies beyond the polygon's plane" is key(polygon) > key(visible point): comparing keys
-// settles whole spans and tiles at once (Crow's scan-line coherence).
-struct KeyPlane {
-  double a = 0, b = 0, c = 0;  ///< key = a column + b row + c
-  double slack = 0;            ///< bound on its rounding, with kKeySlack to spare
-  double at(double column, double row) const { return a * column + b * row + c; }
-};
-
-// The camera's pixel-ray grid, computed once.
-struct RayGrid {
-  Vec3 eye, forward, right, up;
-  Camera::PixelGrid grid;
-  double x_extent, y_extent;  ///< bounds of |x| and |y| over the raster
-  explicit RayGrid(const Camera& cam)
-      : eye(cam.position),
-        forward(cam.forward()),
-        right(cam.right()),
-        up(cam.true_up()),
-        grid(cam.pixel_grid()),
-        x_extent(std::abs(grid.x0) + grid.step * cam.width),
-        y_extent(std::abs(grid.y0) + grid.step * cam.height) {}
-};
-
-KeyPlane key_plane(Vec3 normal, double d, const RayGrid& rays) {
-  const Camera::PixelGrid& g = rays.grid;
-  const double nf = dot(normal, rays.forward), nr = dot(normal, rays.right),
-               nu = dot(normal, rays.up);
-  const double e = dot(normal, rays.eye) + d;  // nonzero: the eye is off every plane it sees
-  KeyPlane k;
-  k.a = -g.step * nr / e;
-  k.b = g.step * nu / e;
-  k.c = -(nf + g.x0 * nr + g.y0 * nu) / e;
-  k.slack = kKeySlack *
-            (std::abs(nf) + rays.x_extent * std::abs(nr) + rays.y_extent * std::abs(nu)) /
-            std::abs(e);
-  return k;
 }
 
 std::vector<KeyPlane> polygon_keys(const std::vector<ShadowPolygon>& polygons,
                                    const RayGrid& rays) {
   std::vector<KeyPlane> keys(polygons.size());
   tbb::parallel_for(std::size_t(0), polygons.size(), [&](std::size_t i) {
-    keys[i] = key_plane(polygons[i].normal, polygons[i].d, rays);
+    keys[i] = rays.key_plane(polygons[i].normal, polygons[i].d);
   });
   return keys;
-}
-
-// Per scene face: its depth key plane (the visible keys of its pixels) and whether its
-// visible side faces the light (contract condition 1).
-struct FaceTable {
-  std::vector<KeyPlane> keys;
-  std::vector<char> lit_side;
-  FaceTable(const Scene& scene, const Light& light, const RayGrid& rays)
-      : keys(scene.face_count()), lit_side(scene.face_count()) {
-    tbb::parallel_for(std::uint32_t(0), scene.face_count(), [&](std::uint32_t f) {
-      const Plane& plane = scene.face_plane(f);
-      keys[f] = key_plane(plane.normal, plane.d, rays);
-      lit_side[f] = faces_light(plane, rays.eye, light);
-    });
-  }
-};
-
-// Whether triangle \p s may own a pixel centre of the tile [x0, x1] x [y0, y1]: no edge has
-// all four corner centres outside. Long thin shadow polygons cross few of the tiles their
-// bounds overlap; this keeps the span walk off the rest.
-bool overlaps_tile(const ScreenTriangle& s, int x0, int y0, int x1, int y1) {
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    const std::int64_t dx = s.x[j] - s.x[i], dy = s.y[j] - s.y[i];
-    // As EdgeWalker: E = dx (256 py + 128 - y_i) - dy (256 px + 128 - x_i), >= 0 inside.
-    const auto e = [&](int px, int py) {
-      return dx * (py * raster::kSubpixel + raster::kSubpixel / 2 - s.y[i]) -
-             dy * (px * raster::kSubpixel + raster::kSubpixel / 2 - s.x[i]);
-    };
-    if (std::max({e(x0, y0), e(x1, y0), e(x0, y1), e(x1, y1)}) < 0) return false;
-  }
-  return true;
-}
-
-// Narrows rows [ya, yb] to those where triangle \p s can own pixel centres in columns
-// [xa, xb]: the y extent of the triangle within that column strip, widened by a pixel. A thin
-// slanted shadow polygon spans many more rows of a tile than it crosses within its columns.
-void narrow_rows(const ScreenTriangle& s, int xa, int xb, int& ya, int& yb) {
-  constexpr double kSub = double(raster::kSubpixel);
-  const double lo = (xa - 0.5) * kSub, hi = (xb + 1.5) * kSub;  // centres +- one pixel
-  double y_min = kInf, y_max = -kInf;
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3;
-    double x0 = double(s.x[i]), y0 = double(s.y[i]), x1 = double(s.x[j]), y1 = double(s.y[j]);
-    if (x0 > x1) std::swap(x0, x1), std::swap(y0, y1);
-    if (x1 < lo || x0 > hi) continue;
-    // The part of the edge inside the strip; y is linear in x along it.
-    const double slope = x1 > x0 ? (y1 - y0) / (x1 - x0) : 0;
-    const double ya_edge = x0 < lo ? y0 + slope * (lo - x0) : y0;
-    const double yb_edge = x1 > hi ? y0 + slope * (hi - x0) : y1;
-    y_min = std::min({y_min, ya_edge, yb_edge});
-    y_max = std::max({y_max, ya_edge, yb_edge});
-  }
-  ya = std::max(ya, int(std::floor(y_min / kSub)) - 1);
-  yb = std::min(yb, int(std::ceil(y_max / kSub)) + 1);
-}
-
-// The range of visible keys over some covered pixels, widened by the slack; empty (lo = +inf,
-// hi = -inf) when none is covered.
-struct KeyRange {
-  double lo = kInf, hi = -kInf;
-  void add(double key) { lo = std::min(lo, key), hi = std::max(hi, key); }
-  void add(const KeyRange& r) { lo = std::min(lo, r.lo), hi = std::max(hi, r.hi); }
-  void widen() { lo -= kKeySlack * std::abs(lo), hi += kKeySlack * std::abs(hi); }
-};
-
-// Where the crossings of a polygon over some pixels lie, from its key range there.
-enum class Crossing { all_before, all_behind, mixed };
-
-Crossing classify(double key_lo, double key_hi, double slack, const KeyRange& visible) {
-  if (key_lo - slack > visible.hi) return Crossing::all_before;
-  if (key_hi + slack < visible.lo) return Crossing::all_behind;
-  return Crossing::mixed;
 }
 
 // What a polygon adds to every pixel of a span settled as a whole: depth-pass counts the
@@ -170,222 +52,273 @@ int settled_jump(const ShadowPolygon& p, Crossing c) {
   return c == Crossing::all_behind ? -p.jump : 0;
 }
 
-// Visible keys are kept per run of kBlock pixels of a row: a span is settled against the
-// runs it touches, so a polygon in front of the near cubes of one part of a row is not tested
-// pixel by pixel because the row also shows the far ground elsewhere.
-constexpr int kBlock = 8;
-// Rows of a band: the Hi-Z test between the whole tile and single spans.
-constexpr int kBand = 8;
+// The polygon's key plane over columns [xa, xb] of rows [ya, yb], against visible keys.
+Crossing classify_rectangle(const KeyPlane& key, int xa, int xb, int ya, int yb,
+                            const KeyRange& visible) {
+  const double k00 = key.at(xa, ya), k10 = key.at(xb, ya), k01 = key.at(xa, yb),
+               k11 = key.at(xb, yb);
+  return classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}), key.slack,
+                  visible);
+}
 
-// One tile: visible faces, keys and counts; visible points (NaN for background, so that no
-// plane test passes) loaded per row when an unsettled span first needs them. Whole-span jumps
-// go into `delta` (+jump at the first column, -jump past the last) and are summed along each
-// row at the end: O(1) per span.
-struct TileCounts {
-  double x[kTile * kTile], y[kTile * kTile], z[kTile * kTile];
-  std::uint32_t face[kTile * kTile];
-  int count[kTile * kTile];
-  int delta[kTile * (kTile + 1)];
-  KeyRange block[kTile][kTile / kBlock], band[kTile / kBand], all;
-  bool points_loaded[kTile];
-  int x0, y0, w, h;
-
-  KeyRange span_keys(int row, int first, int last) const {
-    KeyRange r;
-    for (int b = first / kBlock; b <= last / kBlock; ++b) r.add(block[row][b]);
-    return r;
-  }
-};
-
-// Adds one polygon's crossings on one span of a row. The plane test is exact in double on
-// the visible point itself, so only coverage depends on the raster.
-void count_span(const ShadowPolygon& p, const TileCounts& t, int* count, int first, int last) {
-  const double nx = p.normal.x, ny = p.normal.y, nz = p.normal.z, d = p.d;
-  const int jump = p.jump;
+// Adds one polygon's crossings on columns [first, last] of tile row \p row, pixel by pixel:
+// where the visible point lies beyond the polygon's plane, its key is smaller than the
+// polygon's. Keys within the slack of each other fall back to the exact plane test on the
+// visible point itself, so only coverage depends on the raster.
+void count_span(const ShadowPolygon& p, const KeyPlane& key, const VisibleFrame& frame,
+                CountingTile& t, int row, int first, int last) {
+  const int py = t.y0 + row;
+  const auto beyond = [&](int column, double visible) {
+    const std::size_t i = frame.surfaces.index(column, py);
+    if (!frame.surfaces.covered(i)) return false;
+    for (int k = 0; k < 2; ++k) {
+      if (frame.surfaces.face[i] != p.edge_faces[k]) continue;
+      // Hazard: a face along the polygon's edge. Where the raster gives it a pixel whose
+      // ray passes just outside it (vertices snap to 1/256 pixel), the visible point is
+      // taken on its plane a little past the edge, across the polygon's plane: within a
+      // pixel's width of the edge, the face's side of the edge decides.
+      const double side = dot(p.normal, frame.surfaces.point(i)) + p.d;
+      if (std::abs(side) <= frame.rays.grid.step / visible) return p.edge_face_sides[k] > 0;
+      return side > 0;
+    }
+    const double k = key.at(column, py);
+    if (k - key.slack > visible) return true;
+    if (k + key.slack < visible) return false;
+    return dot(p.normal, frame.surfaces.point(i)) + p.d > 0;
+  };
+  const int base = row * t.w - t.x0;
   if (!p.depth_fail) {
     // Crow's depth-pass: the crossing lies between the eye and the visible point.
-    for (int i = first; i <= last; ++i) {
-      count[i] += (nx * t.x[i] + ny * t.y[i] + nz * t.z[i] + d > 0) ? jump : 0;
-    }
-  } else if (p.face == kNoFace) {
-    // Depth-fail: the crossing lies behind the visible point.
-    for (int i = first; i <= last; ++i) {
-      count[i] -= (nx * t.x[i] + ny * t.y[i] + nz * t.z[i] + d <= 0) ? jump : 0;
-    }
-  } else {
-    // A light cap through its own visible point: the volume begins right behind it.
-    for (int i = first; i <= last; ++i) {
-      const bool behind = nx * t.x[i] + ny * t.y[i] + nz * t.z[i] + d <= 0 || t.face[i] == p.face;
-      count[i] -= behind ? jump : 0;
-    }
+    for (int c = first; c <= last; ++c)
+      t.count[base + c] += beyond(c, t.key[base + c]) ? p.jump : 0;
+    return;
+  }
+  // Depth-fail: the crossing lies behind the visible point; a light cap passes through its
+  // own visible point, and its volume begins right behind it.
+  for (int c = first; c <= last; ++c) {
+    if (t.face[base + c] == kNoFace) continue;
+    const bool behind = !beyond(c, t.key[base + c]) || t.face[base + c] == p.face;
+    t.count[base + c] -= behind ? p.jump : 0;
   }
 }
 
-// Counts the shadow polygons over the tiles of one frame.
-class TileCounter {
+// Crow's receiver test for one sub-object over the cells of one tile, made on first use:
+// its polygons are skipped over cells whose visible points lie outside its shadow frustum.
+class ReceiverTest {
  public:
-  TileCounter(const std::vector<ShadowPolygon>& polygons, const std::vector<KeyPlane>& keys,
-              const FaceTable& faces, const VisibleSurfaceBuffer& surfaces, int eye_count)
-      : polygons_(polygons),
-        keys_(keys),
-        faces_(faces),
-        surfaces_(surfaces),
-        eye_count_(eye_count) {}
-
-  // Loads the faces and keys of the tile at (x0, y0), w x h pixels; false if it shows only
-  // background.
-  bool load(int x0, int y0, int w, int h, TileCounts& t) const {
-    t.x0 = x0, t.y0 = y0, t.w = w, t.h = h;
-    t.all = {};
-    std::fill_n(t.band, kTile / kBand, KeyRange{});
-    std::fill_n(t.delta, h * (kTile + 1), 0);
-    std::fill_n(t.points_loaded, h, false);
-    for (int y = 0; y < h; ++y) {
-      for (int b = 0; b < kTile / kBlock; ++b) t.block[y][b] = {};
-      for (int x = 0; x < w; ++x) {
-        const std::uint32_t f = surfaces_.face[surfaces_.index(x0 + x, y0 + y)];
-        t.face[y * w + x] = f;
-        t.count[y * w + x] = eye_count_;
-        if (f != kNoFace) t.block[y][x / kBlock].add(faces_.keys[f].at(x0 + x, y0 + y));
-      }
-      for (KeyRange& b : t.block[y]) b.widen(), t.band[y / kBand].add(b);
-    }
-    for (const KeyRange& b : t.band) t.all.add(b);
-    return t.all.lo <= t.all.hi;
+  ReceiverTest(const ShadowFrustum& frustum, bool cullable, const CountingTile& t)
+      : frustum_(frustum), tile_(t) {
+    if (!cullable) tested_ = reached_ = ~std::uint64_t(0), bands_tested_ = bands_reached_ = ~0u;
   }
-
-  // Walks one triangle's spans over the tile; settles each span by keys where it can and
-  // tests pixel by pixel where the polygon passes through the visible surfaces. Returns the
-  // pixels tested one by one.
-  std::size_t count_triangle(const ScreenTriangle& s, TileCounts& t) const {
-    const ShadowPolygon& poly = polygons_[s.face];
-    const KeyPlane& key = keys_[s.face];
-    int ya = std::max(t.y0, s.min_y), yb = std::min(t.y0 + t.h - 1, s.max_y);
-    const int xa0 = std::max(t.x0, s.min_x), xb0 = std::min(t.x0 + t.w - 1, s.max_x);
-    // Hi-Z: over the tile the key is bounded by its corners; polygons wholly in front of or
-    // behind every visible point of the tile settle without a span walk when they add nothing.
-    const double k00 = key.at(xa0, ya), k10 = key.at(xb0, ya), k01 = key.at(xa0, yb),
-                 k11 = key.at(xb0, yb);
-    const Crossing whole =
-        classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}), key.slack, t.all);
-    if (whole != Crossing::mixed && settled_jump(poly, whole) == 0) return 0;
-    if (!overlaps_tile(s, xa0, ya, xb0, yb)) return 0;
-    narrow_rows(s, xa0, xb0, ya, yb);
-    if (ya > yb) return 0;
-    std::size_t tested = 0;
-    for (int first = ya; first <= yb;) {
-      const int next = t.y0 + ((first - t.y0) / kBand + 1) * kBand;  // the next band's first row
-      tested += count_band(s, poly, key, first, std::min(yb, next - 1), xa0, xb0, t);
-      first = next;
+  /// Whether it can shadow a visible point of cell row (band) \p band.
+  bool reaches_band(int band) {
+    const unsigned bit = 1u << band;
+    if (!(bands_tested_ & bit)) {
+      bands_tested_ |= bit;
+      if (!frustum_.misses(tile_.band_receivers[band])) bands_reached_ |= bit;
     }
-    return tested;
+    return bands_reached_ & bit;
   }
-
-  // Adds the walked pixels and spans of rows [first, last] of one triangle: the span walk
-  // restarts per band, so that bands which settle as a whole (Hi-Z on kBand rows) are skipped.
-  std::size_t count_band(const ScreenTriangle& s, const ShadowPolygon& poly, const KeyPlane& key,
-                         int first, int last, int xa0, int xb0, TileCounts& t) const {
-    const double k00 = key.at(xa0, first), k10 = key.at(xb0, first), k01 = key.at(xa0, last),
-                 k11 = key.at(xb0, last);
-    const Crossing whole = classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}),
-                                    key.slack, t.band[(first - t.y0) / kBand]);
-    if (whole != Crossing::mixed && settled_jump(poly, whole) == 0) return 0;
-    std::size_t tested = 0;
-    raster::SpanWalker walker(s, first);
-    for (int py = first; py <= last; ++py, walker.next_row()) {
-      int xa = xa0, xb = xb0;
-      if (!walker.span(xa, xb)) continue;
-      const int row = py - t.y0;
-      const double ka = key.at(xa, py), kb = key.at(xb, py);
-      const Crossing c = whole != Crossing::mixed
-                             ? whole
-                             : classify(std::min(ka, kb), std::max(ka, kb), key.slack,
-                                        t.span_keys(row, xa - t.x0, xb - t.x0));
-      if (c == Crossing::mixed) {
-        tested += std::size_t(xb - xa + 1);
-        load_points(row, t);
-        const int first_pixel = row * t.w - t.x0;
-        count_span(poly, t, t.count, first_pixel + xa, first_pixel + xb);
-      } else if (const int jump = settled_jump(poly, c)) {
-        int* delta = t.delta + row * (kTile + 1) - t.x0;
-        delta[xa] += jump;
-        delta[xb + 1] -= jump;
+  /// Whether it can shadow a visible point of the cell.
+  bool reaches(int cell_row, int cell_column) {
+    const std::uint64_t bit = std::uint64_t(1) << (cell_row * kCellColumns + cell_column);
+    if (!(tested_ & bit)) {
+      tested_ |= bit;
+      const CellReceivers& cell = tile_.cell_receivers[cell_row][cell_column];
+      for (int i = 0; i < cell.count; ++i) {
+        if (!frustum_.misses(cell.boxes[i])) {
+          reached_ |= bit;
+          break;
+        }
       }
     }
-    return tested;
-  }
-
-  // Adds the whole-span jumps to the counts; writes the tile's mask pixels (shadow where the
-  // count is positive, or where the camera sees the face's unlit side: contract condition 1)
-  // and returns the number of negative counts.
-  std::size_t finish(TileCounts& t, ShadowMask& mask) const {
-    std::size_t negative = 0;
-    for (int y = 0; y < t.h; ++y) {
-      int jump = 0;
-      for (int x = 0; x < t.w; ++x) {
-        jump += t.delta[y * (kTile + 1) + x];
-        const int k = y * t.w + x;
-        if (t.face[k] == kNoFace) continue;
-        const int c = t.count[k] + jump;
-        negative += c < 0;
-        const bool lit = c <= 0 && faces_.lit_side[t.face[k]];
-        mask.pixels[surfaces_.index(t.x0 + x, t.y0 + y)] = lit ? kMaskLit : kMaskShadow;
-      }
-    }
-    return negative;
+    return reached_ & bit;
   }
 
  private:
-  // The exact visible points of one row, on first use: most rows settle by keys alone.
-  void load_points(int row, TileCounts& t) const {
-    if (t.points_loaded[row]) return;
-    t.points_loaded[row] = true;
-    for (int x = 0; x < t.w; ++x) {
-      const std::size_t i = surfaces_.index(t.x0 + x, t.y0 + row);
-      const Vec3 p = surfaces_.covered(i) ? surfaces_.point(i) : Vec3{kNaN, kNaN, kNaN};
-      const int k = row * t.w + x;
-      t.x[k] = p.x, t.y[k] = p.y, t.z[k] = p.z;
+  const ShadowFrustum& frustum_;
+  const CountingTile& tile_;
+  std::uint64_t tested_ = 0, reached_ = 0;
+  unsigned bands_tested_ = 0, bands_reached_ = 0;
+};
+
+// Counts the shadow polygons over one tile.
+class TileCounter {
+ public:
+  TileCounter(const std::vector<ShadowPolygon>& polygons, const std::vector<KeyPlane>& keys,
+              const VisibleFrame& frame)
+      : polygons_(polygons), keys_(keys), frame_(frame) {}
+
+  // Walks one polygon over the tile; returns the pixels tested one by one.
+  std::size_t count_polygon(const ScreenPolygon& s, ReceiverTest& receivers,
+                            CountingTile& t) const {
+    const ShadowPolygon& poly = polygons_[s.face];
+    const KeyPlane& key = keys_[s.face];
+    int ya = std::max(t.y0, s.min_y), yb = std::min(t.y0 + t.h - 1, s.max_y);
+    const int xa = std::max(t.x0, s.min_x), xb = std::min(t.x0 + t.w - 1, s.max_x);
+    // Hi-Z over the whole tile first: a polygon wholly behind (depth-pass) or in front of
+    // (depth-fail) every visible point adds nothing.
+    const Crossing whole = classify_rectangle(key, xa, xb, ya, yb, t.all_keys);
+    if (whole != Crossing::mixed && settled_jump(poly, whole) == 0) return 0;
+    if (!overlaps_rectangle(s, xa, ya, xb, yb)) return 0;
+    narrow_to_strip(s, true, xa, xb, ya, yb);
+    if (ya > yb) return 0;
+    // Band by band, those the receiver test leaves: the polygon's span on each row (empty:
+    // first > last), walked on from the band before where it can.
+    int span_a[kTile], span_b[kTile];
+    std::optional<raster::PolygonSpanWalker> walker;
+    int walked = ya;  // the walker's current row
+    std::size_t tested = 0;
+    for (int first = ya; first <= yb;) {
+      const int band = (first - t.y0) / kBand, last = std::min(yb, t.y0 + (band + 1) * kBand - 1);
+      if (receivers.reaches_band(band)) {
+        if (!walker || walked != first) walker.emplace(s, first, yb), walked = first;
+        for (; walked <= last; ++walked, walker->next_row()) {
+          int& a = span_a[walked - t.y0] = xa;
+          int& b = span_b[walked - t.y0] = xb;
+          if (!walker->span(a, b)) a = xb + 1;
+        }
+        tested += count_band(poly, key, band, first, last, span_a, span_b, receivers, t);
+      }
+      first = last + 1;
     }
+    return tested;
+  }
+
+ private:
+  // Rows [first, last] of one band. Each cell the polygon reaches is settled first, by the
+  // receiver test and by its depth keys against the cell's: only the rows of cells it passes
+  // through are tested run by run, and only runs it passes through pixel by pixel.
+  std::size_t count_band(const ShadowPolygon& poly, const KeyPlane& key, int band, int first,
+                         int last, const int* span_a, const int* span_b, ReceiverTest& receivers,
+                         CountingTile& t) const {
+    int xa = t.x0 + t.w, xb = t.x0 - 1;
+    for (int row = first - t.y0; row <= last - t.y0; ++row) {
+      if (span_a[row] > span_b[row]) continue;
+      xa = std::min(xa, span_a[row]);
+      xb = std::max(xb, span_b[row]);
+    }
+    if (xa > xb) return 0;
+    const int ca = (xa - t.x0) / kBlock, cb = (xb - t.x0) / kBlock;
+    std::size_t tested = 0;
+    for (int c = ca; c <= cb; ++c) {
+      if (!receivers.reaches(band, c)) continue;
+      const int cx0 = std::max(xa, t.x0 + c * kBlock),
+                cx1 = std::min(xb, t.x0 + c * kBlock + kBlock - 1);
+      const Crossing cross = classify_rectangle(key, cx0, cx1, first, last, t.cell_keys[band][c]);
+      const int jump = settled_jump(poly, cross);
+      if (cross == Crossing::mixed || jump != 0) {
+        tested += count_cell(poly, key, band, c, first, last, span_a, span_b, jump, t);
+      }
+    }
+    return tested;
+  }
+
+  // One cell: a settled \p jump over the polygon's spans (over the whole cell when they
+  // cover it), or, where the polygon passes through the visible points (jump 0), run by run
+  // and pixel by pixel.
+  std::size_t count_cell(const ShadowPolygon& poly, const KeyPlane& key, int band, int c, int first,
+                         int last, const int* span_a, const int* span_b, int jump,
+                         CountingTile& t) const {
+    const int cx0 = t.x0 + c * kBlock, cx1 = std::min(t.x0 + t.w, cx0 + kBlock) - 1;
+    if (jump != 0 && first == t.y0 + band * kBand &&
+        last == std::min(t.y0 + t.h, first + kBand) - 1 &&
+        std::all_of(span_a + first - t.y0, span_a + last - t.y0 + 1,
+                    [&](int a) { return a <= cx0; }) &&
+        std::all_of(span_b + first - t.y0, span_b + last - t.y0 + 1,
+                    [&](int b) { return b >= cx1; })) {
+      t.cell_jump[band][c] += jump;
+      return 0;
+    }
+    std::size_t tested = 0;
+    for (int py = first; py <= last; ++py) {
+      const int a = std::max(span_a[py - t.y0], cx0), b = std::min(span_b[py - t.y0], cx1);
+      if (a > b) continue;
+      const int row = py - t.y0;
+      int j = jump;
+      if (j == 0) {
+        const double ka = key.at(a, py), kb = key.at(b, py);
+        const Crossing cross =
+            classify(std::min(ka, kb), std::max(ka, kb), key.slack, t.run_keys[row][c]);
+        if (cross == Crossing::mixed) {
+          count_span(poly, key, frame_, t, row, a, b);
+          tested += std::size_t(b - a + 1);
+          continue;
+        }
+        j = settled_jump(poly, cross);
+        if (j == 0) continue;
+      }
+      int* delta = t.delta + row * (kTile + 1) - t.x0;
+      delta[a] += j;
+      delta[b + 1] -= j;
+    }
+    return tested;
   }
 
   const std::vector<ShadowPolygon>& polygons_;
   const std::vector<KeyPlane>& keys_;
-  const FaceTable& faces_;
-  const VisibleSurfaceBuffer& surfaces_;
-  int eye_count_;
+  const VisibleFrame& frame_;
 };
+
+// Whether the shadow polygons of a sub-object may be skipped over pixels whose visible points
+// lie outside its shadow frustum: their crossings there add up to the sub-object's share of
+// the eye's count, taken away again (depth-pass), or to nothing (depth-fail). Depth-pass
+// sub-objects whose frustum may hold the eye are never skipped.
+std::vector<char> receiver_cullable(const std::vector<ShadowFrustum>& frusta,
+                                    const std::vector<ShadowPolygon>& polygons, Vec3 eye) {
+  std::vector<char> cullable(frusta.size(), 1);
+  const Bounds3 at_eye{eye, eye};
+  for (const ShadowPolygon& p : polygons) {
+    if (!p.depth_fail && !frusta[p.sub_object].misses(at_eye)) cullable[p.sub_object] = 0;
+  }
+  return cullable;
+}
 
 }  // namespace
 
 StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, int eye_count,
-                                   const Scene& scene, const Light& light,
+                                   const Scene& scene, const Light& light, const SubObjects& parts,
+                                   const std::vector<ShadowFrustum>& frusta,
                                    const VisibleSurfaceBuffer& surfaces, ShadowMask& mask) {
   const Camera& cam = scene.camera;
   const RasterProjection view =
       RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position));
-  const std::vector<ScreenTriangle> tris = setup_shadow_polygons(polygons, view);
-  const RayGrid rays(cam);
-  const std::vector<KeyPlane> keys = polygon_keys(polygons, rays);
-  const FaceTable faces(scene, light, rays);
-  const TileBins bins(tris, view.width, view.height);
-  const TileCounter counter(polygons, keys, faces, surfaces, eye_count);
-  std::atomic<std::size_t> fill = 0, negative = 0;
+  const std::vector<ScreenPolygon> screen = setup_shadow_polygons(polygons, view);
+  const VisibleFrame frame(scene, light, parts, surfaces, eye_count);
+  const std::vector<KeyPlane> keys = polygon_keys(polygons, frame.rays);
+  const PolygonBins bins(screen, view.width, view.height);
+  const TileCounter counter(polygons, keys, frame);
+  const std::vector<char> cullable = receiver_cullable(frusta, polygons, cam.position);
+  std::atomic<std::size_t> fill = 0, negative = 0, culled = 0;
 
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
-    thread_local TileCounts t;
+    thread_local CountingTile t;
     const int x0 = (tile % bins.tiles_x) * kTile, y0 = (tile / bins.tiles_x) * kTile;
-    if (!counter.load(x0, y0, std::min(kTile, view.width - x0), std::min(kTile, view.height - y0),
-                      t)) {
+    if (!t.load(frame, x0, y0, std::min(kTile, view.width - x0),
+                std::min(kTile, view.height - y0))) {
       return;
     }
-    std::size_t tile_fill = 0;
+    std::size_t tile_fill = 0, tile_culled = 0;
+    std::uint32_t part = kNoSubObject;
+    std::optional<ReceiverTest> receivers;
     for (std::uint32_t b = bins.start[tile]; b < bins.start[tile + 1]; ++b) {
-      tile_fill += counter.count_triangle(tris[bins.items[b]], t);
+      const ScreenPolygon& s = screen[bins.items[b]];
+      // Polygons come grouped by sub-object: Crow's receiver test once per sub-object and
+      // tile, then per cell.
+      if (const std::uint32_t k = polygons[s.face].sub_object; k != part) {
+        part = k;
+        receivers.reset();
+        if (!cullable[k] || !frusta[k].misses(t.receivers))
+          receivers.emplace(frusta[k], cullable[k], t);
+        tile_culled += !receivers;
+      }
+      if (receivers) tile_fill += counter.count_polygon(s, *receivers, t);
     }
     fill += tile_fill;
-    negative += counter.finish(t, mask);
+    culled += tile_culled;
+    negative += t.finish(frame, mask);
   });
-  return {fill.load(), negative.load()};
+  return {fill.load(), negative.load(), culled.load()};
 }
 
 }  // namespace shadowkit

@@ -5,22 +5,28 @@
 
 #include "shadow_polygon.h"
 #include "shadowkit/methods/shadow_method.h"
+#include "sub_objects.h"
+#include "volume_culling.h"
 
 namespace shadowkit {
 
 /// \brief What one counting pass touched.
 struct StencilStats {
-  std::size_t fill = 0;      ///< pixels covered by shadow polygons, summed over polygons
-  std::size_t negative = 0;  ///< covered pixels whose count came out below zero (an error)
+  std::size_t fill = 0;             ///< pixels covered by shadow polygons, summed over polygons
+  std::size_t negative = 0;         ///< covered pixels whose count came out below zero (an error)
+  std::size_t receiver_culled = 0;  ///< (sub-object, tile) pairs skipped by the receiver test
 };
 
 /// Rasterizes \p polygons over the camera view with the shared scan converter and, per
 /// covered pixel, adds each polygon's jump where the pixel ray crosses it before the visible
 /// point (depth-pass) or subtracts it where it crosses behind (depth-fail), starting from
 /// \p eye_count. A pixel is lit when its count is not positive and its face is lit
-/// (faces_light). Tiles in parallel; writes \p mask.
+/// (faces_light). A sub-object's polygons are skipped over tiles whose visible points lie
+/// outside its shadow frustum (\p frusta, per sub-object of \p parts). Tiles in parallel;
+/// writes \p mask.
 StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, int eye_count,
-                                   const Scene& scene, const Light& light,
+                                   const Scene& scene, const Light& light, const SubObjects& parts,
+                                   const std::vector<ShadowFrustum>& frusta,
                                    const VisibleSurfaceBuffer& surfaces, ShadowMask& mask);
 
 }  // namespace shadowkit

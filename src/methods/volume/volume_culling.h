@@ -20,10 +20,39 @@ struct ViewFrustum {
   bool excludes(std::span<const Vec3> points) const;
 };
 
-/// Whether the shadow volume of anything inside \p box (the box and the space behind it,
-/// seen from the light, up to \p reach) can meet the view. When it cannot, no visible point
-/// lies in it and its caster is skipped.
-bool shadow_volume_reaches_view(const Bounds3& box, const Light& light, const Reach& reach,
-                                const ViewFrustum& view);
+/// \brief A convex region holding the shadow volume of anything inside a box, up to the
+/// reach: the box swept away from the light (Crow's bounding box, Sec. VI). It is the space
+/// behind the box's light-facing faces and inside the planes through the light and the
+/// box's contour edges, cut further by planes that bound the volume of what the box holds.
+/// The box is widened, and every plane moved out, by far more than their rounding, so the
+/// tests below never miss a shadowed point.
+class ShadowFrustum {
+ public:
+  ShadowFrustum() = default;  ///< empty, until assigned
+  ShadowFrustum(const Bounds3& box, const Light& light, const Reach& reach);
+
+  /// Cuts the region by \p plane where it bounds the shadow volume of the convex hull of
+  /// \p corners: all of them lie on one side of it, and the light does not lie strictly on
+  /// that side (then every ray from the light through the hull stays there). For the planes
+  /// of a sub-object's shadow polygons and faces, and its vertices, this makes the region
+  /// the exact volume of a convex sub-object. Keeps at most kMaxPlanes planes in all: a cut
+  /// takes the place of one of the box's planes when there is no room.
+  void cut(std::span<const Vec3> corners, const Plane& plane);
+  static constexpr int kMaxPlanes = 12;
+
+  /// No point of \p receiver can lie in the region: nothing inside the box shadows it.
+  bool misses(const Bounds3& receiver) const;
+  /// Whether the region, within the reach, can meet the view.
+  bool reaches(const ViewFrustum& view) const { return everywhere_ || !view.excludes(hull_); }
+
+ private:
+  bool everywhere_ = false;  ///< a point light inside the box
+  Light light_;
+  double tolerance_ = 0;  ///< far above the rounding of distances to points in the reach
+  std::array<Plane, kMaxPlanes> planes_{};  ///< inward normals: the cuts, then the box's
+  int plane_count_ = 0, cuts_ = 0;
+  std::array<Vec3, 16> hull_{};  ///< the box's corners and the same pushed to the reach
+  Bounds3 hull_box_;
+};
 
 }  // namespace shadowkit

@@ -9,7 +9,6 @@
 #include "eye_count.h"
 #include "shadowkit/core/error.h"
 #include "stencil_count.h"
-#include "volume_culling.h"
 
 namespace shadowkit {
 namespace {
@@ -19,7 +18,7 @@ struct CasterVolume {
   std::vector<ShadowPolygon> polygons;
   int eye_count = 0;
   std::size_t contour_edges = 0, loops = 0, open_loops = 0;
-  bool depth_fail = false, culled = false;
+  bool depth_fail = false;
 };
 
 // Depth-pass misses crossings the near plane clips away, so it needs every shadow polygon
@@ -42,25 +41,34 @@ std::pair<std::uint32_t, std::uint32_t> object_triangles(const Scene& scene, std
   return {std::uint32_t(lo - faces.begin()), std::uint32_t(hi - faces.begin())};
 }
 
-CasterVolume caster_volume(const Scene& scene, std::uint32_t o, const Light& light,
+// The sub-object of a mesh edge: that of any face along it.
+std::uint32_t edge_sub_object(const SceneObject& object, const SubObjects& parts,
+                              std::uint32_t edge) {
+  const Mesh& mesh = object.mesh;
+  return parts.of_face[object.first_face + mesh.edge_uses[mesh.edges[edge].first_use].face];
+}
+
+CasterVolume caster_volume(const Scene& scene, const SubObjects& parts,
+                           const std::vector<char>& casting, std::uint32_t o, const Light& light,
                            const Reach& reach, const ViewFrustum& view,
                            VolumeMethod::Counting counting) {
   CasterVolume v;
-  const Mesh& mesh = scene.objects[o].mesh;
+  const SceneObject& object = scene.objects[o];
+  const Mesh& mesh = object.mesh;
   const Vec3 eye = scene.camera.position;
-  // Crow's bounding box: a caster whose volume misses the view shadows nothing visible.
-  if (!shadow_volume_reaches_view(mesh.bounds(), light, reach, view)) {
-    v.culled = true;
-    return v;
-  }
-  // Contour edges and their loops (Fig. 2).
-  const std::vector<ContourEdge> edges = find_contour_edges(mesh, light);
+  // Contour edges of the sub-objects whose volumes can be seen, and their loops (Fig. 2).
+  std::vector<ContourEdge> edges = find_contour_edges(mesh, light);
+  std::erase_if(edges, [&](const ContourEdge& e) {
+    return !casting[edge_sub_object(object, parts, e.edge)];
+  });
+  if (edges.empty()) return v;
   const std::vector<ContourLoop> loops = chain_contour_loops(edges);
   v.contour_edges = edges.size();
   v.loops = loops.size();
   v.open_loops = std::size_t(
       std::count_if(loops.begin(), loops.end(), [](const ContourLoop& l) { return !l.closed; }));
-  // Depth-pass or depth-fail for this caster.
+  // Depth-pass or depth-fail for this caster. Culled sub-objects add nothing to the eye's
+  // count: their volumes miss the eye.
   const std::optional<int> eye_count = faces_between_eye_and_light(mesh, eye, light);
   v.depth_fail = counting == VolumeMethod::Counting::depth_fail ||
                  (counting == VolumeMethod::Counting::automatic &&
@@ -69,11 +77,25 @@ CasterVolume caster_volume(const Scene& scene, std::uint32_t o, const Light& lig
   v.eye_count = v.depth_fail ? 0 : *eye_count;
   // Shadow polygons (Fig. 4), and the caps that close the volumes for depth-fail.
   for (const ContourEdge& e : edges) {
-    if (auto p = side_polygon(mesh, e, light, reach, eye, v.depth_fail)) v.polygons.push_back(*p);
+    if (auto p = side_polygon(mesh, e, light, reach, eye, v.depth_fail)) {
+      p->sub_object = edge_sub_object(object, parts, e.edge);
+      for (std::uint32_t& f : p->edge_faces) f = f == kNoFace ? f : object.first_face + f;
+      v.polygons.push_back(*p);
+    }
   }
   if (v.depth_fail) {
     const auto [t0, t1] = object_triangles(scene, o);
-    for (std::uint32_t t = t0; t < t1; ++t) cap_polygons(scene, t, light, eye, v.polygons);
+    for (std::uint32_t t = t0; t < t1; ++t) {
+      const std::uint32_t part = parts.of_face[scene.triangles().triangle_face[t]];
+      if (casting[part]) cap_polygons(scene, t, part, light, eye, v.polygons);
+    }
+  }
+  // Each sub-object's polygons together: the counting pass culls them per sub-object.
+  const auto by_sub_object = [](const ShadowPolygon& a, const ShadowPolygon& b) {
+    return a.sub_object < b.sub_object;
+  };
+  if (!std::is_sorted(v.polygons.begin(), v.polygons.end(), by_sub_object)) {
+    std::stable_sort(v.polygons.begin(), v.polygons.end(), by_sub_object);
   }
   return v;
 }
@@ -93,19 +115,34 @@ VolumeMethod::VolumeMethod(const MethodOptions& options) {
   counting_ = parse_counting(options);
 }
 
+void VolumeMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
+  parts_ = SubObjects::of(scene);
+}
+
 void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
+  SHADOWKIT_CHECK(parts_.of_face.size() == scene.face_count());  // prepare() came first
   light_ = scene.lights.at(light);
   const Camera& cam = scene.camera;
   const Reach reach = Reach::of(scene, light_);
   const ViewFrustum view = ViewFrustum::of(cam, near_plane_for(scene.bounds(), cam.position));
+  // Crow's bounding boxes: a sub-object whose volume misses the view shadows nothing visible
+  // (and, missing the eye, adds nothing to the eye's count).
+  frusta_.assign(parts_.size(), ShadowFrustum{});
+  std::vector<char> casting(parts_.size());
+  tbb::parallel_for(std::size_t(0), parts_.size(), [&](std::size_t k) {
+    frusta_[k] = ShadowFrustum(parts_.bounds[k], light_, reach);
+    casting[k] = frusta_[k].reaches(view) || !frusta_[k].misses({cam.position, cam.position});
+  });
   std::vector<CasterVolume> casters(scene.objects.size());
   tbb::parallel_for(std::size_t(0), casters.size(), [&](std::size_t o) {
-    casters[o] = caster_volume(scene, std::uint32_t(o), light_, reach, view, counting_);
+    casters[o] =
+        caster_volume(scene, parts_, casting, std::uint32_t(o), light_, reach, view, counting_);
   });
 
   polygons_.clear();
   eye_count_ = 0;
-  contour_edges_ = contour_loops_ = open_loops_ = depth_fail_objects_ = culled_objects_ = 0;
+  contour_edges_ = contour_loops_ = open_loops_ = depth_fail_objects_ = 0;
+  culled_sub_objects_ = double(std::count(casting.begin(), casting.end(), 0));
   for (const CasterVolume& v : casters) {
     polygons_.insert(polygons_.end(), v.polygons.begin(), v.polygons.end());
     eye_count_ += v.eye_count;
@@ -113,31 +150,51 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
     contour_loops_ += double(v.loops);
     open_loops_ += double(v.open_loops);
     depth_fail_objects_ += v.depth_fail;
-    culled_objects_ += v.culled;
   }
+  cut_frusta(scene);
+}
+
+void VolumeMethod::cut_frusta(const Scene& scene) {
+  // The planes of a sub-object's shadow polygons and faces bound its volume where its
+  // vertices lie on one side: the receiver test then knows the volume of a convex
+  // sub-object exactly.
+  std::vector<std::size_t> runs;  // where each sub-object's polygons begin
+  for (std::size_t i = 0; i < polygons_.size(); ++i) {
+    if (i == 0 || polygons_[i].sub_object != polygons_[i - 1].sub_object) runs.push_back(i);
+  }
+  runs.push_back(polygons_.size());
+  tbb::parallel_for(std::size_t(0), runs.size() - 1, [&](std::size_t r) {
+    const std::uint32_t k = polygons_[runs[r]].sub_object;
+    const std::span<const Vec3> corners = parts_.corners(k);
+    for (std::size_t i = runs[r]; i < runs[r + 1]; ++i) {
+      frusta_[k].cut(corners, {polygons_[i].normal, polygons_[i].d});
+    }
+    for (std::uint32_t f : parts_.faces(k)) frusta_[k].cut(corners, scene.face_plane(f));
+  });
 }
 
 void VolumeMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
                          const Context& /*ctx*/) {
   const StencilStats stats =
-      count_shadow_polygons(polygons_, eye_count_, scene, light_, surfaces, mask);
+      count_shadow_polygons(polygons_, eye_count_, scene, light_, parts_, frusta_, surfaces, mask);
   fill_ = double(stats.fill);
   negative_counts_ = double(stats.negative);
+  receiver_culled_ = double(stats.receiver_culled);
 }
 
 std::size_t VolumeMethod::memory_bytes() const {
-  return polygons_.capacity() * sizeof(ShadowPolygon);
+  return polygons_.capacity() * sizeof(ShadowPolygon) + frusta_.capacity() * sizeof(ShadowFrustum) +
+         parts_.of_face.capacity() * sizeof(std::uint32_t) +
+         parts_.bounds.capacity() * sizeof(Bounds3);
 }
 
 MethodCounters VolumeMethod::counters() const {
-  return {{"contour_edges", contour_edges_},
-          {"contour_loops", contour_loops_},
-          {"open_contour_loops", open_loops_},
-          {"shadow_polygons", double(polygons_.size())},
-          {"depth_fail_objects", depth_fail_objects_},
-          {"culled_objects", culled_objects_},
-          {"fill", fill_},
-          {"negative_counts", negative_counts_}};
+  return {
+      {"contour_edges", contour_edges_},           {"contour_loops", contour_loops_},
+      {"open_contour_loops", open_loops_},         {"shadow_polygons", double(polygons_.size())},
+      {"depth_fail_objects", depth_fail_objects_}, {"culled_sub_objects", culled_sub_objects_},
+      {"receiver_culled", receiver_culled_},       {"fill", fill_},
+      {"negative_counts", negative_counts_}};
 }
 
 }  // namespace shadowkit

@@ -4,6 +4,8 @@
 
 #include "shadow_polygon.h"
 #include "shadowkit/methods/shadow_method.h"
+#include "sub_objects.h"
+#include "volume_culling.h"
 
 namespace shadowkit {
 
@@ -18,6 +20,7 @@ class VolumeMethod final : public ShadowMethod {
 
   explicit VolumeMethod(const MethodOptions& options);
   std::string_view name() const override { return "volume"; }
+  void prepare(const Scene& scene, const Context& ctx) override;
   void build(const Scene& scene, std::size_t light, const Context& ctx) override;
   void shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
              const Context& ctx) override;
@@ -25,13 +28,17 @@ class VolumeMethod final : public ShadowMethod {
   MethodCounters counters() const override;
 
  private:
+  void cut_frusta(const Scene& scene);
+
   Counting counting_ = Counting::automatic;
+  SubObjects parts_;
   Light light_;
-  std::vector<ShadowPolygon> polygons_;
+  std::vector<ShadowFrustum> frusta_;    ///< per sub-object, for the current light
+  std::vector<ShadowPolygon> polygons_;  ///< grouped by sub-object
   int eye_count_ = 0;  ///< per-face volumes holding the eye, over depth-pass objects
   double contour_edges_ = 0, contour_loops_ = 0, open_loops_ = 0;
-  double depth_fail_objects_ = 0, culled_objects_ = 0;
-  double fill_ = 0, negative_counts_ = 0;
+  double depth_fail_objects_ = 0, culled_sub_objects_ = 0;
+  double fill_ = 0, negative_counts_ = 0, receiver_culled_ = 0;
 };
 
 }  // namespace shadowkit

@@ -1,0 +1,125 @@
+#include "counting_tile.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace shadowkit {
+namespace {
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+}  // namespace
+
+VisibleFrame::VisibleFrame(const Scene& scene, const Light& light, const SubObjects& parts_,
+                           const VisibleSurfaceBuffer& surfaces_, int eye_count_)
+    : surfaces(surfaces_),
+      parts(parts_),
+      rays(scene.camera),
+      face_keys(scene.face_count()),
+      lit_side(scene.face_count()),
+      eye_count(eye_count_) {
+  tbb::parallel_for(std::uint32_t(0), scene.face_count(), [&](std::uint32_t f) {
+    const Plane& plane = scene.face_plane(f);
+    face_keys[f] = rays.key_plane(plane.normal, plane.d);
+    lit_side[f] = faces_light(plane, rays.eye, light);
+  });
+}
+
+bool CountingTile::load(const VisibleFrame& frame, int x0_, int y0_, int w_, int h_) {
+  x0 = x0_, y0 = y0_, w = w_, h = h_;
+  std::fill_n(delta, h * (kTile + 1), 0);
+  std::fill_n(&cell_jump[0][0], kCellRows * kCellColumns, 0);
+  all_keys = {};
+  receivers = {};
+  for (int band = 0; band * kBand < h; ++band) load_band(frame, band);
+  return !all_keys.empty();
+}
+
+void CountingTile::load_band(const VisibleFrame& frame, int band) {
+  // Per cell: the visible sub-objects and their keys (a count past kCellReceivers: too many
+  // to keep apart), and the box of them all.
+  std::uint32_t part[kCellColumns][kCellReceivers];
+  KeyRange part_keys[kCellColumns][kCellReceivers];
+  int parts[kCellColumns] = {};
+  Bounds3 all_parts[kCellColumns];
+  std::fill_n(cell_keys[band], kCellColumns, KeyRange{});
+  for (int r = band * kBand; r < std::min(h, (band + 1) * kBand); ++r) {
+    std::copy_n(frame.surfaces.face.begin() + std::ptrdiff_t(frame.surfaces.index(x0, y0 + r)), w,
+                face + r * w);
+    std::fill_n(count + r * w, w, frame.eye_count);
+    for (int cell = 0; cell * kBlock < w; ++cell) {
+      KeyRange& keys = run_keys[r][cell];
+      keys = {};
+      const int end = std::min(w, (cell + 1) * kBlock);
+      for (int c = cell * kBlock, next; c < end; c = next) {
+        // A run of one face: its key is linear along the run, so the ends bound it.
+        const std::uint32_t f = face[r * w + c];
+        for (next = c + 1; next < end && face[r * w + next] == f;) ++next;
+        if (f == kNoFace) {
+          std::fill(key + r * w + c, key + r * w + next, kNaN);
+          continue;
+        }
+        const KeyPlane& plane = frame.face_keys[f];
+        for (int i = c; i < next; ++i) key[r * w + i] = plane.at(x0 + i, y0 + r);
+        KeyRange run;
+        run.add(key[r * w + c]);
+        run.add(key[r * w + next - 1]);
+        keys.add(run);
+        const std::uint32_t p = frame.parts.of_face[f];
+        all_parts[cell].add(frame.parts.bounds[p]);
+        const int known = std::min(parts[cell], kCellReceivers);
+        const int slot = int(std::find(part[cell], part[cell] + known, p) - part[cell]);
+        if (slot == known && parts[cell]++ < kCellReceivers)
+          part[cell][slot] = p, part_keys[cell][slot] = {};
+        if (slot < kCellReceivers && slot < parts[cell]) part_keys[cell][slot].add(run);
+      }
+      keys.widen();
+      cell_keys[band][cell].add(keys);
+    }
+  }
+  // Crow's receivers: each visible sub-object's box within the piece of the view that its
+  // keys span.
+  const int ya = y0 + band * kBand, yb = y0 + std::min(h, (band + 1) * kBand) - 1;
+  band_receivers[band] = {};
+  for (int cell = 0; cell * kBlock < w; ++cell) {
+    CellReceivers& out = cell_receivers[band][cell];
+    out.count = 0;
+    if (cell_keys[band][cell].empty()) continue;
+    const int xa = x0 + cell * kBlock, xb = x0 + std::min(w, (cell + 1) * kBlock) - 1;
+    const auto add = [&](const Bounds3& box, const KeyRange& keys) {
+      const Bounds3 piece = view_piece(frame.rays, xa, ya, xb, yb, keys);
+      Bounds3& r = out.boxes[out.count++];
+      r = {max(box.lo, piece.lo), min(box.hi, piece.hi)};
+      band_receivers[band].add(r);
+      receivers.add(r);
+    };
+    if (parts[cell] > kCellReceivers) {
+      add(all_parts[cell], cell_keys[band][cell]);
+    } else {
+      for (int i = 0; i < parts[cell]; ++i) {
+        part_keys[cell][i].widen();
+        add(frame.parts.bounds[part[cell][i]], part_keys[cell][i]);
+      }
+    }
+    all_keys.add(cell_keys[band][cell]);
+  }
+}
+
+std::size_t CountingTile::finish(const VisibleFrame& frame, ShadowMask& mask) {
+  std::size_t negative = 0;
+  for (int r = 0; r < h; ++r) {
+    int jump = 0;
+    for (int c = 0; c < w; ++c) {
+      jump += delta[r * (kTile + 1) + c];
+      const int k = r * w + c;
+      if (face[k] == kNoFace) continue;
+      const int total = count[k] + jump + cell_jump[r / kBand][c / kBlock];
+      negative += total < 0;
+      const bool lit = total <= 0 && frame.lit_side[face[k]];
+      mask.pixels[frame.surfaces.index(x0 + c, y0 + r)] = lit ? kMaskLit : kMaskShadow;
+    }
+  }
+  return negative;
+}
+
+}  // namespace shadowkit

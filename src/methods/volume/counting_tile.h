@@ -1,0 +1,70 @@
+#pragma once
+// One tile of the counting pass: what its pixels see, summarized for Crow's coherence tests
+// (1977, Sec. VII), and their counts.
+#include <cstdint>
+#include <vector>
+
+#include "../../raster/tile_bins.h"
+#include "depth_keys.h"
+#include "shadowkit/methods/shadow_method.h"
+#include "sub_objects.h"
+
+namespace shadowkit {
+
+inline constexpr int kTile = raster::TileBins::kTile;
+/// A cell is kBand rows by kBlock columns: the unit of the depth-key and receiver tests.
+inline constexpr int kBlock = 8, kBand = 8;
+inline constexpr int kCellColumns = kTile / kBlock, kCellRows = kTile / kBand;
+/// Receivers kept apart per cell; a cell showing more sub-objects keeps the box of them all.
+inline constexpr int kCellReceivers = 4;
+
+/// \brief The frame as the counting pass sees it: the visible surfaces and, per scene face,
+/// its depth-key plane and whether its visible side faces the light (contract condition 1).
+struct VisibleFrame {
+  const VisibleSurfaceBuffer& surfaces;
+  const SubObjects& parts;
+  RayGrid rays;
+  std::vector<KeyPlane> face_keys;
+  std::vector<char> lit_side;
+  int eye_count;  ///< where every depth-pass count starts
+
+  VisibleFrame(const Scene& scene, const Light& light, const SubObjects& parts,
+               const VisibleSurfaceBuffer& surfaces, int eye_count);
+};
+
+/// \brief Crow's receivers in one cell: boxes that hold its visible points, one per visible
+/// sub-object (its box within the piece of the view that its keys there span).
+struct CellReceivers {
+  int count = 0;
+  Bounds3 boxes[kCellReceivers];
+};
+
+/// \brief One tile of pixels: their faces and counts, and the ranges of visible depth keys
+/// per kBlock pixels of a row and per cell, with the receivers of each cell. Jumps settled
+/// for a whole span go into a per-row difference array (+jump at its first column, -jump past
+/// its last), summed once in finish().
+struct CountingTile {
+  int x0 = 0, y0 = 0, w = 0, h = 0;
+  std::uint32_t face[kTile * kTile];
+  double key[kTile * kTile];  ///< visible depth key per pixel (NaN for background)
+  int count[kTile * kTile];
+  int delta[kTile * (kTile + 1)];
+  int cell_jump[kCellRows][kCellColumns];  ///< settled jumps over whole cells
+  KeyRange run_keys[kTile][kCellColumns];  ///< per row and kBlock-pixel run
+  KeyRange cell_keys[kCellRows][kCellColumns], all_keys;
+  CellReceivers cell_receivers[kCellRows][kCellColumns];
+  Bounds3 band_receivers[kCellRows];  ///< hold every visible point of a cell row
+  Bounds3 receivers;                  ///< holds every visible point of the tile
+
+  /// Loads the tile at (x0, y0), w x h pixels; false if it shows only background.
+  bool load(const VisibleFrame& frame, int x0, int y0, int w, int h);
+  /// Adds the settled jumps to the counts and writes the tile's mask pixels: shadow where
+  /// the count is positive or where the camera sees a face's unlit side. Returns the number
+  /// of negative counts (an error in the counting).
+  std::size_t finish(const VisibleFrame& frame, ShadowMask& mask);
+
+ private:
+  void load_band(const VisibleFrame& frame, int band);
+};
+
+}  // namespace shadowkit
