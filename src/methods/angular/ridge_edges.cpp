@@ -34,10 +34,10 @@ bool hidden_ridge(const Mesh& mesh, const FarSheets& sheets, const MeshEdge& edg
 FarSheets far_sheets(const Mesh& mesh, const Light& light, bool solid) {
   FarSheets s;
   s.solid = solid;
-  s.side.resize(mesh.face_count());
-  for (std::size_t f = 0; f < s.side.size(); ++f) {
-    const double d = light_side(mesh.planes[f], light);
-    s.side[f] = static_cast<signed char>(d > 0 ? 1 : d < 0 ? -1 : 0);
+  s.side.reserve(mesh.face_count());
+  for (const Plane& plane : mesh.planes) {
+    const double d = light_side(plane, light);
+    s.side.push_back(static_cast<signed char>(d > 0 ? 1 : d < 0 ? -1 : 0));
   }
   return s;
 }

@@ -72,8 +72,8 @@ INSTANTIATE_TEST_SUITE_P(Voxel, VoxelBuiltInScene,
                                            SceneCase{"tetra:3", 0.3, 1}, SceneCase{"room", 0.1, 3},
                                            SceneCase{"three-lights", 0.5, 1.5},
                                            SceneCase{"table", 0.4, 4}),
-                         [](const ::testing::TestParamInfo<SceneCase>& info) {
-                           std::string name = info.param.scene;
+                         [](const ::testing::TestParamInfo<SceneCase>& param_info) {
+                           std::string name = param_info.param.scene;
                            for (char& c : name) {
                              if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
                            }
