@@ -203,6 +203,25 @@ std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow
   return {skipped ? &narrow[skipped - 1] : nullptr, narrow.subspan(skipped)};
 }
 
+void AngularTable::link_sheet_neighbours(const Scene& scene, const std::vector<FarSheets>& sheets) {
+  // Hidden ids run over objects and their occluding faces in order, as place_hidden_faces
+  // assigns them.
+  neighbour_start_.assign(1, 0);
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    const Mesh& mesh = scene.objects[o].mesh;
+    for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
+      if (!sheets[o].occludes(f)) continue;
+      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
+        const std::int64_t next = sheet_neighbour(mesh, sheets[o], f, mesh.corner_edge[c]);
+        if (next >= 0) {
+          neighbour_faces_.push_back(scene.objects[o].first_face + std::uint32_t(next));
+        }
+      }
+      neighbour_start_.push_back(std::uint32_t(neighbour_faces_.size()));
+    }
+  }
+}
+
 int ThetaQuantization::entry(int k) const {
   if (full_turn) return ((k % resolution) + resolution) % resolution;
   return k >= 0 && k < resolution ? k : -1;
@@ -226,6 +245,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   for (std::size_t o = 0; o < objects.size(); ++o) {
     place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], table.hidden_);
   }
+  table.link_sheet_neighbours(scene, sheets);
   tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
     find_loops(scene.objects[o].mesh, sheets[o], frame, objects[o]);
   });

@@ -86,6 +86,15 @@ class AngularTable {
   /// largest end before phi (nullptr if none).
   std::pair<const AngularPair*, std::span<const AngularPair>> narrow_from(int k, double phi) const;
   const HiddenFace& hidden(std::uint32_t i) const { return hidden_[i]; }
+  /// Occluding face \p i's far sheet joins the sheet of global face \p face across an edge
+  /// they share. Such a neighbour never shadows the face's lit side: both face the light on
+  /// the same side of the surface, so across a convex edge the ray to the light meets only
+  /// the neighbour's plane beyond the edge, and across a concave one it never meets it.
+  bool sheet_neighbours(std::uint32_t i, std::uint32_t face) const {
+    const auto* first = neighbour_faces_.data() + neighbour_start_[i];
+    const auto* last = neighbour_faces_.data() + neighbour_start_[i + 1];
+    return std::find(first, last, face) != last;
+  }
   std::size_t pair_count() const { return pairs_.size(); }
   /// The ridge edges and RE loops the table was built from.
   const RidgeEdgeStats& loop_stats() const { return loop_stats_; }
@@ -94,11 +103,13 @@ class AngularTable {
   std::size_t memory_bytes() const {
     return pairs_.capacity() * sizeof(AngularPair) +
            (start_.capacity() + wide_.capacity()) * sizeof(std::uint32_t) +
-           hidden_.capacity() * sizeof(HiddenFace);
+           hidden_.capacity() * sizeof(HiddenFace) +
+           (neighbour_start_.capacity() + neighbour_faces_.capacity()) * sizeof(std::uint32_t);
   }
 
  private:
   void fill_entries(std::span<const std::vector<EntryPair>> lists);
+  void link_sheet_neighbours(const Scene& scene, const std::vector<FarSheets>& sheets);
   struct SortScratch {
     std::vector<AngularPair> pairs;  // the entry's kept pairs in order
   };
@@ -111,6 +122,8 @@ class AngularTable {
   std::vector<std::uint32_t> wide_;   ///< per entry: its first wide_[k] pairs are wide
   std::vector<AngularPair> pairs_;
   std::vector<HiddenFace> hidden_;
+  std::vector<std::uint32_t> neighbour_start_;  ///< per hidden face, into neighbour_faces_
+  std::vector<std::uint32_t> neighbour_faces_;  ///< global ids of sheet neighbours
   std::size_t saturated_ = 0;
   RidgeEdgeStats loop_stats_;
 };
