@@ -19,12 +19,11 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
   const auto shadows = [&](const AngularPair& pair) {
     // Sec. 5: the pair is one hidden face's cut, so its depth is the face's plane.
     const HiddenFace& h = table.hidden(pair.hidden);
-    // A planar face never shadows itself, nor a face its far sheet joins smoothly; a pair
-    // sampled at the entry's centre theta reaches up to half an entry past its face, so
-    // on a curved thin surface it would otherwise shadow the neighbours' lit side.
-    if (h.face == query.face || table.sheet_neighbours(pair.hidden, query.face)) return false;
+    if (h.face == query.face) return false;  // a planar face never shadows itself
     const double change = run.crossing(h.plane, query.column);
-    if (h.behind(query.local, query.depth_tolerance)) {
+    if (h.behind(query.local, query.depth_tolerance) &&
+        table.reaches_front_of(pair.hidden, query.face_plane, query.face_light_side,
+                               query.depth_tolerance)) {
       const double end = run.phi_crossing(up ? pair.phi_end : pair.phi_begin, query.column);
       next_x = std::min(end, change);
       return true;

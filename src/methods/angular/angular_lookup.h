@@ -19,6 +19,8 @@ struct LookupQuery {
   double phi = 0;              ///< eq. 3, as AngularPoint keeps it
   Vec3 local;                  ///< light-frame coordinates
   std::uint32_t face = 0;      ///< its face: a planar face never shadows itself
+  FrameAffine face_plane;      ///< its face's plane, light frame
+  double face_light_side = 1;  ///< sign of face_plane at the light
   double column = 0;           ///< its pixel column on the scan line
   bool phi_increasing = true;  ///< phi grows with the column along this run
   double depth_tolerance = 0;  ///< distance from a hidden face's plane still counted on it

@@ -66,6 +66,8 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
       continue;
     }
     const ScanLineRun run(*frame_, cam, plane, row);
+    const FrameAffine face_plane = frame_->plane(plane);
+    const double face_light_side = light_side(plane, light_) > 0 ? 1 : -1;
     int k = -2;  // the entry of the previous run, unknown at the start of the stretch
     while (x < face_end) {
       // Sec. 7, step 2: query the first pixel of the run.
@@ -75,6 +77,8 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
       query.entry = quant.entry(k);
       query.phi = frame_->phi_local(query.local);
       query.face = face;
+      query.face_plane = face_plane;
+      query.face_light_side = face_light_side;
       query.column = x;
       query.phi_increasing = run.phi_increasing(x);
       query.depth_tolerance = depth_tolerance_;

@@ -203,21 +203,19 @@ std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow
   return {skipped ? &narrow[skipped - 1] : nullptr, narrow.subspan(skipped)};
 }
 
-void AngularTable::link_sheet_neighbours(const Scene& scene, const std::vector<FarSheets>& sheets) {
+void AngularTable::place_corners(const Scene& scene, const LightFrame& frame,
+                                 const std::vector<FarSheets>& sheets) {
   // Hidden ids run over objects and their occluding faces in order, as place_hidden_faces
   // assigns them.
-  neighbour_start_.assign(1, 0);
+  corner_start_.assign(1, 0);
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const Mesh& mesh = scene.objects[o].mesh;
     for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
       if (!sheets[o].occludes(f)) continue;
-      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
-        const std::int64_t next = sheet_neighbour(mesh, sheets[o], f, mesh.corner_edge[c]);
-        if (next >= 0) {
-          neighbour_faces_.push_back(scene.objects[o].first_face + std::uint32_t(next));
-        }
+      for (std::uint32_t k = 0; k < mesh.face_size(f); ++k) {
+        corners_.push_back(frame.local(mesh.vertices[mesh.face_vertex(f, k)]));
       }
-      neighbour_start_.push_back(std::uint32_t(neighbour_faces_.size()));
+      corner_start_.push_back(std::uint32_t(corners_.size()));
     }
   }
 }
@@ -245,7 +243,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   for (std::size_t o = 0; o < objects.size(); ++o) {
     place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], table.hidden_);
   }
-  table.link_sheet_neighbours(scene, sheets);
+  table.place_corners(scene, frame, sheets);
   tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
     find_loops(scene.objects[o].mesh, sheets[o], frame, objects[o]);
   });

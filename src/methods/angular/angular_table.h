@@ -86,14 +86,18 @@ class AngularTable {
   /// largest end before phi (nullptr if none).
   std::pair<const AngularPair*, std::span<const AngularPair>> narrow_from(int k, double phi) const;
   const HiddenFace& hidden(std::uint32_t i) const { return hidden_[i]; }
-  /// Occluding face \p i's far sheet joins the sheet of global face \p face across an edge
-  /// they share. Such a neighbour never shadows the face's lit side: both face the light on
-  /// the same side of the surface, so across a convex edge the ray to the light meets only
-  /// the neighbour's plane beyond the edge, and across a concave one it never meets it.
-  bool sheet_neighbours(std::uint32_t i, std::uint32_t face) const {
-    const auto* first = neighbour_faces_.data() + neighbour_start_[i];
-    const auto* last = neighbour_faces_.data() + neighbour_start_[i + 1];
-    return std::find(first, last, face) != last;
+  /// Occluding face \p i has a corner strictly on the light's side of \p receiver (a
+  /// receiving face's plane, \p light_side its sign at the light), by more than
+  /// \p tolerance. The segment from a point on a face's lit side to the light lies on that
+  /// side of the face's plane, so a face without such a corner cannot shadow it: among
+  /// others every neighbour across a convex edge, where a pair's half-entry reach past its
+  /// face (it is cut at the entry's centre theta) would otherwise fall.
+  bool reaches_front_of(std::uint32_t i, const FrameAffine& receiver, double light_side,
+                        double tolerance) const {
+    for (std::uint32_t c = corner_start_[i]; c < corner_start_[i + 1]; ++c) {
+      if (receiver.at(corners_[c]) * light_side > tolerance) return true;
+    }
+    return false;
   }
   std::size_t pair_count() const { return pairs_.size(); }
   /// The ridge edges and RE loops the table was built from.
@@ -104,12 +108,13 @@ class AngularTable {
     return pairs_.capacity() * sizeof(AngularPair) +
            (start_.capacity() + wide_.capacity()) * sizeof(std::uint32_t) +
            hidden_.capacity() * sizeof(HiddenFace) +
-           (neighbour_start_.capacity() + neighbour_faces_.capacity()) * sizeof(std::uint32_t);
+           corner_start_.capacity() * sizeof(std::uint32_t) + corners_.capacity() * sizeof(Vec3);
   }
 
  private:
   void fill_entries(std::span<const std::vector<EntryPair>> lists);
-  void link_sheet_neighbours(const Scene& scene, const std::vector<FarSheets>& sheets);
+  void place_corners(const Scene& scene, const LightFrame& frame,
+                     const std::vector<FarSheets>& sheets);
   struct SortScratch {
     std::vector<AngularPair> pairs;  // the entry's kept pairs in order
   };
@@ -122,8 +127,8 @@ class AngularTable {
   std::vector<std::uint32_t> wide_;   ///< per entry: its first wide_[k] pairs are wide
   std::vector<AngularPair> pairs_;
   std::vector<HiddenFace> hidden_;
-  std::vector<std::uint32_t> neighbour_start_;  ///< per hidden face, into neighbour_faces_
-  std::vector<std::uint32_t> neighbour_faces_;  ///< global ids of sheet neighbours
+  std::vector<std::uint32_t> corner_start_;  ///< per hidden face, into corners_
+  std::vector<Vec3> corners_;                ///< hidden faces' corners, light frame
   std::size_t saturated_ = 0;
   RidgeEdgeStats loop_stats_;
 };
