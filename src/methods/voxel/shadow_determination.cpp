@@ -117,7 +117,7 @@ ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatc
   stats.entries = nearest.entry_count();
   stats.blocker_records = lists ? lists->record_count() : 0;
   stats.peak_bytes = voxels.size() * (sizeof(Vec3) + sizeof(std::uint64_t) + sizeof(float) + 2) +
-                     (lists ? lists->memory_bytes() : 0);
+                     nearest.memory_bytes() + (lists ? lists->memory_bytes() : 0);
   for (std::size_t i = 0; i < voxels.size(); ++i) {
     stats.uncertain += uncertain[i];
     stats.shadowed += states[i] == VoxelState::shadowed;

@@ -43,8 +43,14 @@ SurfaceVoxels SurfaceVoxels::collect(const std::vector<Subpatch>& leaves, const 
   tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t l) {
     add_samples(leaves[l], std::uint32_t(l), grid, keys, adjacency, parts.local());
   });
+  std::size_t total = 0;
+  for (const auto& part : parts) total += part.size();
   std::vector<Sample> samples;
-  for (auto& part : parts) samples.insert(samples.end(), part.begin(), part.end());
+  samples.reserve(total);
+  for (auto& part : parts) {
+    samples.insert(samples.end(), part.begin(), part.end());
+    std::vector<Sample>().swap(part);  // the peak is one copy of the samples, not two
+  }
   tbb::parallel_sort(samples.begin(), samples.end());
   SurfaceVoxels out;
   for (const auto& [key, sample] : samples) {
