@@ -8,6 +8,8 @@
 #include <cmath>
 #include <limits>
 
+#include "bucket_sort.h"
+
 namespace shadowkit::voxel {
 namespace {
 
@@ -155,27 +157,15 @@ BlockingSubpatches::BlockingSubpatches(const LightProjection& projection,
     add_leaf_entries(projection, leaves[l], add);
   };
   rectangles_ = rectangles_of(leaves.size(), for_each_entry);
-  // Counting sort by entry: count, prefix sums, fill; then each short list by distance.
-  first_.assign(rectangles_.size() + 1, 0);
-  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t l) {
-    for_each_entry(l, [&](std::uint64_t entry) {
-      std::atomic_ref<std::uint32_t>(first_[*rectangles_.index(entry) + 1])
-          .fetch_add(1, std::memory_order_relaxed);
-    });
-  });
-  for (std::size_t e = 1; e < first_.size(); ++e) first_[e] += first_[e - 1];
-  records_.resize(first_.back());
-  std::vector<std::uint32_t> next(first_.begin(), first_.end() - 1);
-  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t l) {
-    for_each_entry(l, [&](std::uint64_t entry) {
-      const std::uint32_t slot = std::atomic_ref<std::uint32_t>(next[*rectangles_.index(entry)])
-                                     .fetch_add(1, std::memory_order_relaxed);
-      records_[slot] = {distances[l], std::uint32_t(l)};
-    });
-  });
-  tbb::parallel_for(std::size_t(0), rectangles_.size(), [&](std::size_t e) {
-    std::sort(records_.begin() + first_[e], records_.begin() + first_[e + 1]);
-  });
+  // Per entry, nearest first.
+  bucket_sort<Record>(
+      rectangles_.size(), leaves.size(),
+      [&](std::size_t l, auto&& emit) {
+        for_each_entry(l, [&](std::uint64_t entry) {
+          emit(*rectangles_.index(entry), Record{distances[l], std::uint32_t(l)});
+        });
+      },
+      first_, records_);
 }
 
 std::span<const BlockingSubpatches::Record> BlockingSubpatches::list(std::uint64_t entry) const {
