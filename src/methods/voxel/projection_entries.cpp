@@ -119,11 +119,13 @@ std::optional<std::size_t> EntryRectangles::index(std::uint64_t entry) const {
   return r.first + (y - r.y0) * (r.x1 - r.x0 + 1) + (x - r.x0);
 }
 
-NearestVoxels::NearestVoxels(const LightProjection& projection, const std::vector<Vec3>& centres,
+NearestVoxels::NearestVoxels(const LightProjection& projection,
+                             const std::vector<GridPoint>& centres,
                              const std::vector<float>& distances, double footprint) {
   const auto for_each_entry = [&](std::size_t i, auto&& add) {
-    const PlanePoint q = projection.project(centres[i]);
-    const double radius = std::min(projection.entry_width(centres[i]) * footprint, kMaxFootprint);
+    const Vec3 centre = centres[i].vec();
+    const PlanePoint q = projection.project(centre);
+    const double radius = std::min(projection.entry_width(centre) * footprint, kMaxFootprint);
     add_rectangle(projection, q.face, q.x - radius, q.x + radius, q.y - radius, q.y + radius, add);
   };
   rectangles_ = rectangles_of(centres.size(), for_each_entry);

@@ -46,7 +46,7 @@ class EntryRectangles {
 class NearestVoxels {
  public:
   /// \p centres and \p distances: one per voxel (grid units).
-  NearestVoxels(const LightProjection& projection, const std::vector<Vec3>& centres,
+  NearestVoxels(const LightProjection& projection, const std::vector<GridPoint>& centres,
                 const std::vector<float>& distances, double footprint);
   std::optional<float> nearest(std::uint64_t entry) const;
   std::size_t entry_count() const { return entry_count_; }

@@ -84,15 +84,16 @@ TEST(BlockingSubpatches, ListsHoldTheirLeavesNearestFirst) {
 TEST(NearestVoxels, IsTheSmallestDistanceOfTheVoxelsProjectedThere) {
   const VoxelGrid grid = grid_of(32);
   const LightProjection projection(Light::point({-10, 40, 5}), grid, 1.0);
-  std::vector<Vec3> centres;
+  std::vector<GridPoint> centres;
   std::vector<float> distances;
   std::map<std::uint64_t, float> brute;
   for (int x = 0; x < 32; x += 3) {
     for (int y = 0; y < 32; y += 5) {
       for (int z = 0; z < 32; z += 2) {
-        centres.push_back(VoxelGrid::center({x, y, z}));
-        distances.push_back(float(projection.distance(centres.back())));
-        const auto [it, fresh] = brute.emplace(projection.entry(centres.back()), distances.back());
+        centres.push_back(GridPoint::of(VoxelGrid::center({x, y, z})));
+        distances.push_back(float(projection.distance(centres.back().vec())));
+        const auto [it, fresh] =
+            brute.emplace(projection.entry(centres.back().vec()), distances.back());
         if (!fresh) it->second = std::min(it->second, distances.back());
       }
     }
