@@ -71,6 +71,11 @@ std::uint64_t LightProjection::entry(const PlanePoint& q) {
   return std::uint64_t(q.face) << (2 * kEntryBits) | index(q.x) << kEntryBits | index(q.y);
 }
 
+LightProjection::Cell LightProjection::cell(std::uint64_t entry) {
+  constexpr std::uint64_t mask = (std::uint64_t(1) << kEntryBits) - 1;
+  return {int(entry >> (2 * kEntryBits)), (entry >> kEntryBits) & mask, entry & mask};
+}
+
 double LightProjection::entry_width(Vec3 p) const {
   if (!point_) return length(right_);
   const Vec3 w = p - light_;

@@ -30,6 +30,12 @@ class LightProjection {
   std::optional<PlanePoint> project_on(int face, Vec3 p) const;
   /// The entry holding \p q, as one key.
   static std::uint64_t entry(const PlanePoint& q);
+  /// \brief An entry key's face and integer cell (the inverse of entry()).
+  struct Cell {
+    int face;
+    std::uint64_t x, y;
+  };
+  static Cell cell(std::uint64_t entry);
   std::uint64_t entry(Vec3 p) const { return entry(project(p)); }
   /// Entries per voxel width at \p p, across the beam.
   double entry_width(Vec3 p) const;

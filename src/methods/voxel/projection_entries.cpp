@@ -2,12 +2,13 @@
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
-#include <numeric>
+
+#include "bucket_sort.h"
 
 namespace shadowkit::voxel {
 namespace {
@@ -18,9 +19,16 @@ constexpr double kFootprintSlack = 1e-3;
 // of a point light reach it, and they would flood the plane.
 constexpr double kMaxFootprint = 16;
 
-// Calls \p add with every entry of \p face that [x0, x1] x [y0, y1] overlaps.
+// Calls \p add with every entry of \p face that [x0, x1] x [y0, y1] overlaps. A cube face
+// of a point light is only asked about entries 0..R: the rectangle is clipped to them.
 template <typename Add>
-void add_rectangle(int face, double x0, double x1, double y0, double y1, Add&& add) {
+void add_rectangle(const LightProjection& projection, int face, double x0, double x1, double y0,
+                   double y1, Add&& add) {
+  if (projection.point_light()) {
+    const double last = double(projection.resolution());
+    x0 = std::max(x0, 0.0), y0 = std::max(y0, 0.0);
+    x1 = std::min(x1, last), y1 = std::min(y1, last);
+  }
   for (double y = std::floor(y0); y <= std::floor(y1); ++y) {
     for (double x = std::floor(x0); x <= std::floor(x1); ++x) {
       add(LightProjection::entry(PlanePoint{face, x + 0.5, y + 0.5}));
@@ -28,10 +36,11 @@ void add_rectangle(int face, double x0, double x1, double y0, double y1, Add&& a
   }
 }
 
-// Adds \p leaf to every entry of \p face its projected corners' box overlaps; a corner
-// behind the face's plane (a subpatch within a voxel of the light) leaves the face out.
-void add_footprint(const LightProjection& projection, const Subpatch& leaf, std::uint32_t id,
-                   int face, float distance, std::vector<BlockingSubpatches::Record>& out) {
+// Calls \p add with every entry of \p face that \p leaf's projected corners' box overlaps;
+// a corner behind the face's plane (a subpatch within a voxel of the light) leaves the
+// face out.
+template <typename Add>
+void add_footprint(const LightProjection& projection, const Subpatch& leaf, int face, Add&& add) {
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   for (const GridPoint& c : leaf.corner) {
     const auto q = projection.project_on(face, c.vec());
@@ -39,71 +48,132 @@ void add_footprint(const LightProjection& projection, const Subpatch& leaf, std:
     x0 = std::min(x0, q->x), x1 = std::max(x1, q->x);
     y0 = std::min(y0, q->y), y1 = std::max(y1, q->y);
   }
-  add_rectangle(face, x0 - kFootprintSlack, x1 + kFootprintSlack, y0 - kFootprintSlack,
-                y1 + kFootprintSlack, [&](std::uint64_t entry) {
-                  out.push_back({entry, distance, id});
-                });
+  add_rectangle(projection, face, x0 - kFootprintSlack, x1 + kFootprintSlack, y0 - kFootprintSlack,
+                y1 + kFootprintSlack, add);
+}
+
+// Every entry \p leaf is listed in: its footprint on the face of each of its corners.
+template <typename Add>
+void add_leaf_entries(const LightProjection& projection, const Subpatch& leaf, Add&& add) {
+  int faces[4], face_count = 0;
+  for (const GridPoint& c : leaf.corner) {
+    const int face = projection.project(c.vec()).face;
+    if (std::find(faces, faces + face_count, face) == faces + face_count)
+      faces[face_count++] = face;
+  }
+  for (int f = 0; f < face_count; ++f) add_footprint(projection, leaf, faces[f], add);
+}
+
+// The rectangles of the entries that \p for_each_entry(i, add) gives for items 0..n-1.
+template <typename ForEachEntry>
+EntryRectangles rectangles_of(std::size_t n, const ForEachEntry& for_each_entry) {
+  tbb::enumerable_thread_specific<EntryRectangles> parts;
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+    EntryRectangles& part = parts.local();
+    for_each_entry(i, [&](std::uint64_t entry) { part.include(entry); });
+  });
+  EntryRectangles all;
+  for (const EntryRectangles& part : parts) all.include(part);
+  all.finish();
+  return all;
+}
+
+void atomic_min(float& slot, float value) {
+  std::atomic_ref<float> ref(slot);
+  float current = ref.load(std::memory_order_relaxed);
+  while (value < current && !ref.compare_exchange_weak(current, value, std::memory_order_relaxed)) {
+  }
 }
 
 }  // namespace
 
-NearestVoxels::NearestVoxels(const LightProjection& projection, const std::vector<Vec3>& centres,
-                             const std::vector<float>& distances, double footprint) {
-  using Pair = std::pair<std::uint64_t, float>;
-  tbb::enumerable_thread_specific<std::vector<Pair>> parts;
-  tbb::parallel_for(std::size_t(0), centres.size(), [&](std::size_t i) {
-    const PlanePoint q = projection.project(centres[i]);
-    const double radius = std::min(projection.entry_width(centres[i]) * footprint, kMaxFootprint);
-    auto& out = parts.local();
-    add_rectangle(q.face, q.x - radius, q.x + radius, q.y - radius, q.y + radius,
-                  [&](std::uint64_t entry) {
-                    out.push_back({entry, distances[i]});
-                  });
-  });
-  std::vector<Pair> pairs;
-  for (auto& part : parts) pairs.insert(pairs.end(), part.begin(), part.end());
-  tbb::parallel_sort(pairs.begin(), pairs.end());
-  for (const auto& [entry, distance] : pairs) {
-    if (!entries_.empty() && entries_.back() == entry) continue;  // the first is the nearest
-    entries_.push_back(entry);
-    nearest_.push_back(distance);
+void EntryRectangles::include(std::uint64_t entry) {
+  const auto [face, x, y] = LightProjection::cell(entry);
+  Rectangle& r = faces_[std::size_t(std::clamp(face, 0, kFaces - 1))];
+  r.x0 = std::min(r.x0, x), r.x1 = std::max(r.x1, x);
+  r.y0 = std::min(r.y0, y), r.y1 = std::max(r.y1, y);
+}
+
+void EntryRectangles::include(const EntryRectangles& other) {
+  for (int f = 0; f < kFaces; ++f) {
+    Rectangle& r = faces_[f];
+    const Rectangle& o = other.faces_[f];
+    r.x0 = std::min(r.x0, o.x0), r.x1 = std::max(r.x1, o.x1);
+    r.y0 = std::min(r.y0, o.y0), r.y1 = std::max(r.y1, o.y1);
   }
 }
 
+void EntryRectangles::finish() {
+  size_ = 0;
+  for (Rectangle& r : faces_) {
+    r.first = size_;
+    if (!r.empty()) size_ += (r.x1 - r.x0 + 1) * (r.y1 - r.y0 + 1);
+  }
+}
+
+std::optional<std::size_t> EntryRectangles::index(std::uint64_t entry) const {
+  const auto [face, x, y] = LightProjection::cell(entry);
+  if (face < 0 || face >= kFaces) return std::nullopt;
+  const Rectangle& r = faces_[std::size_t(face)];
+  if (r.empty() || x < r.x0 || x > r.x1 || y < r.y0 || y > r.y1) return std::nullopt;
+  return r.first + (y - r.y0) * (r.x1 - r.x0 + 1) + (x - r.x0);
+}
+
+NearestVoxels::NearestVoxels(const LightProjection& projection,
+                             const std::vector<GridPoint>& centres,
+                             const std::vector<float>& distances, double footprint) {
+  const auto for_each_entry = [&](std::size_t i, auto&& add) {
+    const Vec3 centre = centres[i].vec();
+    const PlanePoint q = projection.project(centre);
+    const double radius = std::min(projection.entry_width(centre) * footprint, kMaxFootprint);
+    add_rectangle(projection, q.face, q.x - radius, q.x + radius, q.y - radius, q.y + radius, add);
+  };
+  rectangles_ = rectangles_of(centres.size(), for_each_entry);
+  nearest_.assign(rectangles_.size(), std::numeric_limits<float>::infinity());
+  tbb::parallel_for(std::size_t(0), centres.size(), [&](std::size_t i) {
+    for_each_entry(i, [&](std::uint64_t entry) {
+      atomic_min(nearest_[*rectangles_.index(entry)], distances[i]);
+    });
+  });
+  entry_count_ = std::size_t(
+      std::count_if(nearest_.begin(), nearest_.end(), [](float d) { return std::isfinite(d); }));
+}
+
 std::optional<float> NearestVoxels::nearest(std::uint64_t entry) const {
-  const auto it = std::lower_bound(entries_.begin(), entries_.end(), entry);
-  if (it == entries_.end() || *it != entry) return std::nullopt;
-  return nearest_[std::size_t(it - entries_.begin())];
+  const auto index = rectangles_.index(entry);
+  if (!index || !std::isfinite(nearest_[*index])) return std::nullopt;
+  return nearest_[*index];
 }
 
 BlockingSubpatches::BlockingSubpatches(const LightProjection& projection,
                                        const std::vector<Subpatch>& leaves) {
-  tbb::enumerable_thread_specific<std::vector<Record>> parts;
+  std::vector<float> distances(leaves.size());
   tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t l) {
-    const Subpatch& leaf = leaves[l];
-    auto& out = parts.local();
     float distance = std::numeric_limits<float>::max();
-    int faces[4], face_count = 0;
-    for (const GridPoint& c : leaf.corner) {
+    for (const GridPoint& c : leaves[l].corner) {
       distance = std::min(distance, float(projection.distance(c.vec())));
-      const int face = projection.project(c.vec()).face;
-      if (std::find(faces, faces + face_count, face) == faces + face_count)
-        faces[face_count++] = face;
     }
-    for (int f = 0; f < face_count; ++f) {
-      add_footprint(projection, leaf, std::uint32_t(l), faces[f], distance, out);
-    }
+    distances[l] = distance;
   });
-  for (auto& part : parts) records_.insert(records_.end(), part.begin(), part.end());
-  tbb::parallel_sort(records_.begin(), records_.end());
+  const auto for_each_entry = [&](std::size_t l, auto&& add) {
+    add_leaf_entries(projection, leaves[l], add);
+  };
+  rectangles_ = rectangles_of(leaves.size(), for_each_entry);
+  // Per entry, nearest first.
+  bucket_sort<Record>(
+      rectangles_.size(), leaves.size(),
+      [&](std::size_t l, auto&& emit) {
+        for_each_entry(l, [&](std::uint64_t entry) {
+          emit(*rectangles_.index(entry), Record{distances[l], std::uint32_t(l)});
+        });
+      },
+      first_, records_);
 }
 
 std::span<const BlockingSubpatches::Record> BlockingSubpatches::list(std::uint64_t entry) const {
-  const auto lo = std::lower_bound(records_.begin(), records_.end(), entry,
-                                   [](const Record& r, std::uint64_t e) { return r.entry < e; });
-  auto hi = lo;
-  while (hi != records_.end() && hi->entry == entry) ++hi;
-  return {lo, hi};
+  const auto index = rectangles_.index(entry);
+  if (!index) return {};
+  return {records_.data() + first_[*index], records_.data() + first_[*index + 1]};
 }
 
 }  // namespace shadowkit::voxel

@@ -87,14 +87,12 @@ ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatc
   const LightProjection projection(light, buffer.grid(),
                                    test == ShadowTest::offset ? kOffsetEntriesPerVoxel : 1.0);
   const VoxelKeys& keys = buffer.keys();
-  // Project the voxel centres once.
-  std::vector<Vec3> centres(voxels.size());
-  std::vector<std::uint64_t> entries(voxels.size());
+  // Project the voxel centres once (x.5 coordinates: exact as floats).
+  std::vector<GridPoint> centres(voxels.size());
   std::vector<float> distances(voxels.size());
   tbb::parallel_for(std::size_t(0), voxels.size(), [&](std::size_t i) {
-    centres[i] = VoxelGrid::center(keys.voxel(voxels.keys[i]));
-    entries[i] = projection.entry(centres[i]);
-    distances[i] = float(projection.distance(centres[i]));
+    centres[i] = GridPoint::of(VoxelGrid::center(keys.voxel(voxels.keys[i])));
+    distances[i] = float(projection.distance(centres[i].vec()));
   });
   const NearestVoxels nearest(projection, centres, distances, kNoHoles);
   std::optional<BlockingSubpatches> lists;
@@ -103,12 +101,13 @@ ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatc
   std::vector<VoxelState> states(voxels.size(), VoxelState::lit);
   std::vector<std::uint8_t> uncertain(voxels.size(), 0);
   tbb::parallel_for(std::size_t(0), voxels.size(), [&](std::size_t i) {
-    if (distances[i] <= *nearest.nearest(entries[i])) return;  // nearest: lit
+    if (distances[i] <= *nearest.nearest(projection.entry(centres[i].vec())))
+      return;  // nearest: lit
     uncertain[i] = 1;
     const std::uint32_t sample = facing_sample(projection, leaves, voxels, i);
     const bool shadowed =
         test == ShadowTest::offset
-            ? offset_test_shadowed(projection, nearest, leaves[sample / 4], centres[i])
+            ? offset_test_shadowed(projection, nearest, leaves[sample / 4], centres[i].vec())
             : topology_test_shadowed(projection, *lists, leaves, sample_point(leaves, sample));
     states[i] = shadowed ? VoxelState::shadowed : VoxelState::lit;
   });
@@ -116,8 +115,8 @@ ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatc
   ShadowStatistics stats;
   stats.entries = nearest.entry_count();
   stats.blocker_records = lists ? lists->record_count() : 0;
-  stats.peak_bytes = voxels.size() * (sizeof(Vec3) + sizeof(std::uint64_t) + sizeof(float) + 2) +
-                     (lists ? lists->memory_bytes() : 0);
+  stats.peak_bytes = voxels.size() * (sizeof(GridPoint) + sizeof(float) + 2) +
+                     nearest.memory_bytes() + (lists ? lists->memory_bytes() : 0);
   for (std::size_t i = 0; i < voxels.size(); ++i) {
     stats.uncertain += uncertain[i];
     stats.shadowed += states[i] == VoxelState::shadowed;

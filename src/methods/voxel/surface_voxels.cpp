@@ -1,10 +1,11 @@
 #include "surface_voxels.h"
 
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_sort.h>
 
+#include <algorithm>
 #include <utility>
+
+#include "bucket_sort.h"
 
 namespace shadowkit::voxel {
 
@@ -17,10 +18,11 @@ using Sample = std::pair<std::uint64_t, std::uint32_t>;
 // voxels of an axis-by-axis path from corner 0 to the others, so that the surface stays
 // N-connected there. Bridging voxels take corner 0's sample (it lies within a tiny
 // fraction of a voxel from them).
+template <typename Emit>
 void add_samples(const Subpatch& leaf, std::uint32_t id, const VoxelGrid& grid,
-                 const VoxelKeys& keys, int adjacency, std::vector<Sample>& out) {
+                 const VoxelKeys& keys, int adjacency, Emit&& emit) {
   const auto add = [&](const VoxelIndex& v, std::uint32_t sample) {
-    if (grid.contains(v)) out.push_back({keys.key(v), sample});
+    if (grid.contains(v)) emit(Sample{keys.key(v), sample});
   };
   const VoxelIndex first = voxel_floor(leaf.corner[0].vec());
   for (std::uint32_t k = 0; k < 4; ++k) {
@@ -39,14 +41,19 @@ void add_samples(const Subpatch& leaf, std::uint32_t id, const VoxelGrid& grid,
 
 SurfaceVoxels SurfaceVoxels::collect(const std::vector<Subpatch>& leaves, const VoxelGrid& grid,
                                      const VoxelKeys& keys, int adjacency) {
-  tbb::enumerable_thread_specific<std::vector<Sample>> parts;
-  tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t l) {
-    add_samples(leaves[l], std::uint32_t(l), grid, keys, adjacency, parts.local());
-  });
+  // In key order: grouped by brick, each brick's few samples sorted.
+  std::vector<std::uint32_t> first;
   std::vector<Sample> samples;
-  for (auto& part : parts) samples.insert(samples.end(), part.begin(), part.end());
-  tbb::parallel_sort(samples.begin(), samples.end());
+  bucket_sort<Sample>(
+      keys.brick_count(), leaves.size(),
+      [&](std::size_t l, auto&& emit) {
+        add_samples(leaves[l], std::uint32_t(l), grid, keys, adjacency,
+                    [&](const Sample& s) { emit(keys.brick_of(s.first), s); });
+      },
+      first, samples);
+  std::vector<std::uint32_t>().swap(first);
   SurfaceVoxels out;
+  out.samples.reserve(samples.size());
   for (const auto& [key, sample] : samples) {
     if (out.keys.empty() || out.keys.back() != key) {
       if (!out.keys.empty()) out.first_sample.push_back(std::uint32_t(out.samples.size()));

@@ -2,6 +2,7 @@
 // determination of a ~1,000-face Catmull-Clark control mesh at M = 256 and 512, the frame
 // buffer's memory at M = 1024, and a new view drawn from an existing frame buffer (§5.2).
 #include <benchmark/benchmark.h>
+#include <sys/resource.h>
 
 #include <cmath>
 
@@ -61,6 +62,14 @@ double counter_of(const ShadowMethod& method, const std::string& name) {
   return -1;
 }
 
+// The process's peak resident memory so far, MB: run one case alone
+// (--benchmark_filter) for the peak of that case, transient structures included.
+double peak_resident_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1e3;
+}
+
 VoxelMethod method_at(int resolution, const char* test) {
   return VoxelMethod(
       MethodOptions("voxel", {{"resolution", std::to_string(resolution)}, {"test", test}}));
@@ -78,6 +87,7 @@ void BM_VoxelizeAndShadows(benchmark::State& state, const char* test) {
   state.counters["subpatches"] = counter_of(method, "subpatches");
   state.counters["frame_buffer_MB"] = counter_of(method, "frame_buffer_bytes") / 1e6;
   state.counters["method_MB"] = double(method.memory_bytes()) / 1e6;
+  state.counters["peak_rss_MB"] = peak_resident_mb();
 }
 BENCHMARK_CAPTURE(BM_VoxelizeAndShadows, topology, "topology")
     ->Arg(256)
