@@ -119,20 +119,23 @@ std::optional<std::size_t> EntryRectangles::index(std::uint64_t entry) const {
   return r.first + (y - r.y0) * (r.x1 - r.x0 + 1) + (x - r.x0);
 }
 
-NearestVoxels::NearestVoxels(const LightProjection& projection,
-                             const std::vector<GridPoint>& centres,
-                             const std::vector<float>& distances, double footprint) {
-  const auto for_each_entry = [&](std::size_t i, auto&& add) {
-    const Vec3 centre = centres[i].vec();
+NearestVoxels::NearestVoxels(const LightProjection& projection, std::size_t parts,
+                             const VoxelCentres& centres, double footprint) {
+  const auto for_each_footprint = [&](Vec3 centre, auto&& add) {
     const PlanePoint q = projection.project(centre);
     const double radius = std::min(projection.entry_width(centre) * footprint, kMaxFootprint);
     add_rectangle(projection, q.face, q.x - radius, q.x + radius, q.y - radius, q.y + radius, add);
   };
-  rectangles_ = rectangles_of(centres.size(), for_each_entry);
+  rectangles_ = rectangles_of(parts, [&](std::size_t part, auto&& add) {
+    centres(part, [&](Vec3 centre) { for_each_footprint(centre, add); });
+  });
   nearest_.assign(rectangles_.size(), std::numeric_limits<float>::infinity());
-  tbb::parallel_for(std::size_t(0), centres.size(), [&](std::size_t i) {
-    for_each_entry(i, [&](std::uint64_t entry) {
-      atomic_min(nearest_[*rectangles_.index(entry)], distances[i]);
+  tbb::parallel_for(std::size_t(0), parts, [&](std::size_t part) {
+    centres(part, [&](Vec3 centre) {
+      const float distance = float(projection.distance(centre));
+      for_each_footprint(centre, [&](std::uint64_t entry) {
+        atomic_min(nearest_[*rectangles_.index(entry)], distance);
+      });
     });
   });
   entry_count_ = std::size_t(

@@ -5,6 +5,7 @@
 // densely per face (EntryRectangles), filled by counting, not by sorting records.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -45,9 +46,12 @@ class EntryRectangles {
 /// of §4; with 0, the paper's projection of voxels as points.
 class NearestVoxels {
  public:
-  /// \p centres and \p distances: one per voxel (grid units).
-  NearestVoxels(const LightProjection& projection, const std::vector<GridPoint>& centres,
-                const std::vector<float>& distances, double footprint);
+  /// Calls its argument with the centre (grid units) of every voxel of part \p part; a
+  /// voxel may come more than once. Parts run in parallel and are each visited twice.
+  using VoxelCentres =
+      std::function<void(std::size_t part, const std::function<void(Vec3 centre)>& centre)>;
+  NearestVoxels(const LightProjection& projection, std::size_t parts, const VoxelCentres& centres,
+                double footprint);
   std::optional<float> nearest(std::uint64_t entry) const;
   std::size_t entry_count() const { return entry_count_; }
   std::size_t memory_bytes() const { return nearest_.capacity() * sizeof(float); }

@@ -98,7 +98,9 @@ TEST(NearestVoxels, IsTheSmallestDistanceOfTheVoxelsProjectedThere) {
       }
     }
   }
-  const NearestVoxels points(projection, centres, distances, 0);
+  const NearestVoxels points(
+      projection, centres.size(),
+      [&](std::size_t i, const auto& centre) { centre(centres[i].vec()); }, 0);
   EXPECT_EQ(points.entry_count(), brute.size());
   for (const auto& [entry, nearest] : brute) EXPECT_EQ(points.nearest(entry), nearest);
   EXPECT_FALSE(points.nearest(LightProjection::entry(PlanePoint{5, 0.5, 0.5})));

@@ -12,33 +12,15 @@
 namespace shadowkit::voxel {
 namespace {
 
-// §4.1: the move off the surface, in voxels.
-const double kOffset = std::sqrt(2.0);
 // §4.2: hits nearer than this (voxels) to the sample are its own surface around it.
 constexpr double kSelfHit = 1e-3;
 // Half a voxel: the footprint of a voxel on the plane for "nearest the light is lit".
 constexpr double kNoHoles = 0.5;
+// §4.1 compares a point moved by sqrt(2) voxels with voxels' footprints: entries of half
+// a voxel keep a lit plane's own voxels out of the moved point's entry at grazing angles.
 constexpr double kOffsetEntriesPerVoxel = 2;
-
-// §4.1: move the voxel A (its centre) by sqrt(2) r along its subpatch's normal, to the light's side
-// (surfaces are two-sided: the side facing the camera away from the light is shadowed by contract
-// condition 1 at the mask, which plays the part of the paper's N . (L - A) <= 0), and
-// test the moved point A' against the nearest voxel of its entry. A' is projected along
-// the beam through A: its sideways move picks the entry, its move along the beam only
-// its distance.
-bool offset_test_shadowed(const LightProjection& projection, const NearestVoxels& nearest,
-                          const Subpatch& leaf, Vec3 a) {
-  const Vec3 to_light = projection.toward_light(a);
-  Vec3 n = leaf_normal(leaf);
-  const double facing = dot(n, to_light);
-  if (facing == 0) return true;  // the light in the subpatch's plane
-  if (facing < 0) n = -n;
-  const Vec3 move = n * kOffset;
-  const double along = dot(move, to_light);
-  const Vec3 sideways = a + move - to_light * along;
-  const auto blocker = nearest.nearest(projection.entry(sideways));
-  return blocker && *blocker < projection.distance(a) - along;
-}
+// §4.1: the move off the surface, in voxels.
+const double kOffset = std::sqrt(2.0);
 
 // §4.2: the ray from the sample to the light against the two triangles of every subpatch
 // listed, nearer than the sample, in the entry where that ray projects.
@@ -79,35 +61,62 @@ std::uint32_t facing_sample(const LightProjection& projection, const std::vector
 
 }  // namespace
 
+LightProjection projection_for(const Light& light, const VoxelGrid& grid, ShadowTest test) {
+  return LightProjection(light, grid, test == ShadowTest::offset ? kOffsetEntriesPerVoxel : 1.0);
+}
+
+NearestVoxels nearest_voxels(const LightProjection& projection, std::size_t parts,
+                             const NearestVoxels::VoxelCentres& centres) {
+  return NearestVoxels(projection, parts, centres, kNoHoles);
+}
+
+bool nearest_the_light(const LightProjection& projection, const NearestVoxels& nearest, Vec3 a) {
+  const auto blocker = nearest.nearest(projection.entry(a));
+  return !blocker || float(projection.distance(a)) <= *blocker;
+}
+
+// Surfaces are two-sided: the side facing the camera away from the light is shadowed by
+// contract condition 1 at the mask, which plays the part of the paper's N . (L - A) <= 0,
+// so the normal is turned to the light's side. A' is projected along the beam through A:
+// its sideways move picks the entry, its move along the beam only its distance.
+bool offset_test_shadowed(const LightProjection& projection, const NearestVoxels& nearest,
+                          Vec3 normal, Vec3 a) {
+  const Vec3 to_light = projection.toward_light(a);
+  const double facing = dot(normal, to_light);
+  if (facing == 0) return true;  // the light in the surface's plane
+  const Vec3 move = (facing < 0 ? -normal : normal) * kOffset;
+  const double along = dot(move, to_light);
+  const Vec3 sideways = a + move - to_light * along;
+  const auto blocker = nearest.nearest(projection.entry(sideways));
+  return blocker && *blocker < projection.distance(a) - along;
+}
+
 ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatch>& leaves,
                                    const SurfaceVoxels& voxels, ShadowTest test,
                                    CubicFrameBuffer& buffer) {
-  // §4.1 compares a point moved by sqrt(2) voxels with voxels' footprints: entries of half
-  // a voxel keep a lit plane's own voxels out of the moved point's entry at grazing angles.
-  const LightProjection projection(light, buffer.grid(),
-                                   test == ShadowTest::offset ? kOffsetEntriesPerVoxel : 1.0);
+  const LightProjection projection = projection_for(light, buffer.grid(), test);
   const VoxelKeys& keys = buffer.keys();
-  // Project the voxel centres once (x.5 coordinates: exact as floats).
+  // The voxel centres (x.5 coordinates: exact as floats).
   std::vector<GridPoint> centres(voxels.size());
-  std::vector<float> distances(voxels.size());
   tbb::parallel_for(std::size_t(0), voxels.size(), [&](std::size_t i) {
     centres[i] = GridPoint::of(VoxelGrid::center(keys.voxel(voxels.keys[i])));
-    distances[i] = float(projection.distance(centres[i].vec()));
   });
-  const NearestVoxels nearest(projection, centres, distances, kNoHoles);
+  const NearestVoxels nearest =
+      nearest_voxels(projection, voxels.size(),
+                     [&](std::size_t i, const auto& centre) { centre(centres[i].vec()); });
   std::optional<BlockingSubpatches> lists;
   if (test == ShadowTest::topology) lists.emplace(projection, leaves);
 
   std::vector<VoxelState> states(voxels.size(), VoxelState::lit);
   std::vector<std::uint8_t> uncertain(voxels.size(), 0);
   tbb::parallel_for(std::size_t(0), voxels.size(), [&](std::size_t i) {
-    if (distances[i] <= *nearest.nearest(projection.entry(centres[i].vec())))
-      return;  // nearest: lit
+    if (nearest_the_light(projection, nearest, centres[i].vec())) return;
     uncertain[i] = 1;
     const std::uint32_t sample = facing_sample(projection, leaves, voxels, i);
     const bool shadowed =
         test == ShadowTest::offset
-            ? offset_test_shadowed(projection, nearest, leaves[sample / 4], centres[i].vec())
+            ? offset_test_shadowed(projection, nearest, leaf_normal(leaves[sample / 4]),
+                                   centres[i].vec())
             : topology_test_shadowed(projection, *lists, leaves, sample_point(leaves, sample));
     states[i] = shadowed ? VoxelState::shadowed : VoxelState::lit;
   });
@@ -115,8 +124,8 @@ ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatc
   ShadowStatistics stats;
   stats.entries = nearest.entry_count();
   stats.blocker_records = lists ? lists->record_count() : 0;
-  stats.peak_bytes = voxels.size() * (sizeof(GridPoint) + sizeof(float) + 2) +
-                     nearest.memory_bytes() + (lists ? lists->memory_bytes() : 0);
+  stats.peak_bytes = voxels.size() * (sizeof(GridPoint) + 2) + nearest.memory_bytes() +
+                     (lists ? lists->memory_bytes() : 0);
   for (std::size_t i = 0; i < voxels.size(); ++i) {
     stats.uncertain += uncertain[i];
     stats.shadowed += states[i] == VoxelState::shadowed;

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "cubic_frame_buffer.h"
+#include "light_projection.h"
+#include "projection_entries.h"
 #include "shadowkit/scene/scene.h"
 #include "surface_voxels.h"
 
@@ -21,6 +23,23 @@ struct ShadowStatistics {
   std::size_t blocker_records = 0;  ///< topology test: (entry, subpatch) records
   std::size_t peak_bytes = 0;       ///< the largest transient structure
 };
+
+/// The projection plane of \p light that \p test decides on.
+LightProjection projection_for(const Light& light, const VoxelGrid& grid, ShadowTest test);
+
+/// The nearest-distance map of the voxels \p centres gives (see NearestVoxels), each
+/// covering the entries of its footprint so that a caster leaves no holes (§4).
+NearestVoxels nearest_voxels(const LightProjection& projection, std::size_t parts,
+                             const NearestVoxels::VoxelCentres& centres);
+
+/// Whether the voxel of centre \p a (grid units) is nearest the light in its entry: lit.
+bool nearest_the_light(const LightProjection& projection, const NearestVoxels& nearest, Vec3 a);
+
+/// §4.1's offset-based test of the voxel of centre \p a on a surface of normal \p normal:
+/// A' = A + sqrt(2) r n, n turned to the light, is shadowed when its entry holds a voxel
+/// nearer the light than A'. The light in the surface's plane shadows it.
+bool offset_test_shadowed(const LightProjection& projection, const NearestVoxels& nearest,
+                          Vec3 normal, Vec3 a);
 
 /// Sets every non-empty voxel of \p buffer lit or shadowed for \p light.
 ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatch>& leaves,

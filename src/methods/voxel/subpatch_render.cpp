@@ -70,6 +70,10 @@ SubpatchImage::SubpatchImage(const Scene& scene, const PatchSet& patches,
 }
 
 SubpatchImage make_subpatch_image(const Scene& scene, VoxelMethod& method, const Context& ctx) {
+  if (!method.keeps_frame_buffer()) {
+    throw InputError("option 'voxel.framebuffer'",
+                     "voxel-render needs the cubic frame buffer (1); 0 (5.1) is not rendered yet");
+  }
   method.prepare(scene, ctx);
   std::vector<std::vector<std::uint8_t>> shadowed;
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {

@@ -13,28 +13,12 @@ namespace {
 
 using Sample = std::pair<std::uint64_t, std::uint32_t>;
 
-// The corner voxels of \p leaf; where the recursion stopped on a leaf far below a voxel
-// whose corners are still not N-adjacent (it straddles a voxel edge or vertex), also the
-// voxels of an axis-by-axis path from corner 0 to the others, so that the surface stays
-// N-connected there. Bridging voxels take corner 0's sample (it lies within a tiny
-// fraction of a voxel from them).
 template <typename Emit>
 void add_samples(const Subpatch& leaf, std::uint32_t id, const VoxelGrid& grid,
                  const VoxelKeys& keys, int adjacency, Emit&& emit) {
-  const auto add = [&](const VoxelIndex& v, std::uint32_t sample) {
-    if (grid.contains(v)) emit(Sample{keys.key(v), sample});
-  };
-  const VoxelIndex first = voxel_floor(leaf.corner[0].vec());
-  for (std::uint32_t k = 0; k < 4; ++k) {
-    const VoxelIndex v = voxel_floor(leaf.corner[k].vec());
-    add(v, id * 4 + k);
-    if (adjacent(first, v, adjacency)) continue;
-    VoxelIndex step = first;
-    for (int a = 0; a < 2; ++a) {
-      step[a] = v[a];
-      add(step, id * 4);
-    }
-  }
+  for_each_leaf_voxel(leaf, grid, adjacency, [&](const VoxelIndex& v, std::uint32_t corner) {
+    emit(Sample{keys.key(v), id * 4 + corner});
+  });
 }
 
 }  // namespace

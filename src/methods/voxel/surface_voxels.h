@@ -24,6 +24,29 @@ struct SurfaceVoxels {
   std::size_t memory_bytes() const;
 };
 
+/// Calls \p emit(voxel, corner) with the voxels inside \p grid that stand for \p leaf: its
+/// corners' voxels; where the recursion stopped on a leaf far below a voxel whose corners
+/// are still not N-adjacent (it straddles a voxel edge or vertex), also the voxels of an
+/// axis-by-axis path from corner 0 to the others, so that the surface stays N-connected
+/// there. Bridging voxels take corner 0 (it lies within a tiny fraction of a voxel of them).
+template <typename Emit>
+void for_each_leaf_voxel(const Subpatch& leaf, const VoxelGrid& grid, int adjacency, Emit&& emit) {
+  const auto add = [&](const VoxelIndex& v, std::uint32_t corner) {
+    if (grid.contains(v)) emit(v, corner);
+  };
+  const VoxelIndex first = voxel_floor(leaf.corner[0].vec());
+  for (std::uint32_t k = 0; k < 4; ++k) {
+    const VoxelIndex v = voxel_floor(leaf.corner[k].vec());
+    add(v, k);
+    if (adjacent(first, v, adjacency)) continue;
+    VoxelIndex step = first;
+    for (int a = 0; a < 2; ++a) {
+      step[a] = v[a];
+      add(step, 0);
+    }
+  }
+}
+
 /// Position of sample \p sample (leaf * 4 + corner), grid units.
 inline Vec3 sample_point(const std::vector<Subpatch>& leaves, std::uint32_t sample) {
   return leaves[sample / 4].corner[sample % 4].vec();

@@ -46,28 +46,47 @@ bool bound_option(const MethodOptions& options) {
   return bound == "scene";
 }
 
+// §5.1 keeps no voxels and no subpatches: the topology test's lists are what it avoids.
+bool streamed_option(const MethodOptions& options, voxel::ShadowTest test) {
+  const double framebuffer = options.number("framebuffer", 1);
+  if (framebuffer != 0 && framebuffer != 1) bad_option("framebuffer", "expected 0 or 1", options);
+  if (framebuffer == 0 && test == voxel::ShadowTest::topology) {
+    bad_option("framebuffer",
+               "0 (Lai & Cheng 5.1) streams the voxels without keeping them or the subpatch "
+               "lists the topology test needs: set voxel.test=offset",
+               options);
+  }
+  return framebuffer == 0;
+}
+
 }  // namespace
 
 VoxelMethod::VoxelMethod(const MethodOptions& options) {
-  options.expect_only("voxel", {"resolution", "adjacency", "test", "bound"});
+  options.expect_only("voxel", {"resolution", "adjacency", "test", "bound", "framebuffer"});
   resolution_ = resolution_option(options);
   adjacency_ = adjacency_option(options);
   test_ = test_option(options);
   whole_scene_ = bound_option(options);
+  streamed_mode_ = streamed_option(options, test_);
 }
 
 void VoxelMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
-  const voxel::VoxelGrid grid =
-      voxel::make_grid(voxel::frame_bound(scene, whole_scene_), resolution_);
-  const voxel::PatchSet patches(scene);
-  leaves_ = voxel::voxelize(patches, grid, adjacency_);
-  const voxel::VoxelKeys keys(grid.dims);
-  voxels_ = voxel::SurfaceVoxels::collect(leaves_, grid, keys, adjacency_);
-  buffer_ = voxel::CubicFrameBuffer(grid, voxels_.keys);
+  grid_ = voxel::make_grid(voxel::frame_bound(scene, whole_scene_), resolution_);
+  patches_.emplace(scene);
+  if (streamed_mode_) return;
+  leaves_ = voxel::voxelize(*patches_, grid_, adjacency_);
+  const voxel::VoxelKeys keys(grid_.dims);
+  voxels_ = voxel::SurfaceVoxels::collect(leaves_, grid_, keys, adjacency_);
+  buffer_ = voxel::CubicFrameBuffer(grid_, voxels_.keys);
 }
 
 void VoxelMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
   light_ = scene.lights.at(light);
+  if (streamed_mode_) {
+    streamed_.reset();  // the previous light's plane goes before the next one is built
+    streamed_.emplace(*patches_, grid_, adjacency_, light_);
+    return;
+  }
   stats_ = voxel::determine_shadows(light_, leaves_, voxels_, test_, buffer_);
 }
 
@@ -97,19 +116,27 @@ void VoxelMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces
                         const Context& /*ctx*/) {
   const Vec3 eye = scene.camera.position;
   shade_each_pixel(surfaces, mask, [&](std::size_t i) {
-    if (!faces_light(scene.face_plane(surfaces.face[i]), eye, light_)) return false;
+    const Plane& plane = scene.face_plane(surfaces.face[i]);
+    if (!faces_light(plane, eye, light_)) return false;
+    // §5.1: the visible face's own normal stands for the voxel's surface.
+    if (streamed_) return !streamed_->shadowed(grid_.to_grid(surfaces.point(i)), plane.normal);
     // A point no voxel is near (outside the bound) has nothing to shadow it: lit.
     return state_at(surfaces.point(i)) != voxel::VoxelState::shadowed;
   });
 }
 
 std::size_t VoxelMethod::memory_bytes() const {
+  if (streamed_) return streamed_->memory_bytes();
   return buffer_.memory_bytes() + voxels_.memory_bytes() +
          leaves_.capacity() * sizeof(voxel::Subpatch) + stats_.peak_bytes;
 }
 
 MethodCounters VoxelMethod::counters() const {
-  return {{"resolution", double(buffer_.grid().resolution())},
+  if (streamed_) {
+    return {{"resolution", double(grid_.resolution())},
+            {"entries", double(streamed_->entry_count())}};
+  }
+  return {{"resolution", double(grid_.resolution())},
           {"subpatches", double(leaves_.size())},
           {"voxels", double(voxels_.size())},
           {"frame_buffer_bytes", double(buffer_.memory_bytes())},

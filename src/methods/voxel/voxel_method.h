@@ -5,12 +5,14 @@
 // perpendicular to the light and decided lit or shadowed (§4); a visible point takes the
 // state of its voxel.
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "cubic_frame_buffer.h"
 #include "patch_set.h"
 #include "shadow_determination.h"
 #include "shadowkit/methods/shadow_method.h"
+#include "streamed_shadows.h"
 #include "surface_voxels.h"
 #include "voxelizer.h"
 
@@ -23,6 +25,9 @@ namespace shadowkit {
 /// - `test` (default topology): `offset` (§4.1) or `topology` (§4.2).
 /// - `bound` (default view): `view` (what can be seen or shadow what is seen,
 ///   voxel::frame_bound) or `scene` (the scene's box).
+/// - `framebuffer` (default 1): 1 keeps the voxels' states in the cubic frame buffer (§5.2);
+///   0 streams the voxels onto the projection plane and decides each visible point on the
+///   fly (§5.1, voxel::StreamedShadows), offset test only.
 class VoxelMethod final : public ShadowMethod {
  public:
   explicit VoxelMethod(const MethodOptions& options);
@@ -34,6 +39,9 @@ class VoxelMethod final : public ShadowMethod {
   std::size_t memory_bytes() const override;
   MethodCounters counters() const override;
 
+  /// Whether the states are kept in the frame buffer (§5.2), which the accessors below
+  /// describe; with `framebuffer=0` (§5.1) they are empty.
+  bool keeps_frame_buffer() const { return !streamed_mode_; }
   const voxel::CubicFrameBuffer& frame_buffer() const { return buffer_; }
   int adjacency() const { return adjacency_; }
   const std::vector<voxel::Subpatch>& subpatches() const { return leaves_; }
@@ -46,6 +54,11 @@ class VoxelMethod final : public ShadowMethod {
   int adjacency_ = 26;
   voxel::ShadowTest test_ = voxel::ShadowTest::topology;
   bool whole_scene_ = false;
+  bool streamed_mode_ = false;
+
+  voxel::VoxelGrid grid_;
+  std::optional<voxel::PatchSet> patches_;  ///< §5.1: voxelized again per light
+  std::optional<voxel::StreamedShadows> streamed_;
 
   std::vector<voxel::Subpatch> leaves_;
   voxel::SurfaceVoxels voxels_;
