@@ -19,20 +19,27 @@ constexpr double kFootprintSlack = 1e-3;
 // of a point light reach it, and they would flood the plane.
 constexpr double kMaxFootprint = 16;
 
-// Calls \p add with every entry of \p face that [x0, x1] x [y0, y1] overlaps. A cube face
+// Calls \p add with every entry of \p face that [x0, x1] x [y0, y1] overlaps, or with
+// \p corners_only its first and last entry only (enough for EntryRectangles). A cube face
 // of a point light is only asked about entries 0..R: the rectangle is clipped to them.
 template <typename Add>
 void add_rectangle(const LightProjection& projection, int face, double x0, double x1, double y0,
-                   double y1, Add&& add) {
+                   double y1, Add&& add, bool corners_only = false) {
   if (projection.point_light()) {
     const double last = double(projection.resolution());
     x0 = std::max(x0, 0.0), y0 = std::max(y0, 0.0);
     x1 = std::min(x1, last), y1 = std::min(y1, last);
   }
-  for (double y = std::floor(y0); y <= std::floor(y1); ++y) {
-    for (double x = std::floor(x0); x <= std::floor(x1); ++x) {
-      add(LightProjection::entry(PlanePoint{face, x + 0.5, y + 0.5}));
-    }
+  const auto entry = [&](double x, double y) {
+    return LightProjection::entry(PlanePoint{face, x + 0.5, y + 0.5});
+  };
+  const double xa = std::floor(x0), xb = std::floor(x1), ya = std::floor(y0), yb = std::floor(y1);
+  if (corners_only) {
+    if (xa <= xb && ya <= yb) add(entry(xa, ya)), add(entry(xb, yb));
+    return;
+  }
+  for (double y = ya; y <= yb; ++y) {
+    for (double x = xa; x <= xb; ++x) add(entry(x, y));
   }
 }
 
@@ -121,21 +128,23 @@ std::optional<std::size_t> EntryRectangles::index(std::uint64_t entry) const {
 
 NearestVoxels::NearestVoxels(const LightProjection& projection, std::size_t parts,
                              const VoxelCentres& centres, double footprint) {
-  const auto for_each_footprint = [&](Vec3 centre, auto&& add) {
+  const auto for_each_footprint = [&](Vec3 centre, auto&& add, bool corners_only) {
     const PlanePoint q = projection.project(centre);
     const double radius = std::min(projection.entry_width(centre) * footprint, kMaxFootprint);
-    add_rectangle(projection, q.face, q.x - radius, q.x + radius, q.y - radius, q.y + radius, add);
+    add_rectangle(projection, q.face, q.x - radius, q.x + radius, q.y - radius, q.y + radius, add,
+                  corners_only);
   };
   rectangles_ = rectangles_of(parts, [&](std::size_t part, auto&& add) {
-    centres(part, [&](Vec3 centre) { for_each_footprint(centre, add); });
+    centres(part, [&](Vec3 centre) { for_each_footprint(centre, add, true); });
   });
   nearest_.assign(rectangles_.size(), std::numeric_limits<float>::infinity());
   tbb::parallel_for(std::size_t(0), parts, [&](std::size_t part) {
     centres(part, [&](Vec3 centre) {
       const float distance = float(projection.distance(centre));
-      for_each_footprint(centre, [&](std::uint64_t entry) {
-        atomic_min(nearest_[*rectangles_.index(entry)], distance);
-      });
+      for_each_footprint(
+          centre,
+          [&](std::uint64_t entry) { atomic_min(nearest_[*rectangles_.index(entry)], distance); },
+          false);
     });
   });
   entry_count_ = std::size_t(

@@ -1,5 +1,9 @@
 #include "streamed_shadows.h"
 
+#include <algorithm>
+#include <array>
+#include <functional>
+
 #include "shadow_determination.h"
 #include "surface_voxels.h"
 #include "voxelizer.h"
@@ -9,6 +13,26 @@ namespace {
 
 // Grid units: far above the rounding of a visible point, far below a voxel.
 constexpr double kFaceSlack = 1e-4;
+// The most voxels one leaf stands for: four corners and two bridging voxels for each of
+// three corners (for_each_leaf_voxel).
+constexpr std::size_t kLeafVoxels = 10;
+
+// Calls \p centre with the voxel centres of \p patch's leaves, as the recursion reaches
+// them; the corners of a leaf often share a voxel, which is then given once.
+void project_patch(const PatchSet& patches, std::size_t patch, const VoxelGrid& grid, int adjacency,
+                   const std::function<void(Vec3)>& centre) {
+  voxelize_patch(
+      patches, std::uint32_t(patch), grid, adjacency, [&](const Subpatch& leaf, const Domain&) {
+        std::array<VoxelIndex, kLeafVoxels> given;
+        std::size_t count = 0;
+        for_each_leaf_voxel(leaf, grid, adjacency, [&](const VoxelIndex& v, std::uint32_t) {
+          const auto end = given.begin() + count;
+          if (std::find(given.begin(), end, v) != end) return;
+          given[count++] = v;
+          centre(VoxelGrid::center(v));
+        });
+      });
+}
 
 }  // namespace
 
@@ -16,16 +40,10 @@ StreamedShadows::StreamedShadows(const PatchSet& patches, const VoxelGrid& grid,
                                  const Light& light)
     : grid_(grid),
       projection_(projection_for(light, grid, ShadowTest::offset)),
-      nearest_(
-          nearest_voxels(projection_, patches.size(), [&](std::size_t patch, const auto& centre) {
-            voxelize_patch(patches, std::uint32_t(patch), grid, adjacency,
-                           [&](const Subpatch& leaf, const Domain&) {
-                             for_each_leaf_voxel(leaf, grid, adjacency,
-                                                 [&](const VoxelIndex& v, std::uint32_t) {
-                                                   centre(VoxelGrid::center(v));
-                                                 });
-                           });
-          })) {}
+      nearest_(nearest_voxels(projection_, patches.size(),
+                              [&](std::size_t patch, const std::function<void(Vec3)>& centre) {
+                                project_patch(patches, patch, grid, adjacency, centre);
+                              })) {}
 
 bool StreamedShadows::shadowed(Vec3 g, Vec3 normal) const {
   // The voxel's centre stands for the point, as a voxel of the frame buffer does (§5). A
