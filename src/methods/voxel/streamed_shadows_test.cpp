@@ -43,7 +43,7 @@ double modes_disagreement_pct(const Scene& scene, const std::string& resolution)
 
 struct SceneCase {
   const char* scene;
-  double offset_pct;  // tolerated interior mismatch with raytrace at M = 128 (both modes)
+  double offset_pct;  // the frame buffer mode's offset threshold (voxel_method_test.cpp)
 };
 
 class StreamedBuiltInScene : public ::testing::TestWithParam<SceneCase> {};
