@@ -10,6 +10,7 @@
 #include <numbers>
 #include <numeric>
 #include <optional>
+#include <tuple>
 
 #include "loop_slicer.h"
 #include "view_theta.h"
@@ -191,6 +192,26 @@ class Saturation {
   Kept recent_[2];
 };
 
+// The occluding faces' corners in the light frame, in hidden-id order (objects, then their
+// occluding faces, as place_hidden_faces assigns the ids): start offsets and corners.
+std::pair<std::vector<std::uint32_t>, std::vector<Vec3>> hidden_corners(
+    const Scene& scene, const std::vector<ObjectLoops>& objects,
+    const std::vector<FarSheets>& sheets) {
+  std::vector<std::uint32_t> start{0};
+  std::vector<Vec3> corners;
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    const Mesh& mesh = scene.objects[o].mesh;
+    for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
+      if (!sheets[o].occludes(f)) continue;
+      for (std::uint32_t k = 0; k < mesh.face_size(f); ++k) {
+        corners.push_back(objects[o].local[mesh.face_vertex(f, k)]);
+      }
+      start.push_back(std::uint32_t(corners.size()));
+    }
+  }
+  return {std::move(start), std::move(corners)};
+}
+
 }  // namespace
 
 std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow_from(
@@ -201,23 +222,6 @@ std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow
                                           [phi](const AngularPair& p) { return p.reach < phi; });
   const std::size_t skipped = std::size_t(first - narrow.begin());
   return {skipped ? &narrow[skipped - 1] : nullptr, narrow.subspan(skipped)};
-}
-
-void AngularTable::place_corners(const Scene& scene, const LightFrame& frame,
-                                 const std::vector<FarSheets>& sheets) {
-  // Hidden ids run over objects and their occluding faces in order, as place_hidden_faces
-  // assigns them.
-  corner_start_.assign(1, 0);
-  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
-    const Mesh& mesh = scene.objects[o].mesh;
-    for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
-      if (!sheets[o].occludes(f)) continue;
-      for (std::uint32_t k = 0; k < mesh.face_size(f); ++k) {
-        corners_.push_back(frame.local(mesh.vertices[mesh.face_vertex(f, k)]));
-      }
-      corner_start_.push_back(std::uint32_t(corners_.size()));
-    }
-  }
 }
 
 int ThetaQuantization::entry(int k) const {
@@ -243,7 +247,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   for (std::size_t o = 0; o < objects.size(); ++o) {
     place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], table.hidden_);
   }
-  table.place_corners(scene, frame, sheets);
+  std::tie(table.corner_start_, table.corners_) = hidden_corners(scene, objects, sheets);
   tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
     find_loops(scene.objects[o].mesh, sheets[o], frame, objects[o]);
   });

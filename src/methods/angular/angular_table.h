@@ -113,8 +113,6 @@ class AngularTable {
 
  private:
   void fill_entries(std::span<const std::vector<EntryPair>> lists);
-  void place_corners(const Scene& scene, const LightFrame& frame,
-                     const std::vector<FarSheets>& sheets);
   struct SortScratch {
     std::vector<AngularPair> pairs;  // the entry's kept pairs in order
   };
