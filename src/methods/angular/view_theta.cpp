@@ -3,71 +3,19 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
 #include "shadowkit/raster/projection.h"
+#include "shadowkit/raster/view_frustum.h"
 
 namespace shadowkit {
 namespace {
 
-// The view frustum as five half-spaces f(p) >= 0 in camera coordinates (x right, y up,
-// z forward), half a pixel wider than the pixel centres.
-struct Frustum {
-  Vec3 eye, right, up, forward;
-  double near = 0, tan_x = 0, tan_y = 0;
-
-  explicit Frustum(const Scene& scene) {
-    const Camera& cam = scene.camera;
-    const Camera::PixelGrid grid = cam.pixel_grid();
-    eye = cam.position, right = cam.right(), up = cam.true_up(), forward = cam.forward();
-    near = near_plane_for(scene.bounds(), eye);  // the camera pass's own
-    tan_x = std::abs(grid.x0) + grid.step / 2;
-    tan_y = std::abs(grid.y0) + grid.step / 2;
-  }
-  Vec3 camera(Vec3 p) const {
-    const Vec3 v = p - eye;
-    return {dot(v, right), dot(v, up), dot(v, forward)};
-  }
-  // Plane \p plane's value at camera coordinates \p c.
-  double side(int plane, Vec3 c) const {
-    switch (plane) {
-      case 0:
-        return c.z - near;
-      case 1:
-        return tan_x * c.z - c.x;
-      case 2:
-        return tan_x * c.z + c.x;
-      case 3:
-        return tan_y * c.z - c.y;
-      default:
-        return tan_y * c.z + c.y;
-    }
-  }
-  bool holds(Vec3 p) const {
-    const Vec3 c = camera(p);
-    for (int plane = 0; plane < 5; ++plane) {
-      if (side(plane, c) < 0) return false;
-    }
-    return true;
-  }
-};
-
-// Sutherland-Hodgman: \p polygon clipped to the frustum.
-std::vector<Vec3> clip(const Frustum& frustum, std::vector<Vec3> polygon) {
-  std::vector<Vec3> out;
-  for (int plane = 0; plane < 5 && !polygon.empty(); ++plane) {
-    out.clear();
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-      const Vec3 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-      const double fa = frustum.side(plane, frustum.camera(a));
-      const double fb = frustum.side(plane, frustum.camera(b));
-      if (fa >= 0) out.push_back(a);
-      if ((fa >= 0) != (fb >= 0)) out.push_back(a + (b - a) * (fa / (fa - fb)));
-    }
-    std::swap(polygon, out);
-  }
-  return polygon;
+// The camera's view, with the near plane of the camera pass.
+ViewFrustum view_of(const Scene& scene) {
+  return ViewFrustum::of(scene.camera, near_plane_for(scene.bounds(), scene.camera.position));
 }
 
 // The bounding box's six faces.
@@ -88,12 +36,12 @@ std::array<std::vector<Vec3>, 6> box_faces(const Bounds3& box) {
 }  // namespace
 
 ViewTheta view_theta(const Scene& scene, const LightFrame& frame) {
-  const Frustum frustum(scene);
+  const ViewFrustum frustum = view_of(scene);
   ViewTheta view;
   view.lo = std::numeric_limits<double>::infinity();
   view.hi = -view.lo;
   for (const std::vector<Vec3>& face : box_faces(scene.bounds())) {
-    for (const Vec3 p : clip(frustum, face)) {
+    for (const Vec3 p : frustum.clip(face)) {
       const Vec3 v = frame.local(p);
       if (frame.point_light() && std::hypot(v.y, v.z) <= 0) return {};  // on the light's axis
       const double theta = frame.angular_local(v).theta;
@@ -108,23 +56,24 @@ ViewTheta view_theta(const Scene& scene, const LightFrame& frame) {
 }
 
 int automatic_resolution(const Scene& scene, const LightFrame& frame, double theta_range) {
-  const Frustum frustum(scene);
-  const double row_step = scene.camera.pixel_grid().step;  // one scan line at unit depth
+  const ViewFrustum frustum = view_of(scene);
+  const Camera& camera = scene.camera;
+  const double row_step = camera.pixel_grid().step;  // one scan line at unit depth
   std::vector<double> steps;
   for (const SceneObject& object : scene.objects) {
     for (const Vec3 p : object.mesh.vertices) {
       if (!frustum.holds(p)) continue;
       const Vec3 v = frame.local(p);
       const double rho = frame.point_light() ? std::hypot(v.y, v.z) : 1.0;
-      if (rho > 0) steps.push_back(frustum.camera(p).z * row_step / rho);
+      if (rho > 0) steps.push_back(dot(p - camera.position, camera.forward()) * row_step / rho);
     }
   }
-  if (steps.empty()) return scene.camera.height;
+  if (steps.empty()) return camera.height;
   const auto quartile = steps.begin() + steps.size() / 4;
   std::nth_element(steps.begin(), quartile, steps.end());
   // Sec. 3: beyond a limit set by the screen no entry shows; eight per scan line bound the
   // table when most vertices crowd the camera.
-  return int(std::clamp(theta_range / *quartile, 1.0, 8.0 * scene.camera.height));
+  return int(std::clamp(theta_range / *quartile, 1.0, 8.0 * camera.height));
 }
 
 }  // namespace shadowkit

@@ -42,28 +42,6 @@ bool face_lit(const Bounds3& box, int axis, int side, const Light& light) {
 
 }  // namespace
 
-ViewFrustum ViewFrustum::of(const Camera& camera, double near) {
-  const Vec3 f = camera.forward(), r = camera.right(), u = camera.true_up();
-  const double ty = camera.tan_half_fov(), tx = ty * camera.width / camera.height;
-  ViewFrustum v;
-  const Vec3 corners[4] = {f - r * tx + u * ty, f + r * tx + u * ty, f + r * tx - u * ty,
-                           f - r * tx - u * ty};
-  for (int k = 0; k < 4; ++k) {
-    Vec3 n = normalize(cross(corners[k], corners[(k + 1) % 4]));
-    if (dot(n, f) < 0) n = -n;
-    v.planes[k] = {n, -dot(n, camera.position)};
-  }
-  v.planes[4] = {f, -dot(f, camera.position) - near};
-  v.near_radius = near * std::sqrt(1 + tx * tx + ty * ty);
-  return v;
-}
-
-bool ViewFrustum::excludes(std::span<const Vec3> points) const {
-  return std::any_of(planes.begin(), planes.end(), [&](const Plane& plane) {
-    return std::all_of(points.begin(), points.end(), [&](Vec3 p) { return plane.distance(p) < 0; });
-  });
-}
-
 ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Reach& reach)
     : light_(light), tolerance_(tolerance(tight, light, reach)) {
   const Bounds3 box = widened(tight, tolerance_);

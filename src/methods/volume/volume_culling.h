@@ -4,21 +4,10 @@
 #include <span>
 
 #include "shadow_polygon.h"
+#include "shadowkit/raster/view_frustum.h"
 #include "shadowkit/scene/scene.h"
 
 namespace shadowkit {
-
-/// \brief The camera's viewing volume: four side planes through the eye and the near plane,
-/// normals pointing inward.
-struct ViewFrustum {
-  std::array<Plane, 5> planes;
-  /// The radius around the eye of the part of the view in front of the near plane.
-  double near_radius = 0;
-
-  static ViewFrustum of(const Camera& camera, double near);
-  /// All of \p points lie outside one of the planes.
-  bool excludes(std::span<const Vec3> points) const;
-};
 
 /// \brief A convex region holding the shadow volume of anything inside a box, up to the
 /// reach: the box swept away from the light (Crow's bounding box, Sec. VI). It is the space
