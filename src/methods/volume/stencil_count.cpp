@@ -61,44 +61,47 @@ Crossing classify_rectangle(const KeyPlane& key, int xa, int xb, int ya, int yb,
                   visible);
 }
 
+// Whether the visible point of pixel \p i, on the polygon's edge face \p k, lies beyond the
+// polygon's plane. Hazard: where the raster gives such a face a pixel whose ray passes just
+// outside it (vertices snap to 1/256 pixel), the visible point is taken on its plane a
+// little past the edge, across the polygon's plane: within a pixel's width of the edge, the
+// face's side of the edge decides.
+bool edge_face_beyond(const ShadowPolygon& p, int k, const VisibleFrame& frame, std::size_t i,
+                      double visible) {
+  const double side = dot(p.normal, frame.surfaces.point(i)) + p.d;
+  if (std::abs(side) <= frame.rays.grid.step / visible) return p.edge_face_sides[k] > 0;
+  return side > 0;
+}
+
 // Adds one polygon's crossings on columns [first, last] of tile row \p row, pixel by pixel:
 // where the visible point lies beyond the polygon's plane, its key is smaller than the
 // polygon's. Keys within the slack of each other fall back to the exact plane test on the
-// visible point itself, so only coverage depends on the raster.
+// visible point itself, so only coverage depends on the raster. The tile's own copies of
+// faces and keys keep the common case to a few operations per pixel.
 void count_span(const ShadowPolygon& p, const KeyPlane& key, const VisibleFrame& frame,
                 CountingTile& t, int row, int first, int last) {
   const int py = t.y0 + row;
-  const auto beyond = [&](int column, double visible) {
-    const std::size_t i = frame.surfaces.index(column, py);
-    if (!frame.surfaces.covered(i)) return false;
-    for (int k = 0; k < 2; ++k) {
-      if (frame.surfaces.face[i] != p.edge_faces[k]) continue;
-      // Hazard: a face along the polygon's edge. Where the raster gives it a pixel whose
-      // ray passes just outside it (vertices snap to 1/256 pixel), the visible point is
-      // taken on its plane a little past the edge, across the polygon's plane: within a
-      // pixel's width of the edge, the face's side of the edge decides.
-      const double side = dot(p.normal, frame.surfaces.point(i)) + p.d;
-      if (std::abs(side) <= frame.rays.grid.step / visible) return p.edge_face_sides[k] > 0;
-      return side > 0;
-    }
-    const double k = key.at(column, py);
-    if (k - key.slack > visible) return true;
-    if (k + key.slack < visible) return false;
-    return dot(p.normal, frame.surfaces.point(i)) + p.d > 0;
-  };
   const int base = row * t.w - t.x0;
-  if (!p.depth_fail) {
-    // Crow's depth-pass: the crossing lies between the eye and the visible point.
-    for (int c = first; c <= last; ++c)
-      t.count[base + c] += beyond(c, t.key[base + c]) ? p.jump : 0;
-    return;
-  }
-  // Depth-fail: the crossing lies behind the visible point; a light cap passes through its
-  // own visible point, and its volume begins right behind it.
+  // Depth-pass counts the crossing between the eye and the visible point (Crow); depth-fail
+  // the one behind it, where a light cap passing through its own visible point counts too:
+  // its volume begins right behind it.
+  const int before = p.depth_fail ? 0 : p.jump, behind = p.depth_fail ? -p.jump : 0;
   for (int c = first; c <= last; ++c) {
-    if (t.face[base + c] == kNoFace) continue;
-    const bool behind = !beyond(c, t.key[base + c]) || t.face[base + c] == p.face;
-    t.count[base + c] -= behind ? p.jump : 0;
+    const std::uint32_t f = t.face[base + c];
+    if (f == kNoFace) continue;
+    const double visible = t.key[base + c];
+    bool beyond;
+    if (f == p.edge_faces[0] || f == p.edge_faces[1]) {
+      beyond = edge_face_beyond(p, f == p.edge_faces[0] ? 0 : 1, frame, frame.surfaces.index(c, py),
+                                visible);
+    } else if (const double k = key.at(c, py); k - key.slack > visible) {
+      beyond = true;
+    } else if (k + key.slack < visible) {
+      beyond = false;
+    } else {
+      beyond = dot(p.normal, frame.surfaces.point(frame.surfaces.index(c, py))) + p.d > 0;
+    }
+    t.count[base + c] += beyond && f != p.face ? before : behind;
   }
 }
 
