@@ -137,6 +137,14 @@ class ReceiverTest {
     }
     return reached_ & bit;
   }
+  /// Whether it can shadow a visible point of cells [first, last] of the cell row (none if
+  /// first > last).
+  bool reaches_any(int cell_row, int first, int last) {
+    for (int c = first; c <= last; ++c) {
+      if (reaches(cell_row, c)) return true;
+    }
+    return false;
+  }
 
  private:
   const ShadowFrustum& frustum_;
@@ -166,15 +174,17 @@ class TileCounter {
     if (!overlaps_rectangle(s, xa, ya, xb, yb)) return 0;
     narrow_to_strip(s, true, xa, xb, ya, yb);
     if (ya > yb) return 0;
-    // Band by band, those the receiver test leaves: the polygon's span on each row (empty:
-    // first > last), walked on from the band before where it can.
+    // Band by band, those where the receiver test leaves a cell within the polygon's columns:
+    // the polygon's span on each row (empty: first > last), walked on from the band before
+    // where it can.
     int span_a[kTile], span_b[kTile];
     std::optional<raster::PolygonSpanWalker> walker;
     int walked = ya;  // the walker's current row
     std::size_t tested = 0;
     for (int first = ya; first <= yb;) {
       const int band = (first - t.y0) / kBand, last = std::min(yb, t.y0 + (band + 1) * kBand - 1);
-      if (receivers.reaches_band(band)) {
+      if (receivers.reaches_band(band) &&
+          receivers.reaches_any(band, (xa - t.x0) / kBlock, (xb - t.x0) / kBlock)) {
         if (!walker || walked != first) walker.emplace(s, first, yb), walked = first;
         for (; walked <= last; ++walked, walker->next_row()) {
           int& a = span_a[walked - t.y0] = xa;
