@@ -140,6 +140,11 @@ class ReceiverTest {
   /// Whether it can shadow a visible point of cells [first, last] of the cell row (none if
   /// first > last).
   bool reaches_any(int cell_row, int first, int last) {
+    if (first > last) return false;
+    const std::uint64_t cells = ((std::uint64_t(2) << (last - first)) - 1)
+                                << (cell_row * kCellColumns + first);
+    // Cells already known to be reached settle it without a new test.
+    if (reached_ & cells) return true;
     for (int c = first; c <= last; ++c) {
       if (reaches(cell_row, c)) return true;
     }
