@@ -191,12 +191,20 @@ class TileCounter {
       if (receivers.reaches_band(band) &&
           receivers.reaches_any(band, (xa - t.x0) / kBlock, (xb - t.x0) / kBlock)) {
         if (!walker || walked != first) walker.emplace(s, first, yb), walked = first;
+        int band_xa = t.x0 + t.w, band_xb = t.x0 - 1;  // the spans' columns in the band
         for (; walked <= last; ++walked, walker->next_row()) {
           int& a = span_a[walked - t.y0] = xa;
           int& b = span_b[walked - t.y0] = xb;
-          if (!walker->span(a, b)) a = xb + 1;
+          if (!walker->span(a, b)) {
+            a = xb + 1;
+            continue;
+          }
+          band_xa = std::min(band_xa, a), band_xb = std::max(band_xb, b);
         }
-        tested += count_band(poly, key, band, first, last, span_a, span_b, receivers, t);
+        if (band_xa <= band_xb) {
+          tested += count_band(poly, key, band, first, last, band_xa, band_xb, span_a, span_b,
+                               receivers, t);
+        }
       }
       first = last + 1;
     }
@@ -204,19 +212,13 @@ class TileCounter {
   }
 
  private:
-  // Rows [first, last] of one band. Each cell the polygon reaches is settled first, by the
-  // receiver test and by its depth keys against the cell's: only the rows of cells it passes
-  // through are tested run by run, and only runs it passes through pixel by pixel.
+  // Rows [first, last] of one band, where the polygon's spans cover columns [xa, xb]. Each
+  // cell the polygon reaches is settled first, by the receiver test and by its depth keys
+  // against the cell's: only the rows of cells it passes through are tested run by run, and
+  // only runs it passes through pixel by pixel.
   std::size_t count_band(const ShadowPolygon& poly, const KeyPlane& key, int band, int first,
-                         int last, const int* span_a, const int* span_b, ReceiverTest& receivers,
-                         CountingTile& t) const {
-    int xa = t.x0 + t.w, xb = t.x0 - 1;
-    for (int row = first - t.y0; row <= last - t.y0; ++row) {
-      if (span_a[row] > span_b[row]) continue;
-      xa = std::min(xa, span_a[row]);
-      xb = std::max(xb, span_b[row]);
-    }
-    if (xa > xb) return 0;
+                         int last, int xa, int xb, const int* span_a, const int* span_b,
+                         ReceiverTest& receivers, CountingTile& t) const {
     const int ca = (xa - t.x0) / kBlock, cb = (xb - t.x0) / kBlock;
     std::size_t tested = 0;
     for (int c = ca; c <= cb; ++c) {
