@@ -108,15 +108,21 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
 std::size_t CountingTile::finish(const VisibleFrame& frame, ShadowMask& mask) {
   std::size_t negative = 0;
   for (int r = 0; r < h; ++r) {
+    // The cells' settled jumps go into the row's difference array too.
+    int* row_delta = delta + r * (kTile + 1);
+    for (int cell = 0; cell * kBlock < w; ++cell) {
+      row_delta[cell * kBlock] += cell_jump[r / kBand][cell];
+      row_delta[std::min(w, (cell + 1) * kBlock)] -= cell_jump[r / kBand][cell];
+    }
+    std::uint8_t* out = &mask.pixels[frame.surfaces.index(x0, y0 + r)];
     int jump = 0;
     for (int c = 0; c < w; ++c) {
-      jump += delta[r * (kTile + 1) + c];
-      const int k = r * w + c;
-      if (face[k] == kNoFace) continue;
-      const int total = count[k] + jump + cell_jump[r / kBand][c / kBlock];
+      jump += row_delta[c];
+      const std::uint32_t f = face[r * w + c];
+      if (f == kNoFace) continue;
+      const int total = count[r * w + c] + jump;
       negative += total < 0;
-      const bool lit = total <= 0 && frame.lit_side[face[k]];
-      mask.pixels[frame.surfaces.index(x0 + c, y0 + r)] = lit ? kMaskLit : kMaskShadow;
+      out[c] = total <= 0 && frame.lit_side[f] ? kMaskLit : kMaskShadow;
     }
   }
   return negative;

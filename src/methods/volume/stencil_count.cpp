@@ -61,44 +61,47 @@ Crossing classify_rectangle(const KeyPlane& key, int xa, int xb, int ya, int yb,
                   visible);
 }
 
+// Whether the visible point of pixel \p i, on the polygon's edge face \p k, lies beyond the
+// polygon's plane. Hazard: where the raster gives such a face a pixel whose ray passes just
+// outside it (vertices snap to 1/256 pixel), the visible point is taken on its plane a
+// little past the edge, across the polygon's plane: within a pixel's width of the edge, the
+// face's side of the edge decides.
+bool edge_face_beyond(const ShadowPolygon& p, int k, const VisibleFrame& frame, std::size_t i,
+                      double visible) {
+  const double side = dot(p.normal, frame.surfaces.point(i)) + p.d;
+  if (std::abs(side) <= frame.rays.grid.step / visible) return p.edge_face_sides[k] > 0;
+  return side > 0;
+}
+
 // Adds one polygon's crossings on columns [first, last] of tile row \p row, pixel by pixel:
 // where the visible point lies beyond the polygon's plane, its key is smaller than the
 // polygon's. Keys within the slack of each other fall back to the exact plane test on the
-// visible point itself, so only coverage depends on the raster.
+// visible point itself, so only coverage depends on the raster. The tile's own copies of
+// faces and keys keep the common case to a few operations per pixel.
 void count_span(const ShadowPolygon& p, const KeyPlane& key, const VisibleFrame& frame,
                 CountingTile& t, int row, int first, int last) {
   const int py = t.y0 + row;
-  const auto beyond = [&](int column, double visible) {
-    const std::size_t i = frame.surfaces.index(column, py);
-    if (!frame.surfaces.covered(i)) return false;
-    for (int k = 0; k < 2; ++k) {
-      if (frame.surfaces.face[i] != p.edge_faces[k]) continue;
-      // Hazard: a face along the polygon's edge. Where the raster gives it a pixel whose
-      // ray passes just outside it (vertices snap to 1/256 pixel), the visible point is
-      // taken on its plane a little past the edge, across the polygon's plane: within a
-      // pixel's width of the edge, the face's side of the edge decides.
-      const double side = dot(p.normal, frame.surfaces.point(i)) + p.d;
-      if (std::abs(side) <= frame.rays.grid.step / visible) return p.edge_face_sides[k] > 0;
-      return side > 0;
-    }
-    const double k = key.at(column, py);
-    if (k - key.slack > visible) return true;
-    if (k + key.slack < visible) return false;
-    return dot(p.normal, frame.surfaces.point(i)) + p.d > 0;
-  };
   const int base = row * t.w - t.x0;
-  if (!p.depth_fail) {
-    // Crow's depth-pass: the crossing lies between the eye and the visible point.
-    for (int c = first; c <= last; ++c)
-      t.count[base + c] += beyond(c, t.key[base + c]) ? p.jump : 0;
-    return;
-  }
-  // Depth-fail: the crossing lies behind the visible point; a light cap passes through its
-  // own visible point, and its volume begins right behind it.
+  // Depth-pass counts the crossing between the eye and the visible point (Crow); depth-fail
+  // the one behind it, where a light cap passing through its own visible point counts too:
+  // its volume begins right behind it.
+  const int before = p.depth_fail ? 0 : p.jump, behind = p.depth_fail ? -p.jump : 0;
   for (int c = first; c <= last; ++c) {
-    if (t.face[base + c] == kNoFace) continue;
-    const bool behind = !beyond(c, t.key[base + c]) || t.face[base + c] == p.face;
-    t.count[base + c] -= behind ? p.jump : 0;
+    const std::uint32_t f = t.face[base + c];
+    if (f == kNoFace) continue;
+    const double visible = t.key[base + c];
+    bool beyond;
+    if (f == p.edge_faces[0] || f == p.edge_faces[1]) {
+      beyond = edge_face_beyond(p, f == p.edge_faces[0] ? 0 : 1, frame, frame.surfaces.index(c, py),
+                                visible);
+    } else if (const double k = key.at(c, py); k - key.slack > visible) {
+      beyond = true;
+    } else if (k + key.slack < visible) {
+      beyond = false;
+    } else {
+      beyond = dot(p.normal, frame.surfaces.point(frame.surfaces.index(c, py))) + p.d > 0;
+    }
+    t.count[base + c] += beyond && f != p.face ? before : behind;
   }
 }
 
@@ -134,6 +137,19 @@ class ReceiverTest {
     }
     return reached_ & bit;
   }
+  /// Whether it can shadow a visible point of cells [first, last] of the cell row (none if
+  /// first > last).
+  bool reaches_any(int cell_row, int first, int last) {
+    if (first > last) return false;
+    const std::uint64_t cells = ((std::uint64_t(2) << (last - first)) - 1)
+                                << (cell_row * kCellColumns + first);
+    // Cells already known to be reached settle it without a new test.
+    if (reached_ & cells) return true;
+    for (int c = first; c <= last; ++c) {
+      if (reaches(cell_row, c)) return true;
+    }
+    return false;
+  }
 
  private:
   const ShadowFrustum& frustum_;
@@ -163,22 +179,32 @@ class TileCounter {
     if (!overlaps_rectangle(s, xa, ya, xb, yb)) return 0;
     narrow_to_strip(s, true, xa, xb, ya, yb);
     if (ya > yb) return 0;
-    // Band by band, those the receiver test leaves: the polygon's span on each row (empty:
-    // first > last), walked on from the band before where it can.
+    // Band by band, those where the receiver test leaves a cell within the polygon's columns:
+    // the polygon's span on each row (empty: first > last), walked on from the band before
+    // where it can.
     int span_a[kTile], span_b[kTile];
     std::optional<raster::PolygonSpanWalker> walker;
     int walked = ya;  // the walker's current row
     std::size_t tested = 0;
     for (int first = ya; first <= yb;) {
       const int band = (first - t.y0) / kBand, last = std::min(yb, t.y0 + (band + 1) * kBand - 1);
-      if (receivers.reaches_band(band)) {
+      if (receivers.reaches_band(band) &&
+          receivers.reaches_any(band, (xa - t.x0) / kBlock, (xb - t.x0) / kBlock)) {
         if (!walker || walked != first) walker.emplace(s, first, yb), walked = first;
+        int band_xa = t.x0 + t.w, band_xb = t.x0 - 1;  // the spans' columns in the band
         for (; walked <= last; ++walked, walker->next_row()) {
           int& a = span_a[walked - t.y0] = xa;
           int& b = span_b[walked - t.y0] = xb;
-          if (!walker->span(a, b)) a = xb + 1;
+          if (!walker->span(a, b)) {
+            a = xb + 1;
+            continue;
+          }
+          band_xa = std::min(band_xa, a), band_xb = std::max(band_xb, b);
         }
-        tested += count_band(poly, key, band, first, last, span_a, span_b, receivers, t);
+        if (band_xa <= band_xb) {
+          tested += count_band(poly, key, band, first, last, band_xa, band_xb, span_a, span_b,
+                               receivers, t);
+        }
       }
       first = last + 1;
     }
@@ -186,19 +212,13 @@ class TileCounter {
   }
 
  private:
-  // Rows [first, last] of one band. Each cell the polygon reaches is settled first, by the
-  // receiver test and by its depth keys against the cell's: only the rows of cells it passes
-  // through are tested run by run, and only runs it passes through pixel by pixel.
+  // Rows [first, last] of one band, where the polygon's spans cover columns [xa, xb]. Each
+  // cell the polygon reaches is settled first, by the receiver test and by its depth keys
+  // against the cell's: only the rows of cells it passes through are tested run by run, and
+  // only runs it passes through pixel by pixel.
   std::size_t count_band(const ShadowPolygon& poly, const KeyPlane& key, int band, int first,
-                         int last, const int* span_a, const int* span_b, ReceiverTest& receivers,
-                         CountingTile& t) const {
-    int xa = t.x0 + t.w, xb = t.x0 - 1;
-    for (int row = first - t.y0; row <= last - t.y0; ++row) {
-      if (span_a[row] > span_b[row]) continue;
-      xa = std::min(xa, span_a[row]);
-      xb = std::max(xb, span_b[row]);
-    }
-    if (xa > xb) return 0;
+                         int last, int xa, int xb, const int* span_a, const int* span_b,
+                         ReceiverTest& receivers, CountingTile& t) const {
     const int ca = (xa - t.x0) / kBlock, cb = (xb - t.x0) / kBlock;
     std::size_t tested = 0;
     for (int c = ca; c <= cb; ++c) {
