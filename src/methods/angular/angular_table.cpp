@@ -1,6 +1,5 @@
 #include "angular_table.h"
 
-#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
@@ -19,6 +18,8 @@ namespace shadowkit {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+// RE loops sliced by one task: enough to outweigh its overhead, few enough lists to merge.
+constexpr std::size_t kLoopsPerChunk = 128;
 
 // One object's RE loops in the light's frame.
 struct ObjectLoops {
@@ -224,11 +225,6 @@ std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow
   return {skipped ? &narrow[skipped - 1] : nullptr, narrow.subspan(skipped)};
 }
 
-int ThetaQuantization::entry(int k) const {
-  if (full_turn) return ((k % resolution) + resolution) % resolution;
-  return k >= 0 && k < resolution ? k : -1;
-}
-
 AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
                                  const std::vector<FarSheets>& sheets,
                                  const AngularTableOptions& options) {
@@ -279,34 +275,33 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   std::iota(order.begin(), order.end(), 0u);
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t a, std::uint32_t b) { return phi[a] < phi[b]; });
-  struct Output {
-    SliceScratch scratch;
-    std::vector<EntryPair> pairs;
-  };
-  tbb::enumerable_thread_specific<Output> outputs;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, work.size(), 64), [&](const auto& range) {
-    Output& out = outputs.local();
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+  // Fixed chunks of that order, each into its own list: the lists in chunk order keep the
+  // loops' order in every entry whichever thread sliced them.
+  const std::size_t chunks = (work.size() + kLoopsPerChunk - 1) / kLoopsPerChunk;
+  std::vector<std::vector<EntryPair>> lists(chunks);
+  tbb::enumerable_thread_specific<SliceScratch> scratch;
+  tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
+    SliceScratch& local = scratch.local();
+    for (std::size_t i = c * kLoopsPerChunk; i < std::min(work.size(), (c + 1) * kLoopsPerChunk);
+         ++i) {
       const auto [o, l] = work[order[i]];
       const ObjectLoops& loops = objects[o];
       const SlicedMesh m{scene.objects[o].mesh, sheets[o],    loops.local,
                          loops.theta,           loops.convex, loops.hidden_id};
       if (l < loops.loops.size()) {
-        slice_loop(m, loops.ridges, loops.loops[l], table.theta_, slices, out.scratch, out.pairs);
+        slice_loop(m, loops.ridges, loops.loops[l], table.theta_, slices, local, lists[c]);
       } else {
-        slice_from_axis(m, ~l, slices, out.scratch, out.pairs);
+        slice_from_axis(m, ~l, slices, local, lists[c]);
       }
     }
   });
-  std::vector<std::vector<EntryPair>> lists;
-  for (Output& out : outputs) lists.push_back(std::move(out.pairs));
   table.fill_entries(lists);
   // Step 1.7: sort each entry by phi; Sec. 10: saturate.
   table.wide_.assign(table.theta_.resolution, 0);
   std::vector<std::uint32_t> kept(table.theta_.resolution);
-  tbb::enumerable_thread_specific<SortScratch> scratch;
+  tbb::enumerable_thread_specific<SortScratch> sort_scratch;
   tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
-    kept[k] = table.sort_entry(k, options.saturated ? &slices[k] : nullptr, scratch.local());
+    kept[k] = table.sort_entry(k, options.saturated ? &slices[k] : nullptr, sort_scratch.local());
   });
   table.compact(kept);
   return table;
@@ -341,10 +336,17 @@ void AngularTable::fill_entries(std::span<const std::vector<EntryPair>> lists) {
 std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch) {
   const std::span<AngularPair> entry(pairs_.data() + start_[k], pairs_.data() + start_[k + 1]);
   if (entry.empty()) return 0;
-  // Step 1.7: sort by phi_begin.
-  std::sort(entry.begin(), entry.end(), [](const AngularPair& a, const AngularPair& b) {
+  // Step 1.7: sort by phi_begin. The pairs arrive nearly sorted (loops in order of phi), so
+  // an insertion sort.
+  const auto before = [](const AngularPair& a, const AngularPair& b) {
     return a.phi_begin != b.phi_begin ? a.phi_begin < b.phi_begin : a.hidden < b.hidden;
-  });
+  };
+  for (auto it = entry.begin() + 1; it < entry.end(); ++it) {
+    const AngularPair pair = *it;
+    auto hole = it;
+    for (; hole != entry.begin() && before(pair, *(hole - 1)); --hole) *hole = *(hole - 1);
+    *hole = pair;
+  }
   std::vector<AngularPair>& sorted = scratch.pairs;
   sorted.clear();
   std::optional<Saturation> saturation;
