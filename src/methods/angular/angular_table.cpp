@@ -2,6 +2,7 @@
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
@@ -46,16 +47,24 @@ bool convex_face(const Mesh& mesh, std::uint32_t f) {
   return true;
 }
 
-// Light-frame vertices, and the occluding faces' planes (the depth of Sec. 5) from \p first
-// on, in parallel over one object's vertices and faces.
+// Every object's vertices in the light's frame, in parallel.
+void place_vertices(const Scene& scene, const LightFrame& frame,
+                    std::vector<ObjectLoops>& objects) {
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    const Mesh& mesh = scene.objects[o].mesh;
+    objects[o].local.resize(mesh.vertices.size());
+    tbb::parallel_for(std::size_t(0), mesh.vertices.size(),
+                      [&](std::size_t v) { objects[o].local[v] = frame.local(mesh.vertices[v]); });
+  }
+}
+
+// The occluding faces' planes (the depth of Sec. 5) from \p first on, in parallel over one
+// object's faces.
 void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& sheets,
                         const LightFrame& frame, std::uint32_t first, ObjectLoops& loops,
                         std::vector<HiddenFace>& hidden) {
   const SceneObject& object = scene.objects[o];
   const Mesh& mesh = object.mesh;
-  loops.local.resize(mesh.vertices.size());
-  tbb::parallel_for(std::size_t(0), mesh.vertices.size(),
-                    [&](std::size_t v) { loops.local[v] = frame.local(mesh.vertices[v]); });
   loops.hidden_id.assign(mesh.face_count(), 0);
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
     if (sheets.occludes(f)) loops.hidden_id[f] = first++;
@@ -69,7 +78,7 @@ void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& shee
                                   face};
     if (pierced.empty()) return;
     loops.convex[f] = convex_face(mesh, f);
-    const SlicedMesh m{mesh, sheets, loops.local, loops.theta, loops.convex, loops.hidden_id};
+    const SlicedMesh m{mesh, sheets, loops.local, {}, loops.convex, loops.hidden_id};
     pierced[f] = axis_piercing(m, f) < 0;
   });
   for (std::uint32_t f = 0; f < pierced.size(); ++f) {
@@ -103,8 +112,8 @@ void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& fra
 // Sec. 3: theta from the global minimum to the global maximum over the RE loops (the whole
 // turn when they go around the light), cut to the theta the camera can see (eq. 4's range
 // "based on the view volume"), in R entries.
-ThetaQuantization quantize(const Scene& scene, const LightFrame& frame,
-                           const std::vector<ObjectLoops>& objects, int resolution) {
+ThetaQuantization quantize(const Scene& scene, const std::vector<ObjectLoops>& objects,
+                           const ViewTheta& view, double scan_line, int resolution) {
   ThetaQuantization q;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const ObjectLoops& o : objects) {
@@ -113,7 +122,6 @@ ThetaQuantization quantize(const Scene& scene, const LightFrame& frame,
     hi = std::max(hi, o.theta_hi);
   }
   if (q.full_turn) lo = -kPi, hi = kPi;
-  const ViewTheta view = view_theta(scene, frame);
   if (view.bounded) {
     q.full_turn = false;
     lo = std::max(lo, view.lo);
@@ -125,7 +133,7 @@ ThetaQuantization quantize(const Scene& scene, const LightFrame& frame,
     lo -= pad, hi += pad;
   }
   const double range = std::max(hi - lo, 1e-12);
-  q.resolution = resolution > 0 ? resolution : automatic_resolution(scene, frame, range);
+  q.resolution = resolution > 0 ? resolution : automatic_resolution(scene, scan_line, range);
   q.step = range / q.resolution;
   q.theta_min = lo;
   return q;
@@ -213,6 +221,33 @@ std::pair<std::vector<std::uint32_t>, std::vector<Vec3>> hidden_corners(
   return {std::move(start), std::move(corners)};
 }
 
+// The occluding faces in hidden-id order: their planes (the depth of Sec. 5) and corners.
+struct Occluders {
+  std::vector<HiddenFace> hidden;
+  std::vector<std::uint32_t> corner_start;
+  std::vector<Vec3> corners;
+};
+
+// Also numbers each object's occluding faces, and marks their convexity and the axis faces.
+Occluders place_occluders(const Scene& scene, const std::vector<FarSheets>& sheets,
+                          const LightFrame& frame, std::vector<ObjectLoops>& objects) {
+  std::vector<std::uint32_t> first_hidden(objects.size() + 1, 0);
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    std::uint32_t n = 0;
+    for (std::uint32_t f = 0; f < scene.objects[o].mesh.face_count(); ++f) {
+      n += sheets[o].occludes(f);
+    }
+    first_hidden[o + 1] = first_hidden[o] + n;
+  }
+  Occluders out;
+  out.hidden.resize(first_hidden.back());
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], out.hidden);
+  }
+  std::tie(out.corner_start, out.corners) = hidden_corners(scene, objects, sheets);
+  return out;
+}
+
 }  // namespace
 
 std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow_from(
@@ -229,25 +264,28 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
                                  const std::vector<FarSheets>& sheets,
                                  const AngularTableOptions& options) {
   AngularTable table;
-  // Steps 1.1-1.3 per object, and the occluding faces' planes (the depth of Sec. 5).
   std::vector<ObjectLoops> objects(scene.objects.size());
-  std::vector<std::uint32_t> first_hidden(objects.size() + 1, 0);
-  for (std::size_t o = 0; o < objects.size(); ++o) {
-    std::uint32_t n = 0;
-    for (std::uint32_t f = 0; f < scene.objects[o].mesh.face_count(); ++f) {
-      n += sheets[o].occludes(f);
-    }
-    first_hidden[o + 1] = first_hidden[o] + n;
-  }
-  table.hidden_.resize(first_hidden.back());
-  for (std::size_t o = 0; o < objects.size(); ++o) {
-    place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], table.hidden_);
-  }
-  std::tie(table.corner_start_, table.corners_) = hidden_corners(scene, objects, sheets);
-  tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
-    find_loops(scene.objects[o].mesh, sheets[o], frame, objects[o]);
-  });
-  table.theta_ = quantize(scene, frame, objects, options.resolution);
+  place_vertices(scene, frame, objects);
+  // Three independent tasks at once: steps 1.1-1.3 per object; the occluding faces' planes
+  // and corners (the depth of Sec. 5); eq. 4's inputs from the view.
+  Occluders occluders;
+  ViewTheta view;
+  double scan_line = 0;
+  tbb::parallel_invoke(
+      [&] {
+        tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
+          find_loops(scene.objects[o].mesh, sheets[o], frame, objects[o]);
+        });
+      },
+      [&] { occluders = place_occluders(scene, sheets, frame, objects); },
+      [&] {
+        view = view_theta(scene, frame);
+        if (options.resolution == 0) scan_line = scan_line_theta(scene, frame);
+      });
+  table.hidden_ = std::move(occluders.hidden);
+  table.corner_start_ = std::move(occluders.corner_start);
+  table.corners_ = std::move(occluders.corners);
+  table.theta_ = quantize(scene, objects, view, scan_line, options.resolution);
   for (const ObjectLoops& o : objects) {
     table.loop_stats_.ridge_edges += double(o.ridges.size());
     table.loop_stats_.loops += double(o.loops.size());

@@ -107,7 +107,7 @@ ViewTheta view_theta(const Scene& scene, const LightFrame& frame) {
   return view;
 }
 
-int automatic_resolution(const Scene& scene, const LightFrame& frame, double theta_range) {
+double scan_line_theta(const Scene& scene, const LightFrame& frame) {
   const Frustum frustum(scene);
   const double row_step = scene.camera.pixel_grid().step;  // one scan line at unit depth
   std::vector<double> steps;
@@ -119,12 +119,17 @@ int automatic_resolution(const Scene& scene, const LightFrame& frame, double the
       if (rho > 0) steps.push_back(frustum.camera(p).z * row_step / rho);
     }
   }
-  if (steps.empty()) return scene.camera.height;
+  if (steps.empty()) return 0;
   const auto quartile = steps.begin() + steps.size() / 4;
   std::nth_element(steps.begin(), quartile, steps.end());
+  return *quartile;
+}
+
+int automatic_resolution(const Scene& scene, double scan_line, double theta_range) {
+  if (scan_line == 0) return scene.camera.height;
   // Sec. 3: beyond a limit set by the screen no entry shows; eight per scan line bound the
   // table when most vertices crowd the camera.
-  return int(std::clamp(theta_range / *quartile, 1.0, 8.0 * scene.camera.height));
+  return int(std::clamp(theta_range / scan_line, 1.0, 8.0 * scene.camera.height));
 }
 
 }  // namespace shadowkit
