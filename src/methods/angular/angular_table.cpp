@@ -168,33 +168,38 @@ class Saturation {
  public:
   Saturation(const AngularTable& table, const ThetaSlice& s) : table_(table), s_(s) {}
 
-  bool covers(const AngularPair& q) const {
+  bool covers(const AngularPair& q) {
     if (!std::isfinite(q.phi_begin) || !std::isfinite(q.phi_end)) return false;
     double depth[2] = {-1, -1};  // q's own, once needed
-    const auto nearer = [&](const Kept& p) {
+    const auto nearer = [&](Kept& p) {
       if (p.begin > q.phi_begin || p.end < q.phi_end) return false;
       if (depth[0] < 0) {
-        const RayDepth own(s_, table_.hidden(q.hidden).plane);
+        const RayDepth own = ray_depth(q.hidden);
         depth[0] = own.at(q.phi_begin), depth[1] = own.at(q.phi_end);
       }
-      return std::isfinite(depth[0]) && std::isfinite(depth[1]) &&
-             depth[0] > p.depth.at(q.phi_begin) * (1 + 1e-9) &&
-             depth[1] > p.depth.at(q.phi_end) * (1 + 1e-9);
+      if (!std::isfinite(depth[0]) || !std::isfinite(depth[1])) return false;
+      if (!p.depth) p.depth = ray_depth(p.hidden);
+      return depth[0] > p.depth->at(q.phi_begin) * (1 + 1e-9) &&
+             depth[1] > p.depth->at(q.phi_end) * (1 + 1e-9);
     };
     for (std::size_t i = 0; i < std::min<std::size_t>(kept_, 2); ++i) {
       if (nearer(recent_[i])) return true;
     }
     return false;
   }
-  void keep(const AngularPair& p) {
-    recent_[kept_++ % 2] = {p.phi_begin, p.phi_end, RayDepth(s_, table_.hidden(p.hidden).plane)};
-  }
+  void keep(const AngularPair& p) { recent_[kept_++ % 2] = {p.phi_begin, p.phi_end, p.hidden, {}}; }
 
  private:
+  // A kept pair; its depth once a later pair falls within it (most never hold one).
   struct Kept {
     double begin = 0, end = 0;
-    RayDepth depth;
+    std::uint32_t hidden = 0;
+    std::optional<RayDepth> depth;
   };
+  RayDepth ray_depth(std::uint32_t hidden) const {
+    return RayDepth(s_, table_.hidden(hidden).plane);
+  }
+
   const AngularTable& table_;
   const ThetaSlice& s_;
   std::size_t kept_ = 0;
@@ -379,38 +384,39 @@ std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortSc
   const auto before = [](const AngularPair& a, const AngularPair& b) {
     return a.phi_begin != b.phi_begin ? a.phi_begin < b.phi_begin : a.hidden < b.hidden;
   };
+  double extent_end = entry.front().phi_end;
   for (auto it = entry.begin() + 1; it < entry.end(); ++it) {
     const AngularPair pair = *it;
+    extent_end = std::max(extent_end, pair.phi_end);
     auto hole = it;
     for (; hole != entry.begin() && before(pair, *(hole - 1)); --hole) *hole = *(hole - 1);
     *hole = pair;
   }
-  std::vector<AngularPair>& sorted = scratch.pairs;
-  sorted.clear();
+  // Sec. 10 drops only pairs within a kept one, and never the first: the kept pairs have the
+  // same extent. Wide pairs go first, so that the reach of the narrow ones skips well; the
+  // narrow ones move down in place past the dropped and the wide.
+  const double wide = (extent_end - entry.front().phi_begin) / 16;
   std::optional<Saturation> saturation;
   if (saturate) saturation.emplace(*this, *saturate);
-  double extent_end = -std::numeric_limits<double>::infinity();
+  std::vector<AngularPair>& wide_pairs = scratch.pairs;
+  wide_pairs.clear();
+  std::size_t narrow = 0;
+  double reach = -std::numeric_limits<double>::infinity();
   for (const AngularPair& pair : entry) {
     if (saturation && saturation->covers(pair)) continue;
     if (saturation) saturation->keep(pair);
-    extent_end = std::max(extent_end, pair.phi_end);
-    sorted.push_back(pair);
+    if (pair.phi_end - pair.phi_begin > wide) {
+      wide_pairs.push_back(pair);
+      continue;
+    }
+    entry[narrow] = pair;
+    entry[narrow++].reach = reach = std::max(reach, pair.phi_end);
   }
-  // Wide pairs first, so that the reach of the narrow ones skips well.
-  const double wide = (extent_end - sorted.front().phi_begin) / 16;
-  const auto is_wide = [wide](const AngularPair& p) { return p.phi_end - p.phi_begin > wide; };
-  std::size_t out = 0;
-  for (const AngularPair& pair : sorted) {
-    if (is_wide(pair)) entry[out++] = pair;
-  }
-  wide_[k] = std::uint32_t(out);
-  double reach = -std::numeric_limits<double>::infinity();
-  for (const AngularPair& pair : sorted) {
-    if (is_wide(pair)) continue;
-    entry[out] = pair;
-    entry[out++].reach = reach = std::max(reach, pair.phi_end);
-  }
-  return std::uint32_t(out);
+  std::copy_backward(entry.begin(), entry.begin() + narrow,
+                     entry.begin() + narrow + wide_pairs.size());
+  std::copy(wide_pairs.begin(), wide_pairs.end(), entry.begin());
+  wide_[k] = std::uint32_t(wide_pairs.size());
+  return std::uint32_t(narrow + wide_pairs.size());
 }
 
 void AngularTable::compact(const std::vector<std::uint32_t>& kept) {

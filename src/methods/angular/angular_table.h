@@ -117,7 +117,7 @@ class AngularTable {
  private:
   void fill_entries(std::span<const std::vector<EntryPair>> lists);
   struct SortScratch {
-    std::vector<AngularPair> pairs;  // the entry's kept pairs in order
+    std::vector<AngularPair> pairs;  // the entry's kept wide pairs in order
   };
   // Sorts entry k and, given its slice, saturates it; returns the pairs kept at its front.
   std::uint32_t sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch);
