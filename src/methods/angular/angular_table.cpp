@@ -86,20 +86,25 @@ void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& shee
   }
 }
 
-// Sec. 7, steps 1.1-1.3: ridge edges, their loops and their theta range.
-void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& frame,
-                ObjectLoops& o) {
-  o.ridges = find_ridge_edges(mesh, sheets);
-  o.loops = chain_ridge_edge_loops(o.ridges);
-  // Eq. 2 once per vertex on a loop, in parallel.
-  std::vector<char> on_loop(mesh.vertices.size(), 0);
-  for (const RidgeEdge& re : o.ridges) on_loop[re.from] = on_loop[re.to] = 1;
+// Eq. 2 once per vertex on a ridge edge, in parallel.
+void ridge_thetas(const Mesh& mesh, const LightFrame& frame, ObjectLoops& o) {
+  std::vector<char> on_ridge(mesh.vertices.size(), 0);
+  for (const RidgeEdge& re : o.ridges) on_ridge[re.from] = on_ridge[re.to] = 1;
   o.theta.assign(mesh.vertices.size(), 0);
   tbb::parallel_for(std::size_t(0), o.theta.size(), [&](std::size_t v) {
-    if (!on_loop[v]) return;
+    if (!on_ridge[v]) return;
     const Vec3 p = o.local[v];
     o.theta[v] = frame.point_light() ? std::atan2(p.y, p.z) : p.y;
   });
+}
+
+// Sec. 7, steps 1.1-1.3: ridge edges, their loops (chained while eq. 2 is computed) and
+// their theta range.
+void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& frame,
+                ObjectLoops& o) {
+  o.ridges = find_ridge_edges(mesh, sheets);
+  tbb::parallel_invoke([&] { o.loops = chain_ridge_edge_loops(o.ridges); },
+                       [&] { ridge_thetas(mesh, frame, o); });
   for (const RidgeEdge& re : o.ridges) {
     double a = o.theta[re.from], b = o.theta[re.to];
     if (a > b) std::swap(a, b);
