@@ -24,7 +24,8 @@ struct EdgeSides {
   Crossing crossing(const ThetaSlice& s, std::uint32_t e) const {
     Crossing c;
     c.p = a + (b - a) * (ga / (ga - gb));
-    c.phi = s.phi(c.p);
+    c.rho = s.rho(c.p);
+    c.phi = s.phi(c.p, c.rho);
     c.edge = e;
     return c;
   }
@@ -84,7 +85,7 @@ bool partner(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, const Cr
     double best = kInf;
     for (const Crossing& c : cuts) {
       const double d = length(c.p - at.p);
-      if (s.rho(c.p) > 0 && d < best) best = d, out = c;
+      if (c.rho > 0 && d < best) best = d, out = c;
     }
     return best < kInf;
   }
@@ -101,8 +102,8 @@ bool partner(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, const Cr
 // Hazard: a point light's slice is a half-plane. When the segment from \p at leaves it
 // through the light's X axis, it is clipped there: phi runs to +-inf (tan(phi) of a point
 // on the axis). True when clipped.
-bool clip_at_axis(const ThetaSlice& s, const Crossing& at, Crossing& next) {
-  const double ra = s.rho(at.p), rb = s.rho(next.p);
+bool clip_at_axis(const Crossing& at, Crossing& next) {
+  const double ra = at.rho, rb = next.rho;
   if (rb >= 0) return false;
   const double x = at.p.x + (next.p.x - at.p.x) * (ra / (ra - rb));
   next.phi = x > 0 ? kInf : -kInf;
@@ -142,7 +143,7 @@ void walk(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, Crossing at
       const auto e = std::uint32_t(next.edge);
       path.push_back({f, e, sheet_neighbour(m.mesh, m.sheets, f, e)});
     }
-    const bool clipped = clip_at_axis(s, at, next);
+    const bool clipped = clip_at_axis(at, next);
     emit(m, s, f, at.phi, next.phi, out);
     if (clipped || path[step].beyond < 0) return;
     f = std::uint32_t(path[step].beyond);
@@ -198,7 +199,7 @@ void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Ri
       const bool from_below = (re.from == edge.v0 ? sides.ga : sides.gb) < 0;
       if (!(from_below && sides.crossed())) continue;  // up
       const Crossing at = sides.crossing(s, re.edge);
-      if (s.rho(at.p) <= 0) continue;  // in the half-plane at theta + pi: another entry's
+      if (at.rho <= 0) continue;  // in the half-plane at theta + pi: another entry's
       walk(m, s, re.face, at, scratch, out);
     }
   }
@@ -210,6 +211,7 @@ void slice_from_axis(const SlicedMesh& m, std::uint32_t f, std::span<const Theta
   at.p = {axis_piercing(m, f), 0, 0};
   at.phi = -kInf;
   for (const ThetaSlice& s : slices) {
+    at.rho = s.rho(at.p);
     scratch.path.clear();  // from the axis, the exit is not the only other crossing
     walk(m, s, f, at, scratch, out);
   }
@@ -220,16 +222,20 @@ double axis_piercing(const SlicedMesh& m, std::uint32_t f) {
   // The origin inside the face's projection on the (Y, F) plane (crossing number), and the
   // face's Newell normal.
   bool inside = false;
-  Vec3 normal{0, 0, 0};
   for (std::uint32_t k = 0; k < n; ++k) {
     const Vec3 a = m.local[m.mesh.face_vertex(f, k)];
     const Vec3 b = m.local[m.mesh.face_vertex(f, (k + 1) % n)];
     if ((a.y > 0) != (b.y > 0) && 0 < a.z + (b.z - a.z) * (0 - a.y) / (b.y - a.y)) {
       inside = !inside;
     }
-    normal = normal + cross(a, b);
   }
-  if (!inside || normal.x == 0) return std::numeric_limits<double>::quiet_NaN();
+  if (!inside) return std::numeric_limits<double>::quiet_NaN();
+  Vec3 normal{0, 0, 0};
+  for (std::uint32_t k = 0; k < n; ++k) {
+    normal = normal +
+             cross(m.local[m.mesh.face_vertex(f, k)], m.local[m.mesh.face_vertex(f, (k + 1) % n)]);
+  }
+  if (normal.x == 0) return std::numeric_limits<double>::quiet_NaN();
   return dot(normal, m.local[m.mesh.face_vertex(f, 0)]) / normal.x;
 }
 
