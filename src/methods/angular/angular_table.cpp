@@ -19,8 +19,9 @@ namespace shadowkit {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// RE loops sliced by one task: enough to outweigh its overhead, few enough lists to merge.
-constexpr std::size_t kLoopsPerChunk = 128;
+// The RE loops are sliced in this many chunks, each a task with its own list of pairs:
+// enough for both cores to balance on small scenes too, few enough lists to merge.
+constexpr std::size_t kChunks = 16;
 
 // One object's RE loops in the light's frame.
 struct ObjectLoops {
@@ -195,7 +196,7 @@ class Saturation {
   void keep(const AngularPair& p) { recent_[kept_++ % 2] = {p.phi_begin, p.phi_end, p.hidden, {}}; }
 
  private:
-  // A kept pair; its depth once a later pair falls within it (most never hold one).
+  // A kept pair; its depth is computed when a later pair first falls within it.
   struct Kept {
     double begin = 0, end = 0;
     std::uint32_t hidden = 0;
@@ -325,13 +326,12 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
             [&](std::uint32_t a, std::uint32_t b) { return phi[a] < phi[b]; });
   // Fixed chunks of that order, each into its own list: the lists in chunk order keep the
   // loops' order in every entry whichever thread sliced them.
-  const std::size_t chunks = (work.size() + kLoopsPerChunk - 1) / kLoopsPerChunk;
-  std::vector<std::vector<EntryPair>> lists(chunks);
+  const std::size_t per_chunk = (work.size() + kChunks - 1) / kChunks;
+  std::vector<std::vector<EntryPair>> lists(kChunks);
   tbb::enumerable_thread_specific<SliceScratch> scratch;
-  tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
+  tbb::parallel_for(std::size_t(0), kChunks, [&](std::size_t c) {
     SliceScratch& local = scratch.local();
-    for (std::size_t i = c * kLoopsPerChunk; i < std::min(work.size(), (c + 1) * kLoopsPerChunk);
-         ++i) {
+    for (std::size_t i = c * per_chunk; i < std::min(work.size(), (c + 1) * per_chunk); ++i) {
       const auto [o, l] = work[order[i]];
       const ObjectLoops& loops = objects[o];
       const SlicedMesh m{scene.objects[o].mesh, sheets[o],    loops.local,

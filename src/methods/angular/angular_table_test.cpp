@@ -304,7 +304,7 @@ TEST(AngularTable, AHoleLetsTheLightThroughAndDepthIsExactInsideSpans) {
 // The loops are sliced in fixed chunks whose lists are scattered in chunk order, so every
 // entry gets its pairs in the same order, and the same table, however many threads slice.
 TEST(AngularTable, TheTableDoesNotDependOnTheNumberOfThreads) {
-  const Scene scene = load_scene("cubes:300", {});  // 301 loops: three chunks
+  const Scene scene = load_scene("cubes:300", {});  // 301 loops, 19 per chunk
   const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center(), 0);
   const auto build = [&](int threads) {
     return tbb::task_arena(threads).execute([&] {
