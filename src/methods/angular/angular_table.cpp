@@ -1,8 +1,8 @@
 #include "angular_table.h"
 
-#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +19,9 @@ namespace shadowkit {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+// The RE loops are sliced in this many chunks, each a task with its own list of pairs:
+// enough for both cores to balance on small scenes too, few enough lists to merge.
+constexpr std::size_t kChunks = 16;
 
 // One object's RE loops in the light's frame.
 struct ObjectLoops {
@@ -45,16 +48,24 @@ bool convex_face(const Mesh& mesh, std::uint32_t f) {
   return true;
 }
 
-// Light-frame vertices, and the occluding faces' planes (the depth of Sec. 5) from \p first
-// on, in parallel over one object's vertices and faces.
+// Every object's vertices in the light's frame, in parallel.
+void place_vertices(const Scene& scene, const LightFrame& frame,
+                    std::vector<ObjectLoops>& objects) {
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    const Mesh& mesh = scene.objects[o].mesh;
+    objects[o].local.resize(mesh.vertices.size());
+    tbb::parallel_for(std::size_t(0), mesh.vertices.size(),
+                      [&](std::size_t v) { objects[o].local[v] = frame.local(mesh.vertices[v]); });
+  }
+}
+
+// The occluding faces' planes (the depth of Sec. 5) from \p first on, in parallel over one
+// object's faces.
 void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& sheets,
                         const LightFrame& frame, std::uint32_t first, ObjectLoops& loops,
                         std::vector<HiddenFace>& hidden) {
   const SceneObject& object = scene.objects[o];
   const Mesh& mesh = object.mesh;
-  loops.local.resize(mesh.vertices.size());
-  tbb::parallel_for(std::size_t(0), mesh.vertices.size(),
-                    [&](std::size_t v) { loops.local[v] = frame.local(mesh.vertices[v]); });
   loops.hidden_id.assign(mesh.face_count(), 0);
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
     if (sheets.occludes(f)) loops.hidden_id[f] = first++;
@@ -68,7 +79,7 @@ void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& shee
                                   face};
     if (pierced.empty()) return;
     loops.convex[f] = convex_face(mesh, f);
-    const SlicedMesh m{mesh, sheets, loops.local, loops.theta, loops.convex, loops.hidden_id};
+    const SlicedMesh m{mesh, sheets, loops.local, {}, loops.convex, loops.hidden_id};
     pierced[f] = axis_piercing(m, f) < 0;
   });
   for (std::uint32_t f = 0; f < pierced.size(); ++f) {
@@ -76,20 +87,25 @@ void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& shee
   }
 }
 
-// Sec. 7, steps 1.1-1.3: ridge edges, their loops and their theta range.
-void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& frame,
-                ObjectLoops& o) {
-  o.ridges = find_ridge_edges(mesh, sheets);
-  o.loops = chain_ridge_edge_loops(o.ridges);
-  // Eq. 2 once per vertex on a loop, in parallel.
-  std::vector<char> on_loop(mesh.vertices.size(), 0);
-  for (const RidgeEdge& re : o.ridges) on_loop[re.from] = on_loop[re.to] = 1;
+// Eq. 2 once per vertex on a ridge edge, in parallel.
+void ridge_thetas(const Mesh& mesh, const LightFrame& frame, ObjectLoops& o) {
+  std::vector<char> on_ridge(mesh.vertices.size(), 0);
+  for (const RidgeEdge& re : o.ridges) on_ridge[re.from] = on_ridge[re.to] = 1;
   o.theta.assign(mesh.vertices.size(), 0);
   tbb::parallel_for(std::size_t(0), o.theta.size(), [&](std::size_t v) {
-    if (!on_loop[v]) return;
+    if (!on_ridge[v]) return;
     const Vec3 p = o.local[v];
     o.theta[v] = frame.point_light() ? std::atan2(p.y, p.z) : p.y;
   });
+}
+
+// Sec. 7, steps 1.1-1.3: ridge edges, their loops (chained while eq. 2 is computed) and
+// their theta range.
+void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& frame,
+                ObjectLoops& o) {
+  o.ridges = find_ridge_edges(mesh, sheets);
+  tbb::parallel_invoke([&] { o.loops = chain_ridge_edge_loops(o.ridges); },
+                       [&] { ridge_thetas(mesh, frame, o); });
   for (const RidgeEdge& re : o.ridges) {
     double a = o.theta[re.from], b = o.theta[re.to];
     if (a > b) std::swap(a, b);
@@ -102,8 +118,8 @@ void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& fra
 // Sec. 3: theta from the global minimum to the global maximum over the RE loops (the whole
 // turn when they go around the light), cut to the theta the camera can see (eq. 4's range
 // "based on the view volume"), in R entries.
-ThetaQuantization quantize(const Scene& scene, const LightFrame& frame,
-                           const std::vector<ObjectLoops>& objects, int resolution) {
+ThetaQuantization quantize(const Scene& scene, const std::vector<ObjectLoops>& objects,
+                           const ViewTheta& view, double scan_line, int resolution) {
   ThetaQuantization q;
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const ObjectLoops& o : objects) {
@@ -112,7 +128,6 @@ ThetaQuantization quantize(const Scene& scene, const LightFrame& frame,
     hi = std::max(hi, o.theta_hi);
   }
   if (q.full_turn) lo = -kPi, hi = kPi;
-  const ViewTheta view = view_theta(scene, frame);
   if (view.bounded) {
     q.full_turn = false;
     lo = std::max(lo, view.lo);
@@ -124,7 +139,7 @@ ThetaQuantization quantize(const Scene& scene, const LightFrame& frame,
     lo -= pad, hi += pad;
   }
   const double range = std::max(hi - lo, 1e-12);
-  q.resolution = resolution > 0 ? resolution : automatic_resolution(scene, frame, range);
+  q.resolution = resolution > 0 ? resolution : automatic_resolution(scene, scan_line, range);
   q.step = range / q.resolution;
   q.theta_min = lo;
   return q;
@@ -159,33 +174,38 @@ class Saturation {
  public:
   Saturation(const AngularTable& table, const ThetaSlice& s) : table_(table), s_(s) {}
 
-  bool covers(const AngularPair& q) const {
+  bool covers(const AngularPair& q) {
     if (!std::isfinite(q.phi_begin) || !std::isfinite(q.phi_end)) return false;
     double depth[2] = {-1, -1};  // q's own, once needed
-    const auto nearer = [&](const Kept& p) {
+    const auto nearer = [&](Kept& p) {
       if (p.begin > q.phi_begin || p.end < q.phi_end) return false;
       if (depth[0] < 0) {
-        const RayDepth own(s_, table_.hidden(q.hidden).plane);
+        const RayDepth own = ray_depth(q.hidden);
         depth[0] = own.at(q.phi_begin), depth[1] = own.at(q.phi_end);
       }
-      return std::isfinite(depth[0]) && std::isfinite(depth[1]) &&
-             depth[0] > p.depth.at(q.phi_begin) * (1 + 1e-9) &&
-             depth[1] > p.depth.at(q.phi_end) * (1 + 1e-9);
+      if (!std::isfinite(depth[0]) || !std::isfinite(depth[1])) return false;
+      if (!p.depth) p.depth = ray_depth(p.hidden);
+      return depth[0] > p.depth->at(q.phi_begin) * (1 + 1e-9) &&
+             depth[1] > p.depth->at(q.phi_end) * (1 + 1e-9);
     };
     for (std::size_t i = 0; i < std::min<std::size_t>(kept_, 2); ++i) {
       if (nearer(recent_[i])) return true;
     }
     return false;
   }
-  void keep(const AngularPair& p) {
-    recent_[kept_++ % 2] = {p.phi_begin, p.phi_end, RayDepth(s_, table_.hidden(p.hidden).plane)};
-  }
+  void keep(const AngularPair& p) { recent_[kept_++ % 2] = {p.phi_begin, p.phi_end, p.hidden, {}}; }
 
  private:
+  // A kept pair; its depth is computed when a later pair first falls within it.
   struct Kept {
     double begin = 0, end = 0;
-    RayDepth depth;
+    std::uint32_t hidden = 0;
+    std::optional<RayDepth> depth;
   };
+  RayDepth ray_depth(std::uint32_t hidden) const {
+    return RayDepth(s_, table_.hidden(hidden).plane);
+  }
+
   const AngularTable& table_;
   const ThetaSlice& s_;
   std::size_t kept_ = 0;
@@ -212,6 +232,33 @@ std::pair<std::vector<std::uint32_t>, std::vector<Vec3>> hidden_corners(
   return {std::move(start), std::move(corners)};
 }
 
+// The occluding faces in hidden-id order: their planes (the depth of Sec. 5) and corners.
+struct Occluders {
+  std::vector<HiddenFace> hidden;
+  std::vector<std::uint32_t> corner_start;
+  std::vector<Vec3> corners;
+};
+
+// Also numbers each object's occluding faces, and marks their convexity and the axis faces.
+Occluders place_occluders(const Scene& scene, const std::vector<FarSheets>& sheets,
+                          const LightFrame& frame, std::vector<ObjectLoops>& objects) {
+  std::vector<std::uint32_t> first_hidden(objects.size() + 1, 0);
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    std::uint32_t n = 0;
+    for (std::uint32_t f = 0; f < scene.objects[o].mesh.face_count(); ++f) {
+      n += sheets[o].occludes(f);
+    }
+    first_hidden[o + 1] = first_hidden[o] + n;
+  }
+  Occluders out;
+  out.hidden.resize(first_hidden.back());
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], out.hidden);
+  }
+  std::tie(out.corner_start, out.corners) = hidden_corners(scene, objects, sheets);
+  return out;
+}
+
 }  // namespace
 
 std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow_from(
@@ -224,34 +271,32 @@ std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow
   return {skipped ? &narrow[skipped - 1] : nullptr, narrow.subspan(skipped)};
 }
 
-int ThetaQuantization::entry(int k) const {
-  if (full_turn) return ((k % resolution) + resolution) % resolution;
-  return k >= 0 && k < resolution ? k : -1;
-}
-
 AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
                                  const std::vector<FarSheets>& sheets,
                                  const AngularTableOptions& options) {
   AngularTable table;
-  // Steps 1.1-1.3 per object, and the occluding faces' planes (the depth of Sec. 5).
   std::vector<ObjectLoops> objects(scene.objects.size());
-  std::vector<std::uint32_t> first_hidden(objects.size() + 1, 0);
-  for (std::size_t o = 0; o < objects.size(); ++o) {
-    std::uint32_t n = 0;
-    for (std::uint32_t f = 0; f < scene.objects[o].mesh.face_count(); ++f) {
-      n += sheets[o].occludes(f);
-    }
-    first_hidden[o + 1] = first_hidden[o] + n;
-  }
-  table.hidden_.resize(first_hidden.back());
-  for (std::size_t o = 0; o < objects.size(); ++o) {
-    place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], table.hidden_);
-  }
-  std::tie(table.corner_start_, table.corners_) = hidden_corners(scene, objects, sheets);
-  tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
-    find_loops(scene.objects[o].mesh, sheets[o], frame, objects[o]);
-  });
-  table.theta_ = quantize(scene, frame, objects, options.resolution);
+  place_vertices(scene, frame, objects);
+  // Three independent tasks at once: steps 1.1-1.3 per object; the occluding faces' planes
+  // and corners (the depth of Sec. 5); eq. 4's inputs from the view.
+  Occluders occluders;
+  ViewTheta view;
+  double scan_line = 0;
+  tbb::parallel_invoke(
+      [&] {
+        tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
+          find_loops(scene.objects[o].mesh, sheets[o], frame, objects[o]);
+        });
+      },
+      [&] { occluders = place_occluders(scene, sheets, frame, objects); },
+      [&] {
+        view = view_theta(scene, frame);
+        if (options.resolution == 0) scan_line = scan_line_theta(scene, frame);
+      });
+  table.hidden_ = std::move(occluders.hidden);
+  table.corner_start_ = std::move(occluders.corner_start);
+  table.corners_ = std::move(occluders.corners);
+  table.theta_ = quantize(scene, objects, view, scan_line, options.resolution);
   for (const ObjectLoops& o : objects) {
     table.loop_stats_.ridge_edges += double(o.ridges.size());
     table.loop_stats_.loops += double(o.loops.size());
@@ -279,34 +324,32 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   std::iota(order.begin(), order.end(), 0u);
   std::sort(order.begin(), order.end(),
             [&](std::uint32_t a, std::uint32_t b) { return phi[a] < phi[b]; });
-  struct Output {
-    SliceScratch scratch;
-    std::vector<EntryPair> pairs;
-  };
-  tbb::enumerable_thread_specific<Output> outputs;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, work.size(), 64), [&](const auto& range) {
-    Output& out = outputs.local();
-    for (std::size_t i = range.begin(); i != range.end(); ++i) {
+  // Fixed chunks of that order, each into its own list: the lists in chunk order keep the
+  // loops' order in every entry whichever thread sliced them.
+  const std::size_t per_chunk = (work.size() + kChunks - 1) / kChunks;
+  std::vector<std::vector<EntryPair>> lists(kChunks);
+  tbb::enumerable_thread_specific<SliceScratch> scratch;
+  tbb::parallel_for(std::size_t(0), kChunks, [&](std::size_t c) {
+    SliceScratch& local = scratch.local();
+    for (std::size_t i = c * per_chunk; i < std::min(work.size(), (c + 1) * per_chunk); ++i) {
       const auto [o, l] = work[order[i]];
       const ObjectLoops& loops = objects[o];
       const SlicedMesh m{scene.objects[o].mesh, sheets[o],    loops.local,
                          loops.theta,           loops.convex, loops.hidden_id};
       if (l < loops.loops.size()) {
-        slice_loop(m, loops.ridges, loops.loops[l], table.theta_, slices, out.scratch, out.pairs);
+        slice_loop(m, loops.ridges, loops.loops[l], table.theta_, slices, local, lists[c]);
       } else {
-        slice_from_axis(m, ~l, slices, out.scratch, out.pairs);
+        slice_from_axis(m, ~l, slices, local, lists[c]);
       }
     }
   });
-  std::vector<std::vector<EntryPair>> lists;
-  for (Output& out : outputs) lists.push_back(std::move(out.pairs));
   table.fill_entries(lists);
   // Step 1.7: sort each entry by phi; Sec. 10: saturate.
   table.wide_.assign(table.theta_.resolution, 0);
   std::vector<std::uint32_t> kept(table.theta_.resolution);
-  tbb::enumerable_thread_specific<SortScratch> scratch;
+  tbb::enumerable_thread_specific<SortScratch> sort_scratch;
   tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
-    kept[k] = table.sort_entry(k, options.saturated ? &slices[k] : nullptr, scratch.local());
+    kept[k] = table.sort_entry(k, options.saturated ? &slices[k] : nullptr, sort_scratch.local());
   });
   table.compact(kept);
   return table;
@@ -341,36 +384,44 @@ void AngularTable::fill_entries(std::span<const std::vector<EntryPair>> lists) {
 std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch) {
   const std::span<AngularPair> entry(pairs_.data() + start_[k], pairs_.data() + start_[k + 1]);
   if (entry.empty()) return 0;
-  // Step 1.7: sort by phi_begin.
-  std::sort(entry.begin(), entry.end(), [](const AngularPair& a, const AngularPair& b) {
+  // Step 1.7: sort by phi_begin. The pairs arrive nearly sorted (loops in order of phi), so
+  // an insertion sort.
+  const auto before = [](const AngularPair& a, const AngularPair& b) {
     return a.phi_begin != b.phi_begin ? a.phi_begin < b.phi_begin : a.hidden < b.hidden;
-  });
-  std::vector<AngularPair>& sorted = scratch.pairs;
-  sorted.clear();
+  };
+  double extent_end = entry.front().phi_end;
+  for (auto it = entry.begin() + 1; it < entry.end(); ++it) {
+    const AngularPair pair = *it;
+    extent_end = std::max(extent_end, pair.phi_end);
+    auto hole = it;
+    for (; hole != entry.begin() && before(pair, *(hole - 1)); --hole) *hole = *(hole - 1);
+    *hole = pair;
+  }
+  // Sec. 10 drops only pairs within a kept one, and never the first: the kept pairs have the
+  // same extent. Wide pairs go first, so that the reach of the narrow ones skips well; the
+  // narrow ones move down in place past the dropped and the wide.
+  const double wide = (extent_end - entry.front().phi_begin) / 16;
   std::optional<Saturation> saturation;
   if (saturate) saturation.emplace(*this, *saturate);
-  double extent_end = -std::numeric_limits<double>::infinity();
+  std::vector<AngularPair>& wide_pairs = scratch.pairs;
+  wide_pairs.clear();
+  std::size_t narrow = 0;
+  double reach = -std::numeric_limits<double>::infinity();
   for (const AngularPair& pair : entry) {
     if (saturation && saturation->covers(pair)) continue;
     if (saturation) saturation->keep(pair);
-    extent_end = std::max(extent_end, pair.phi_end);
-    sorted.push_back(pair);
+    if (pair.phi_end - pair.phi_begin > wide) {
+      wide_pairs.push_back(pair);
+      continue;
+    }
+    entry[narrow] = pair;
+    entry[narrow++].reach = reach = std::max(reach, pair.phi_end);
   }
-  // Wide pairs first, so that the reach of the narrow ones skips well.
-  const double wide = (extent_end - sorted.front().phi_begin) / 16;
-  const auto is_wide = [wide](const AngularPair& p) { return p.phi_end - p.phi_begin > wide; };
-  std::size_t out = 0;
-  for (const AngularPair& pair : sorted) {
-    if (is_wide(pair)) entry[out++] = pair;
-  }
-  wide_[k] = std::uint32_t(out);
-  double reach = -std::numeric_limits<double>::infinity();
-  for (const AngularPair& pair : sorted) {
-    if (is_wide(pair)) continue;
-    entry[out] = pair;
-    entry[out++].reach = reach = std::max(reach, pair.phi_end);
-  }
-  return std::uint32_t(out);
+  std::copy_backward(entry.begin(), entry.begin() + narrow,
+                     entry.begin() + narrow + wide_pairs.size());
+  std::copy(wide_pairs.begin(), wide_pairs.end(), entry.begin());
+  wide_[k] = std::uint32_t(wide_pairs.size());
+  return std::uint32_t(narrow + wide_pairs.size());
 }
 
 void AngularTable::compact(const std::vector<std::uint32_t>& kept) {

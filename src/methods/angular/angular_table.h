@@ -44,7 +44,10 @@ struct ThetaQuantization {
     return int(std::clamp(std::floor((theta - theta_min) / step), -1.0, double(resolution)));
   }
   /// The table entry of unwrapped index \p k; -1 when outside the table.
-  int entry(int k) const;
+  int entry(int k) const {
+    if (full_turn) return ((k % resolution) + resolution) % resolution;
+    return k >= 0 && k < resolution ? k : -1;
+  }
   double lower(int k) const { return theta_min + k * step; }
   double centre(int k) const { return theta_min + (k + 0.5) * step; }
 };
@@ -114,7 +117,7 @@ class AngularTable {
  private:
   void fill_entries(std::span<const std::vector<EntryPair>> lists);
   struct SortScratch {
-    std::vector<AngularPair> pairs;  // the entry's kept pairs in order
+    std::vector<AngularPair> pairs;  // the entry's kept wide pairs in order
   };
   // Sorts entry k and, given its slice, saturates it; returns the pairs kept at its front.
   std::uint32_t sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch);

@@ -1,6 +1,7 @@
 #include "angular_table.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <cmath>
 #include <map>
@@ -13,6 +14,7 @@
 #include "loop_slicer.h"
 #include "occluders.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/scene/scene_file.h"
 
 namespace shadowkit {
 namespace {
@@ -297,6 +299,41 @@ TEST(AngularTable, AHoleLetsTheLightThroughAndDepthIsExactInsideSpans) {
   EXPECT_GT(hole, 20);
   EXPECT_GT(under_frame, 20);
   EXPECT_GT(testing::counter(angular, "re_loops"), 1);  // outer and hole loops
+}
+
+// The loops are sliced in fixed chunks whose lists are scattered in chunk order, so every
+// entry gets its pairs in the same order, and the same table, however many threads slice.
+TEST(AngularTable, TheTableDoesNotDependOnTheNumberOfThreads) {
+  const Scene scene = load_scene("cubes:300", {});  // 301 loops, 19 per chunk
+  const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center(), 0);
+  const auto build = [&](int threads) {
+    return tbb::task_arena(threads).execute([&] {
+      return AngularTable::build(scene, frame, occluding_sheets(scene, scene.lights[0]), {});
+    });
+  };
+  const AngularTable one = build(1), two = build(2);
+  ASSERT_GT(one.pair_count(), 10000u);
+  EXPECT_GT(one.saturated_count(), 1000u);
+  EXPECT_EQ(two.pair_count(), one.pair_count());
+  EXPECT_EQ(two.saturated_count(), one.saturated_count());
+  ASSERT_EQ(two.theta().resolution, one.theta().resolution);
+  for (int k = 0; k < one.theta().resolution; ++k) {
+    const auto a = one.entry(k), b = two.entry(k);
+    ASSERT_EQ(a.size(), b.size()) << "entry " << k;
+    ASSERT_EQ(one.wide(k).size(), two.wide(k).size()) << "entry " << k;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a[i].phi_begin, b[i].phi_begin);
+      EXPECT_EQ(a[i].phi_end, b[i].phi_end);
+      EXPECT_EQ(a[i].reach, b[i].reach);
+      EXPECT_EQ(a[i].hidden, b[i].hidden);
+    }
+    // Step 1.7: the narrow pairs sorted by phi_begin, each reach the running maximum end.
+    const auto narrow = a.subspan(one.wide(k).size());
+    for (std::size_t i = 1; i < narrow.size(); ++i) {
+      EXPECT_LE(narrow[i - 1].phi_begin, narrow[i].phi_begin);
+      EXPECT_EQ(narrow[i].reach, std::max(narrow[i - 1].reach, narrow[i].phi_end));
+    }
+  }
 }
 
 }  // namespace

@@ -10,22 +10,29 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-bool crosses(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t e) {
-  const MeshEdge& edge = m.mesh.edges[e];
-  return (s.side(m.local[edge.v0]) >= 0) != (s.side(m.local[edge.v1]) >= 0);
-}
+// Mesh edge e's ends in the light frame and their sides of one slice, each computed once per
+// edge and slice.
+struct EdgeSides {
+  Vec3 a, b;
+  double ga = 0, gb = 0;
 
-// Computed from the edge's lower vertex id, so that both faces of an edge get the same bits
-// and neighbouring pairs meet without a crack.
+  EdgeSides(const SlicedMesh& m, const ThetaSlice& s, const MeshEdge& edge)
+      : a(m.local[edge.v0]), b(m.local[edge.v1]), ga(s.side(a)), gb(s.side(b)) {}
+  bool crossed() const { return (ga >= 0) != (gb >= 0); }
+  // Computed from the edge's lower vertex id, so that both faces of an edge get the same
+  // bits and neighbouring pairs meet without a crack.
+  Crossing crossing(const ThetaSlice& s, std::uint32_t e) const {
+    Crossing c;
+    c.p = a + (b - a) * (ga / (ga - gb));
+    c.rho = s.rho(c.p);
+    c.phi = s.phi(c.p, c.rho);
+    c.edge = e;
+    return c;
+  }
+};
+
 Crossing edge_crossing(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t e) {
-  const MeshEdge& edge = m.mesh.edges[e];
-  const Vec3 a = m.local[edge.v0], b = m.local[edge.v1];
-  const double ga = s.side(a), gb = s.side(b);
-  Crossing c;
-  c.p = a + (b - a) * (ga / (ga - gb));
-  c.phi = s.phi(c.p);
-  c.edge = e;
-  return c;
+  return EdgeSides(m, s, m.mesh.edges[e]).crossing(s, e);
 }
 
 // The crossings of face f's edges by the slice, ordered along the cut line.
@@ -35,7 +42,8 @@ void face_cuts(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f,
   const std::uint32_t n = m.mesh.face_size(f);
   for (std::uint32_t k = 0; k < n; ++k) {
     const std::uint32_t e = m.mesh.corner_edge[m.mesh.face_start[f] + k];
-    if (crosses(m, s, e)) cuts.push_back(edge_crossing(m, s, e));
+    const EdgeSides edge(m, s, m.mesh.edges[e]);
+    if (edge.crossed()) cuts.push_back(edge.crossing(s, e));
   }
   if (cuts.size() <= 2) return;
   // A non-convex face: the cut is several segments along one line.
@@ -77,7 +85,7 @@ bool partner(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, const Cr
     double best = kInf;
     for (const Crossing& c : cuts) {
       const double d = length(c.p - at.p);
-      if (s.rho(c.p) > 0 && d < best) best = d, out = c;
+      if (c.rho > 0 && d < best) best = d, out = c;
     }
     return best < kInf;
   }
@@ -94,8 +102,8 @@ bool partner(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, const Cr
 // Hazard: a point light's slice is a half-plane. When the segment from \p at leaves it
 // through the light's X axis, it is clipped there: phi runs to +-inf (tan(phi) of a point
 // on the axis). True when clipped.
-bool clip_at_axis(const ThetaSlice& s, const Crossing& at, Crossing& next) {
-  const double ra = s.rho(at.p), rb = s.rho(next.p);
+bool clip_at_axis(const Crossing& at, Crossing& next) {
+  const double ra = at.rho, rb = next.rho;
   if (rb >= 0) return false;
   const double x = at.p.x + (next.p.x - at.p.x) * (ra / (ra - rb));
   next.phi = x > 0 ? kInf : -kInf;
@@ -105,6 +113,18 @@ bool clip_at_axis(const ThetaSlice& s, const Crossing& at, Crossing& next) {
 void emit(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, double a, double b,
           std::vector<EntryPair>& out) {
   out.push_back({s.entry, m.hidden_id[f], std::min(a, b), std::max(a, b)});
+}
+
+// The walk's step-th face f is convex and was left by an edge that still crosses the slice:
+// \p next is that crossing.
+bool along_path(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f,
+                const std::vector<WalkStep>& path, std::size_t step, Crossing& next) {
+  if (step >= path.size() || path[step].face != f || !m.convex[f]) return false;
+  const std::uint32_t exit = path[step].exit;
+  const EdgeSides edge(m, s, m.mesh.edges[exit]);
+  if (!edge.crossed()) return false;
+  next = edge.crossing(s, exit);
+  return true;
 }
 
 // Walks the far sheet from \p at (on face f's edge, or on the light's X axis) across the
@@ -117,16 +137,13 @@ void walk(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, Crossing at
   std::vector<WalkStep>& path = scratch.path;
   for (std::size_t step = 0; step < m.mesh.face_count(); ++step) {
     Crossing next;
-    if (step < path.size() && path[step].face == f && m.convex[f] &&
-        crosses(m, s, path[step].exit)) {
-      next = edge_crossing(m, s, path[step].exit);
-    } else {
+    if (!along_path(m, s, f, path, step, next)) {
       path.resize(step);
       if (!partner(m, s, f, at, scratch.cuts, next)) return;
-      const auto exit = std::uint32_t(next.edge);
-      path.push_back({f, exit, sheet_neighbour(m.mesh, m.sheets, f, exit)});
+      const auto e = std::uint32_t(next.edge);
+      path.push_back({f, e, sheet_neighbour(m.mesh, m.sheets, f, e)});
     }
-    const bool clipped = clip_at_axis(s, at, next);
+    const bool clipped = clip_at_axis(at, next);
     emit(m, s, f, at.phi, next.phi, out);
     if (clipped || path[step].beyond < 0) return;
     f = std::uint32_t(path[step].beyond);
@@ -177,9 +194,12 @@ void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Ri
       const int entry = q.entry(k);
       if (entry < 0) continue;
       const ThetaSlice& s = slices[entry];
-      if (!(s.side(m.local[re.from]) < 0 && s.side(m.local[re.to]) >= 0)) continue;  // up
-      const Crossing at = edge_crossing(m, s, re.edge);
-      if (s.rho(at.p) <= 0) continue;  // in the half-plane at theta + pi: another entry's
+      const MeshEdge& edge = m.mesh.edges[re.edge];
+      const EdgeSides sides(m, s, edge);
+      const bool from_below = (re.from == edge.v0 ? sides.ga : sides.gb) < 0;
+      if (!(from_below && sides.crossed())) continue;  // up
+      const Crossing at = sides.crossing(s, re.edge);
+      if (at.rho <= 0) continue;  // in the half-plane at theta + pi: another entry's
       walk(m, s, re.face, at, scratch, out);
     }
   }
@@ -191,6 +211,7 @@ void slice_from_axis(const SlicedMesh& m, std::uint32_t f, std::span<const Theta
   at.p = {axis_piercing(m, f), 0, 0};
   at.phi = -kInf;
   for (const ThetaSlice& s : slices) {
+    at.rho = s.rho(at.p);
     scratch.path.clear();  // from the axis, the exit is not the only other crossing
     walk(m, s, f, at, scratch, out);
   }
@@ -201,16 +222,20 @@ double axis_piercing(const SlicedMesh& m, std::uint32_t f) {
   // The origin inside the face's projection on the (Y, F) plane (crossing number), and the
   // face's Newell normal.
   bool inside = false;
-  Vec3 normal{0, 0, 0};
   for (std::uint32_t k = 0; k < n; ++k) {
     const Vec3 a = m.local[m.mesh.face_vertex(f, k)];
     const Vec3 b = m.local[m.mesh.face_vertex(f, (k + 1) % n)];
     if ((a.y > 0) != (b.y > 0) && 0 < a.z + (b.z - a.z) * (0 - a.y) / (b.y - a.y)) {
       inside = !inside;
     }
-    normal = normal + cross(a, b);
   }
-  if (!inside || normal.x == 0) return std::numeric_limits<double>::quiet_NaN();
+  if (!inside) return std::numeric_limits<double>::quiet_NaN();
+  Vec3 normal{0, 0, 0};
+  for (std::uint32_t k = 0; k < n; ++k) {
+    normal = normal +
+             cross(m.local[m.mesh.face_vertex(f, k)], m.local[m.mesh.face_vertex(f, (k + 1) % n)]);
+  }
+  if (normal.x == 0) return std::numeric_limits<double>::quiet_NaN();
   return dot(normal, m.local[m.mesh.face_vertex(f, 0)]) / normal.x;
 }
 

@@ -22,14 +22,16 @@ struct ThetaSlice {
   /// Distance from the light's X axis inside the half-plane at theta; negative in the
   /// half-plane at theta + pi. Always 1 for a directional light.
   double rho(Vec3 v) const { return point_light ? v.y * sin + v.z * cos : 1; }
-  /// phi as AngularPoint keeps it (tan(phi) for a point light) of a point on the plane.
-  double phi(Vec3 v) const { return point_light ? v.x / rho(v) : v.x; }
+  /// phi as AngularPoint keeps it (tan(phi) for a point light) of a point on the plane,
+  /// given its rho.
+  double phi(Vec3 v, double rho_v) const { return point_light ? v.x / rho_v : v.x; }
 };
 
 /// \brief A point where a slice crosses the far sheet's boundary or a face's edge.
 struct Crossing {
   Vec3 p;
   double phi = 0;
+  double rho = 1;          ///< ThetaSlice::rho(p), kept for the clip at the light's X axis
   std::int64_t edge = -1;  ///< mesh edge; -1 on the light's X axis
 };
 

@@ -55,7 +55,7 @@ ViewTheta view_theta(const Scene& scene, const LightFrame& frame) {
   return view;
 }
 
-int automatic_resolution(const Scene& scene, const LightFrame& frame, double theta_range) {
+double scan_line_theta(const Scene& scene, const LightFrame& frame) {
   const ViewFrustum frustum = view_of(scene);
   const Camera& camera = scene.camera;
   const double row_step = camera.pixel_grid().step;  // one scan line at unit depth
@@ -68,12 +68,17 @@ int automatic_resolution(const Scene& scene, const LightFrame& frame, double the
       if (rho > 0) steps.push_back(dot(p - camera.position, camera.forward()) * row_step / rho);
     }
   }
-  if (steps.empty()) return camera.height;
+  if (steps.empty()) return 0;
   const auto quartile = steps.begin() + steps.size() / 4;
   std::nth_element(steps.begin(), quartile, steps.end());
+  return *quartile;
+}
+
+int automatic_resolution(const Scene& scene, double scan_line, double theta_range) {
+  if (scan_line == 0) return scene.camera.height;
   // Sec. 3: beyond a limit set by the screen no entry shows; eight per scan line bound the
   // table when most vertices crowd the camera.
-  return int(std::clamp(theta_range / *quartile, 1.0, 8.0 * camera.height));
+  return int(std::clamp(theta_range / scan_line, 1.0, 8.0 * scene.camera.height));
 }
 
 }  // namespace shadowkit

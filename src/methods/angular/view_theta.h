@@ -19,10 +19,14 @@ struct ViewTheta {
 /// The theta range of the scene's bounding box clipped to the view frustum.
 ViewTheta view_theta(const Scene& scene, const LightFrame& frame);
 
+/// Eq. 4's unit: the theta of one scan line at three quarters of the scene vertices in view
+/// (a quartile of their per-vertex steps); 0 when no vertex is in view.
+double scan_line_theta(const Scene& scene, const LightFrame& frame);
+
 /// \brief Eq. 4 generalized: R such that one entry is no coarser than one scan line (Sec. 3:
-/// "at the limiting range there is a unique theta value for each scan line") at three
-/// quarters of the scene vertices in view, over \p theta_range, at most 8 per scan line of
-/// the image; the number of scan lines when no vertex is in view.
-int automatic_resolution(const Scene& scene, const LightFrame& frame, double theta_range);
+/// "at the limiting range there is a unique theta value for each scan line"), \p scan_line
+/// as scan_line_theta gives it, over \p theta_range, at most 8 per scan line of the image;
+/// the number of scan lines when no vertex is in view.
+int automatic_resolution(const Scene& scene, double scan_line, double theta_range);
 
 }  // namespace shadowkit
