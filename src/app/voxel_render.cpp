@@ -46,8 +46,11 @@ int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx) {
   const auto view_start = std::chrono::steady_clock::now();
   write_png(options.image, source.render(scene.camera));
   const double view_ms = ms_since(view_start);
-  std::printf("%zu triangles; voxelization, shadows and tessellation %.1f ms; view %.1f ms: %s\n",
-              source.triangle_count(), prepare_ms, view_ms, options.image.c_str());
+  std::printf(
+      "%zu triangles; voxelization, shadows and tessellation %.1f ms (shadow data %.1f MB); "
+      "view %.1f ms: %s\n",
+      source.triangle_count(), prepare_ms, double(voxel_method.memory_bytes()) / 1e6, view_ms,
+      options.image.c_str());
   if (!options.turned_image.empty()) {
     const auto turn_start = std::chrono::steady_clock::now();
     write_png(options.turned_image, source.render(turned(scene.camera, options.turn_deg)));

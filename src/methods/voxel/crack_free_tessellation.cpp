@@ -199,8 +199,10 @@ SubpatchTessellation tessellate_subpatches(const PatchSet& patches, const VoxelG
         const Vec3 p0 = out.triangles.positions[first + t[0]];
         const Vec3 p1 = out.triangles.positions[first + t[1]];
         const Vec3 p2 = out.triangles.positions[first + t[2]];
-        // A degenerate patch (a polygon of no area) gives triangles without area; they are
-        // left out (Mesh::build would drop them too, at a tolerance far below this).
+        // None of the tested scenes gives a triangle without area any more (collapsed
+        // leaves are fanned); a sliver polygon of the input still could, and Mesh::build
+        // would drop it (at a tolerance far below this): left out here, counted by the
+        // watertightness tests.
         const double longest = std::max({length(p1 - p0), length(p2 - p1), length(p0 - p2)});
         if (!(length(cross(p1 - p0, p2 - p0)) > kFlat * longest * longest)) continue;
         out.triangles.add_face({first + t[0], first + t[1], first + t[2]});
