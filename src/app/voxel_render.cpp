@@ -1,5 +1,6 @@
 // The voxel-render command: Lai & Cheng §5's image of the subpatches, shaded from the cubic
-// frame buffer, and a second view that reuses the shadow work.
+// frame buffer (§5.2) and a second view that reuses the shadow work, or without the frame
+// buffer (§5.1) one still image.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -31,16 +32,25 @@ int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx) {
   const auto settings = options.settings.find("voxel");
   const auto method =
       make_method("voxel", settings == options.settings.end() ? MethodOptions{} : settings->second);
+  auto& voxel_method = dynamic_cast<VoxelMethod&>(*method);
+  // §5.1 keeps no shadow states: a second view would redo all the shadow work.
+  if (!options.turned_image.empty() && !voxel_method.keeps_frame_buffer()) {
+    throw InputError("option '--turned-image'",
+                     "a second view without new shadow work is what the cubic frame buffer is "
+                     "for; voxel.framebuffer=0 (Lai & Cheng 5.1) renders one still image");
+  }
   const Scene scene = load_scene(options.scene, ctx);
   const auto start = std::chrono::steady_clock::now();
-  const voxel::SubpatchImage source =
-      voxel::make_subpatch_image(scene, dynamic_cast<VoxelMethod&>(*method), ctx);
+  const voxel::SubpatchImage source = voxel::make_subpatch_image(scene, voxel_method, ctx);
   const double prepare_ms = ms_since(start);
   const auto view_start = std::chrono::steady_clock::now();
   write_png(options.image, source.render(scene.camera));
   const double view_ms = ms_since(view_start);
-  std::printf("%zu triangles; voxelization, shadows and tessellation %.1f ms; view %.1f ms: %s\n",
-              source.triangle_count(), prepare_ms, view_ms, options.image.c_str());
+  std::printf(
+      "%zu triangles; voxelization, shadows and tessellation %.1f ms (shadow data %.1f MB); "
+      "view %.1f ms: %s\n",
+      source.triangle_count(), prepare_ms, double(voxel_method.memory_bytes()) / 1e6, view_ms,
+      options.image.c_str());
   if (!options.turned_image.empty()) {
     const auto turn_start = std::chrono::steady_clock::now();
     write_png(options.turned_image, source.render(turned(scene.camera, options.turn_deg)));

@@ -149,6 +149,11 @@ TEST_F(Cli, VoxelRenderWritesBothViews) {
   expect_bad_input(
       "voxel-render square --set voxel.resolution=30 --image " + (dir_ / "c.png").string(),
       "voxel.resolution");
+  expect_bad_input(
+      "voxel-render square --set voxel.test=offset --set voxel.framebuffer=0 "
+      "--image " +
+          (dir_ / "c.png").string() + " --turned-image " + (dir_ / "d.png").string(),
+      "--turned-image");
 }
 
 TEST_F(Cli, FragmentsWritesPlyAndAreasThatSumToEachPolygon) {

@@ -92,7 +92,9 @@ int main(int argc, char** argv) {
 
   VoxelRenderOptions voxel_render;
   auto* voxel_render_cmd = app.add_subcommand(
-      "voxel-render", "voxel: the subpatches shaded from the cubic frame buffer (Lai & Cheng §5)");
+      "voxel-render",
+      "voxel: the subpatches shaded from the cubic frame buffer, or on the fly with "
+      "voxel.framebuffer=0 (Lai & Cheng §5)");
   add_shared(voxel_render_cmd, voxel_render, shared);
   voxel_render_cmd->add_option("--image", voxel_render.image, "PNG file")->required();
   voxel_render_cmd->add_option("--turned-image", voxel_render.turned_image,

@@ -1,7 +1,5 @@
 #include "crack_free_tessellation.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <bit>
 #include <unordered_map>
@@ -104,6 +102,60 @@ class Tessellator {
   PointLists sides_;               ///< per shared side id: canonical parameters
 };
 
+// One leaf's polygon: its points in (u, v) and its triangles, counter-clockwise in (u, v).
+struct LeafPolygon {
+  std::vector<std::array<double, 2>> points;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+// §5.3: the zigzag between chain a (corner 0, side 0, corner 1, side 1, corner 2) and chain
+// b (corner 0, side 3 backwards, corner 3, side 2 backwards, corner 2), a then b.
+LeafPolygon zigzag_polygon(const Tessellator& tessellator, const Leaf& leaf) {
+  const auto c = corner_uv(leaf.domain);
+  std::vector<std::array<double, 2>> a{c[0]}, b{c[0]};
+  for (int k : {0, 1}) {
+    const auto side = tessellator.side_points(leaf, k);
+    a.insert(a.end(), side.begin(), side.end());
+    a.push_back(c[k + 1]);
+  }
+  for (int k : {3, 2}) {
+    auto side = tessellator.side_points(leaf, k);
+    std::reverse(side.begin(), side.end());
+    b.insert(b.end(), side.begin(), side.end());
+    b.push_back(c[k]);
+  }
+  LeafPolygon out{a, zigzag(a.size(), b.size())};
+  out.points.insert(out.points.end(), b.begin(), b.end());
+  return out;
+}
+
+// Whether side 2 of \p leaf is one point: a polygon triangle is the patch (a, b, c, c),
+// and its leaves on v = 1 are triangles (corner 0, corner 1, c).
+bool collapsed(const PatchSet& patches, const Leaf& leaf) {
+  const auto& ids = patches[leaf.patch].corner_ids;
+  return ids[2] == ids[3] && leaf.domain.v1 == 1;
+}
+
+// A collapsed leaf fanned from its centre. The zigzag would end chain b in copies of c and
+// pair side 1's points with them: triangles without area, leaving side 1 drawn as one
+// segment beside a neighbour that has those points (a T-junction, a crack). The centre is
+// on no side's line, so no triangle of the fan lacks area. The patch is planar and affine
+// along v = const: the centroid of (corner 0, corner 1, c) is at (u mid, v0 + (1 - v0) / 3).
+LeafPolygon fan_polygon(const Tessellator& tessellator, const Leaf& leaf) {
+  const auto c = corner_uv(leaf.domain);
+  LeafPolygon out;
+  for (int k : {0, 1, 3}) {  // side 3 runs from c (corner 3) back to corner 0
+    out.points.push_back(c[k]);
+    const auto side = tessellator.side_points(leaf, k);
+    out.points.insert(out.points.end(), side.begin(), side.end());
+  }
+  const auto n = std::uint32_t(out.points.size());
+  const Domain& d = leaf.domain;
+  out.points.push_back({0.5 * (d.u0 + d.u1), d.v0 + (1 - d.v0) / 3});
+  for (std::uint32_t k = 0; k < n; ++k) out.triangles.push_back({n, k, (k + 1) % n});
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::array<std::uint32_t, 3>> zigzag(std::size_t a, std::size_t b) {
@@ -129,50 +181,34 @@ std::vector<std::array<std::uint32_t, 3>> zigzag(std::size_t a, std::size_t b) {
 
 SubpatchTessellation tessellate_subpatches(const PatchSet& patches, const VoxelGrid& grid,
                                            int adjacency) {
-  std::vector<std::vector<Leaf>> leaves(patches.size());
-  tbb::parallel_for(std::size_t(0), patches.size(), [&](std::size_t p) {
-    voxelize_patch(patches, std::uint32_t(p), grid, adjacency,
-                   [&](const Subpatch&, const Domain& d) {
-                     leaves[p].push_back({std::uint32_t(p), d});
-                   });
-  });
+  const std::vector<std::vector<Leaf>> leaves =
+      map_leaves<Leaf>(patches, grid, adjacency, [](const Subpatch& leaf, const Domain& d) {
+        return Leaf{leaf.patch, d};
+      });
   const Tessellator tessellator(patches, leaves);
   SubpatchTessellation out;
-  std::uint32_t leaf_id = 0;
   for (const auto& patch_leaves : leaves) {
     for (const Leaf& leaf : patch_leaves) {
-      const auto c = corner_uv(leaf.domain);
-      // Chain a: corner 0, side 0, corner 1, side 1, corner 2; chain b: corner 0, side 3
-      // backwards, corner 3, side 2 backwards, corner 2.
-      std::vector<std::array<double, 2>> a{c[0]}, b{c[0]};
-      for (int k : {0, 1}) {
-        const auto side = tessellator.side_points(leaf, k);
-        a.insert(a.end(), side.begin(), side.end());
-        a.push_back(c[k + 1]);
-      }
-      for (int k : {3, 2}) {
-        auto side = tessellator.side_points(leaf, k);
-        std::reverse(side.begin(), side.end());
-        b.insert(b.end(), side.begin(), side.end());
-        b.push_back(c[k]);
-      }
+      const LeafPolygon polygon = collapsed(patches, leaf) ? fan_polygon(tessellator, leaf)
+                                                           : zigzag_polygon(tessellator, leaf);
       const auto first = std::uint32_t(out.triangles.positions.size());
-      for (const auto& chain : {a, b}) {
-        for (const auto& [u, v] : chain)
-          out.triangles.positions.push_back(patches.point(leaf.patch, u, v));
+      for (const auto& [u, v] : polygon.points) {
+        out.triangles.positions.push_back(patches.point(leaf.patch, u, v));
       }
-      for (const auto& t : zigzag(a.size(), b.size())) {
+      for (const auto& t : polygon.triangles) {
         const Vec3 p0 = out.triangles.positions[first + t[0]];
         const Vec3 p1 = out.triangles.positions[first + t[1]];
         const Vec3 p2 = out.triangles.positions[first + t[2]];
-        // Collapsed sides (a triangle patch's corner) give triangles without area; those
-        // are left out (Mesh::build would drop them too, at a tolerance far below this).
+        // None of the tested scenes gives a triangle without area any more (collapsed
+        // leaves are fanned); a sliver polygon of the input still could, and Mesh::build
+        // would drop it (at a tolerance far below this): left out here, counted by the
+        // watertightness tests.
         const double longest = std::max({length(p1 - p0), length(p2 - p1), length(p0 - p2)});
         if (!(length(cross(p1 - p0, p2 - p0)) > kFlat * longest * longest)) continue;
         out.triangles.add_face({first + t[0], first + t[1], first + t[2]});
-        out.leaf.push_back(leaf_id);
+        out.leaf.push_back(std::uint32_t(out.leaf_patch.size()));
       }
-      ++leaf_id;
+      out.leaf_patch.push_back(leaf.patch);
     }
   }
   return out;

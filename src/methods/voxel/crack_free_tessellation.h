@@ -17,6 +17,7 @@ namespace shadowkit::voxel {
 struct SubpatchTessellation {
   PolygonSoup triangles;
   std::vector<std::uint32_t> leaf;
+  std::vector<std::uint32_t> leaf_patch;  ///< per subpatch: its patch
 };
 
 SubpatchTessellation tessellate_subpatches(const PatchSet& patches, const VoxelGrid& grid,

@@ -50,7 +50,11 @@ bool StreamedShadows::shadowed(Vec3 g, Vec3 normal) const {
   // point on a voxel face (a plane on a grid plane) takes the voxel on the light's side:
   // the one behind would put A' within a voxel of the surface's own voxels.
   const Vec3 side = dot(normal, projection_.toward_light(g)) < 0 ? -normal : normal;
-  const Vec3 a = VoxelGrid::center(grid_.voxel_of(g + side * kFaceSlack));
+  return voxel_shadowed(grid_.voxel_of(g + side * kFaceSlack), normal);
+}
+
+bool StreamedShadows::voxel_shadowed(const VoxelIndex& v, Vec3 normal) const {
+  const Vec3 a = VoxelGrid::center(v);
   return !nearest_the_light(projection_, nearest_, a) &&
          offset_test_shadowed(projection_, nearest_, normal, a);
 }

@@ -20,6 +20,9 @@ class StreamedShadows {
                   const Light& light);
   /// Whether the voxel of grid point \p g, on a surface of normal \p normal, is shadowed.
   bool shadowed(Vec3 g, Vec3 normal) const;
+  /// Whether voxel \p v, on a surface of normal \p normal, is shadowed: nearest the light in
+  /// its entry is lit, the rest is decided by the offset test (§4.1) with A its centre.
+  bool voxel_shadowed(const VoxelIndex& v, Vec3 normal) const;
   std::size_t entry_count() const { return nearest_.entry_count(); }
   std::size_t memory_bytes() const { return nearest_.memory_bytes(); }
 

@@ -22,21 +22,42 @@ CornerShading corner_shading(int shadowed_corners) {
   return {1.0 / double(1 << shadowed_corners), shadowed_corners == 0};
 }
 
-std::vector<std::uint8_t> shadowed_corners(const std::vector<Subpatch>& leaves,
-                                           const CubicFrameBuffer& buffer) {
+namespace {
+
+// How many corners of \p leaf are in voxels \p shadowed says are.
+template <class Shadowed>
+std::uint8_t count_shadowed(const Subpatch& leaf, const Shadowed& shadowed) {
+  int n = 0;
+  for (const GridPoint& c : leaf.corner) n += shadowed(voxel_floor(c.vec()));
+  return std::uint8_t(n);
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> shadowed_corners(const VoxelMethod& method) {
+  if (!method.keeps_frame_buffer()) {
+    // §5.1: the recursion again, each corner decided as the recursion reaches it.
+    const StreamedShadows& streamed = method.streamed_shadows();
+    const VoxelGrid& grid = method.grid();
+    return concatenate(map_leaves<std::uint8_t>(
+        method.patches(), grid, method.adjacency(), [&](const Subpatch& leaf, const Domain&) {
+          const Vec3 normal = leaf_normal(leaf);
+          return count_shadowed(leaf, [&](const VoxelIndex& v) {
+            return grid.contains(v) && streamed.voxel_shadowed(v, normal);
+          });
+        }));
+  }
+  const std::vector<Subpatch>& leaves = method.subpatches();
+  const CubicFrameBuffer& buffer = method.frame_buffer();
   std::vector<std::uint8_t> counts(leaves.size());
   tbb::parallel_for(std::size_t(0), leaves.size(), [&](std::size_t l) {
-    int n = 0;
-    for (const GridPoint& c : leaves[l].corner) {
-      n += buffer.state(voxel_floor(c.vec())) == VoxelState::shadowed;
-    }
-    counts[l] = std::uint8_t(n);
+    counts[l] = count_shadowed(
+        leaves[l], [&](const VoxelIndex& v) { return buffer.state(v) == VoxelState::shadowed; });
   });
   return counts;
 }
 
 SubpatchImage::SubpatchImage(const Scene& scene, const PatchSet& patches,
-                             const std::vector<Subpatch>& leaves_in_order,
                              const SubpatchTessellation& tessellation,
                              std::vector<std::vector<std::uint8_t>> shadowed_per_light)
     : shadowed_(std::move(shadowed_per_light)) {
@@ -48,7 +69,7 @@ SubpatchImage::SubpatchImage(const Scene& scene, const PatchSet& patches,
   const PolygonSoup& all = tessellation.triangles;
   for (std::size_t t = 0; t < tessellation.leaf.size(); ++t) {
     const std::uint32_t leaf = tessellation.leaf[t];
-    const std::uint32_t object = patches[leaves_in_order[leaf].patch].object;
+    const std::uint32_t object = patches[tessellation.leaf_patch[leaf]].object;
     PolygonSoup& soup = soups[object];
     const auto first = std::uint32_t(soup.positions.size());
     for (std::uint32_t k = all.face_start[t]; k < all.face_start[t + 1]; ++k) {
@@ -70,20 +91,15 @@ SubpatchImage::SubpatchImage(const Scene& scene, const PatchSet& patches,
 }
 
 SubpatchImage make_subpatch_image(const Scene& scene, VoxelMethod& method, const Context& ctx) {
-  if (!method.keeps_frame_buffer()) {
-    throw InputError("option 'voxel.framebuffer'",
-                     "voxel-render needs the cubic frame buffer (1); 0 (5.1) is not rendered yet");
-  }
   method.prepare(scene, ctx);
   std::vector<std::vector<std::uint8_t>> shadowed;
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
     method.build(scene, l, ctx);
-    shadowed.push_back(shadowed_corners(method.subpatches(), method.frame_buffer()));
+    shadowed.push_back(shadowed_corners(method));
   }
-  const PatchSet patches(scene);
   const SubpatchTessellation tessellation =
-      tessellate_subpatches(patches, method.frame_buffer().grid(), method.adjacency());
-  return SubpatchImage(scene, patches, method.subpatches(), tessellation, std::move(shadowed));
+      tessellate_subpatches(method.patches(), method.grid(), method.adjacency());
+  return SubpatchImage(scene, method.patches(), tessellation, std::move(shadowed));
 }
 
 Image<Rgb8> SubpatchImage::render(const Camera& camera) const {

@@ -39,12 +39,16 @@ class VoxelMethod final : public ShadowMethod {
   std::size_t memory_bytes() const override;
   MethodCounters counters() const override;
 
-  /// Whether the states are kept in the frame buffer (§5.2), which the accessors below
-  /// describe; with `framebuffer=0` (§5.1) they are empty.
+  const voxel::VoxelGrid& grid() const { return grid_; }
+  const voxel::PatchSet& patches() const { return *patches_; }
+  int adjacency() const { return adjacency_; }
+  /// Whether the states are kept in the frame buffer (§5.2), which the two accessors below
+  /// describe; with `framebuffer=0` (§5.1) they are empty and streamed_shadows() decides.
   bool keeps_frame_buffer() const { return !streamed_mode_; }
   const voxel::CubicFrameBuffer& frame_buffer() const { return buffer_; }
-  int adjacency() const { return adjacency_; }
   const std::vector<voxel::Subpatch>& subpatches() const { return leaves_; }
+  /// §5.1: the current light's projection plane, after build().
+  const voxel::StreamedShadows& streamed_shadows() const { return *streamed_; }
   /// The state at world point \p p: its voxel's, or for an empty voxel (the voxelization
   /// marks only subpatch corners) the nearest non-empty voxel's within two voxels.
   voxel::VoxelState state_at(Vec3 p) const;

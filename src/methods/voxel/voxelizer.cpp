@@ -1,7 +1,5 @@
 #include "voxelizer.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
@@ -114,20 +112,8 @@ bool small_enough(const Corners& corners, int adjacency) {
 }
 
 std::vector<Subpatch> voxelize(const PatchSet& patches, const VoxelGrid& grid, int adjacency) {
-  std::vector<std::vector<Subpatch>> per_patch(patches.size());
-  tbb::parallel_for(std::size_t(0), patches.size(), [&](std::size_t p) {
-    voxelize_patch(patches, std::uint32_t(p), grid, adjacency,
-                   [&](const Subpatch& leaf, const Domain&) { per_patch[p].push_back(leaf); });
-  });
-  std::size_t total = 0;
-  for (const auto& leaves : per_patch) total += leaves.size();
-  std::vector<Subpatch> leaves;
-  leaves.reserve(total);
-  for (auto& part : per_patch) {
-    leaves.insert(leaves.end(), part.begin(), part.end());
-    std::vector<Subpatch>().swap(part);
-  }
-  return leaves;
+  return concatenate(map_leaves<Subpatch>(
+      patches, grid, adjacency, [](const Subpatch& leaf, const Domain&) { return leaf; }));
 }
 
 }  // namespace shadowkit::voxel

@@ -1,6 +1,8 @@
 #pragma once
 // Lai & Cheng §3: voxelization by recursive midpoint subdivision of each patch's parameter
 // space, until the voxels of a subpatch's four corners are N-adjacent.
+#include <tbb/parallel_for.h>
+
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -39,8 +41,35 @@ void voxelize_patch(const PatchSet& patches, std::uint32_t patch, const VoxelGri
 /// The voxel of grid point \p g, unclamped (coordinates may lie outside the grid).
 VoxelIndex voxel_floor(Vec3 g);
 
-/// The leaf subpatches of every patch that reach \p grid, patches in parallel (oneTBB),
-/// in patch order.
+/// Runs the recursion over every patch, patches in parallel (oneTBB): per patch, \p value
+/// (Subpatch, Domain) -> T of each of its leaves, in the recursion's order.
+template <class T, class Value>
+std::vector<std::vector<T>> map_leaves(const PatchSet& patches, const VoxelGrid& grid,
+                                       int adjacency, const Value& value) {
+  std::vector<std::vector<T>> per_patch(patches.size());
+  tbb::parallel_for(std::size_t(0), patches.size(), [&](std::size_t p) {
+    voxelize_patch(
+        patches, std::uint32_t(p), grid, adjacency,
+        [&](const Subpatch& leaf, const Domain& d) { per_patch[p].push_back(value(leaf, d)); });
+  });
+  return per_patch;
+}
+
+/// The parts one after the other, each freed once copied.
+template <class T>
+std::vector<T> concatenate(std::vector<std::vector<T>> parts) {
+  std::size_t total = 0;
+  for (const auto& part : parts) total += part.size();
+  std::vector<T> out;
+  out.reserve(total);
+  for (auto& part : parts) {
+    out.insert(out.end(), part.begin(), part.end());
+    std::vector<T>().swap(part);
+  }
+  return out;
+}
+
+/// The leaf subpatches of every patch that reach \p grid, in patch order.
 std::vector<Subpatch> voxelize(const PatchSet& patches, const VoxelGrid& grid, int adjacency);
 
 }  // namespace shadowkit::voxel
