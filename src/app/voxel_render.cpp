@@ -26,6 +26,23 @@ Camera turned(Camera camera, double degrees) {
   return camera;
 }
 
+// Triangles the §5.1 still render draws at a time: the peak memory of its tessellation.
+constexpr std::size_t kStillBatchTriangles = std::size_t(1) << 18;
+
+// §5.1: one still image, the tessellation drawn in batches as it is made.
+int render_still(const Scene& scene, VoxelMethod& method, const VoxelRenderOptions& options,
+                 const Context& ctx) {
+  const auto start = std::chrono::steady_clock::now();
+  const voxel::StillImage still = voxel::render_still(scene, method, ctx, kStillBatchTriangles);
+  write_png(options.image, still.image);
+  std::printf(
+      "%zu triangles in %zu batches; voxelization, shadows, tessellation and view %.1f ms "
+      "(shadow data %.1f MB): %s\n",
+      still.triangles, still.batches, ms_since(start), double(method.memory_bytes()) / 1e6,
+      options.image.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx) {
@@ -40,6 +57,7 @@ int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx) {
                      "for; voxel.framebuffer=0 (Lai & Cheng 5.1) renders one still image");
   }
   const Scene scene = load_scene(options.scene, ctx);
+  if (!voxel_method.keeps_frame_buffer()) return render_still(scene, voxel_method, options, ctx);
   const auto start = std::chrono::steady_clock::now();
   const voxel::SubpatchImage source = voxel::make_subpatch_image(scene, voxel_method, ctx);
   const double prepare_ms = ms_since(start);

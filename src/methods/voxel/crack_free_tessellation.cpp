@@ -1,7 +1,10 @@
 #include "crack_free_tessellation.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <bit>
+#include <limits>
 #include <unordered_map>
 
 namespace shadowkit::voxel {
@@ -34,13 +37,39 @@ std::array<std::array<double, 2>, 4> corner_uv(const Domain& d) {
   return {{{d.u0, d.v0}, {d.u1, d.v0}, {d.u1, d.v1}, {d.u0, d.v1}}};
 }
 
+// §5.1's first pass: the points evaluated on the patch sides, per shared side id in
+// canonical parameters, all that a patch's tessellation needs from its neighbours. A side
+// holds O(M) points, so this is kept for the whole scene while the leaves are not.
+PointLists shared_side_points(const PatchSet& patches, const VoxelGrid& grid, int adjacency) {
+  std::vector<std::vector<std::pair<std::uint64_t, double>>> per_patch(patches.size());
+  tbb::parallel_for(std::uint32_t(0), std::uint32_t(patches.size()), [&](std::uint32_t p) {
+    voxelize_patch(patches, p, grid, adjacency, [&](const Subpatch&, const Domain& d) {
+      for (const auto& [u, v] : corner_uv(d)) {
+        if ((u == 0 || u == 1) == (v == 0 || v == 1)) continue;  // inside, or a corner
+        const auto [side, t] = PatchSet::side_of(u, v);
+        per_patch[p].emplace_back(patches.side_id(p, side), patches.canonical_t(p, side, t));
+      }
+    });
+  });
+  PointLists sides;
+  for (auto& points : per_patch) {
+    for (const auto& [side, t] : points) sides[side].push_back(t);
+    std::vector<std::pair<std::uint64_t, double>>().swap(points);
+  }
+  sort_unique(sides);
+  return sides;
+}
+
+// The polylines of the leaves of a run of patches: the points of lines inside those patches,
+// and of the whole scene's patch sides.
 class Tessellator {
  public:
-  Tessellator(const PatchSet& patches, const std::vector<std::vector<Leaf>>& leaves)
-      : patches_(patches), leaves_(leaves), lines_(leaves.size()) {
-    for (std::uint32_t p = 0; p < leaves.size(); ++p) index_patch(p);
+  /// \p leaves: those of patches first_patch, first_patch + 1, ...
+  Tessellator(const PatchSet& patches, const PointLists& sides, std::uint32_t first_patch,
+              const std::vector<std::vector<Leaf>>& leaves)
+      : patches_(patches), sides_(sides), first_patch_(first_patch), lines_(leaves.size()) {
+    for (std::size_t p = 0; p < leaves.size(); ++p) index_lines(leaves[p], lines_[p]);
     for (auto& lines : lines_) sort_unique(lines);
-    sort_unique(sides_);
   }
 
   // The points strictly inside side k of \p leaf, in order from corner k.
@@ -67,7 +96,7 @@ class Tessellator {
         if (uv[axis] > lo && uv[axis] < hi) keep(uv[axis]);
       }
     } else {
-      const auto& values = lines_[leaf.patch].at(line_key(1 - axis, fixed));
+      const auto& values = lines_[leaf.patch - first_patch_].at(line_key(1 - axis, fixed));
       for (auto it = std::upper_bound(values.begin(), values.end(), lo);
            it != values.end() && *it < hi; ++it) {
         keep(*it);
@@ -82,24 +111,19 @@ class Tessellator {
   }
 
  private:
-  void index_patch(std::uint32_t p) {
-    for (const Leaf& leaf : leaves_[p]) {
+  static void index_lines(const std::vector<Leaf>& leaves, PointLists& lines) {
+    for (const Leaf& leaf : leaves) {
       for (const auto& [u, v] : corner_uv(leaf.domain)) {
-        const bool u_edge = u == 0 || u == 1, v_edge = v == 0 || v == 1;
-        if (!v_edge) lines_[p][line_key(1, v)].push_back(u);
-        if (!u_edge) lines_[p][line_key(0, u)].push_back(v);
-        if (u_edge != v_edge) {
-          const auto [side, t] = PatchSet::side_of(u, v);
-          sides_[patches_.side_id(p, side)].push_back(patches_.canonical_t(p, side, t));
-        }
+        if (v != 0 && v != 1) lines[line_key(1, v)].push_back(u);
+        if (u != 0 && u != 1) lines[line_key(0, u)].push_back(v);
       }
     }
   }
 
   const PatchSet& patches_;
-  const std::vector<std::vector<Leaf>>& leaves_;
-  std::vector<PointLists> lines_;  ///< per patch: key (axis of the fixed value, value)
-  PointLists sides_;               ///< per shared side id: canonical parameters
+  const PointLists& sides_;
+  std::uint32_t first_patch_;
+  std::vector<PointLists> lines_;  ///< per patch of the run: key (axis of the fixed value, value)
 };
 
 // One leaf's polygon: its points in (u, v) and its triangles, counter-clockwise in (u, v).
@@ -156,6 +180,34 @@ LeafPolygon fan_polygon(const Tessellator& tessellator, const Leaf& leaf) {
   return out;
 }
 
+// Appends \p leaf's polygon to \p out.
+void add_leaf(const PatchSet& patches, const Tessellator& tessellator, const Leaf& leaf,
+              SubpatchTessellation& out) {
+  const LeafPolygon polygon =
+      collapsed(patches, leaf) ? fan_polygon(tessellator, leaf) : zigzag_polygon(tessellator, leaf);
+  const auto first = std::uint32_t(out.triangles.positions.size());
+  for (const auto& [u, v] : polygon.points) {
+    out.triangles.positions.push_back(patches.point(leaf.patch, u, v));
+  }
+  for (const auto& t : polygon.triangles) {
+    const Vec3 p0 = out.triangles.positions[first + t[0]];
+    const Vec3 p1 = out.triangles.positions[first + t[1]];
+    const Vec3 p2 = out.triangles.positions[first + t[2]];
+    // None of the tested scenes gives a triangle without area any more (collapsed
+    // leaves are fanned); a sliver polygon of the input still could, and Mesh::build
+    // would drop it (at a tolerance far below this): left out here, counted by the
+    // watertightness tests.
+    const double longest = std::max({length(p1 - p0), length(p2 - p1), length(p0 - p2)});
+    if (!(length(cross(p1 - p0, p2 - p0)) > kFlat * longest * longest)) continue;
+    out.triangles.add_face({first + t[0], first + t[1], first + t[2]});
+    out.leaf.push_back(out.first_leaf + std::uint32_t(out.leaf_patch.size()));
+  }
+  out.leaf_patch.push_back(leaf.patch);
+}
+
+// Patches whose leaves are made at once (in parallel) before they are tessellated.
+constexpr std::size_t kRunPatches = 16;
+
 }  // namespace
 
 std::vector<std::array<std::uint32_t, 3>> zigzag(std::size_t a, std::size_t b) {
@@ -179,39 +231,38 @@ std::vector<std::array<std::uint32_t, 3>> zigzag(std::size_t a, std::size_t b) {
   return out;
 }
 
-SubpatchTessellation tessellate_subpatches(const PatchSet& patches, const VoxelGrid& grid,
-                                           int adjacency) {
-  const std::vector<std::vector<Leaf>> leaves =
-      map_leaves<Leaf>(patches, grid, adjacency, [](const Subpatch& leaf, const Domain& d) {
-        return Leaf{leaf.patch, d};
-      });
-  const Tessellator tessellator(patches, leaves);
+void tessellate_in_batches(const PatchSet& patches, const VoxelGrid& grid, int adjacency,
+                           std::size_t batch_triangles,
+                           const std::function<void(SubpatchTessellation)>& batch) {
+  const PointLists sides = shared_side_points(patches, grid, adjacency);
   SubpatchTessellation out;
-  for (const auto& patch_leaves : leaves) {
-    for (const Leaf& leaf : patch_leaves) {
-      const LeafPolygon polygon = collapsed(patches, leaf) ? fan_polygon(tessellator, leaf)
-                                                           : zigzag_polygon(tessellator, leaf);
-      const auto first = std::uint32_t(out.triangles.positions.size());
-      for (const auto& [u, v] : polygon.points) {
-        out.triangles.positions.push_back(patches.point(leaf.patch, u, v));
-      }
-      for (const auto& t : polygon.triangles) {
-        const Vec3 p0 = out.triangles.positions[first + t[0]];
-        const Vec3 p1 = out.triangles.positions[first + t[1]];
-        const Vec3 p2 = out.triangles.positions[first + t[2]];
-        // None of the tested scenes gives a triangle without area any more (collapsed
-        // leaves are fanned); a sliver polygon of the input still could, and Mesh::build
-        // would drop it (at a tolerance far below this): left out here, counted by the
-        // watertightness tests.
-        const double longest = std::max({length(p1 - p0), length(p2 - p1), length(p0 - p2)});
-        if (!(length(cross(p1 - p0, p2 - p0)) > kFlat * longest * longest)) continue;
-        out.triangles.add_face({first + t[0], first + t[1], first + t[2]});
-        out.leaf.push_back(std::uint32_t(out.leaf_patch.size()));
-      }
-      out.leaf_patch.push_back(leaf.patch);
+  for (std::size_t first = 0; first < patches.size(); first += kRunPatches) {
+    const std::vector<std::vector<Leaf>> leaves = map_leaves<Leaf>(
+        patches, grid, adjacency,
+        [](const Subpatch& leaf, const Domain& d) {
+          return Leaf{leaf.patch, d};
+        },
+        first, kRunPatches);
+    const Tessellator tessellator(patches, sides, std::uint32_t(first), leaves);
+    for (const auto& patch_leaves : leaves) {
+      for (const Leaf& leaf : patch_leaves) add_leaf(patches, tessellator, leaf, out);
+    }
+    if (out.leaf.size() >= batch_triangles) {
+      const auto next_leaf = out.first_leaf + std::uint32_t(out.leaf_patch.size());
+      batch(std::move(out));
+      out = SubpatchTessellation{};
+      out.first_leaf = next_leaf;
     }
   }
-  return out;
+  if (!out.leaf_patch.empty()) batch(std::move(out));
+}
+
+SubpatchTessellation tessellate_subpatches(const PatchSet& patches, const VoxelGrid& grid,
+                                           int adjacency) {
+  SubpatchTessellation whole;
+  tessellate_in_batches(patches, grid, adjacency, std::numeric_limits<std::size_t>::max(),
+                        [&](SubpatchTessellation all) { whole = std::move(all); });
+  return whole;
 }
 
 }  // namespace shadowkit::voxel

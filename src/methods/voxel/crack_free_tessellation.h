@@ -4,6 +4,7 @@
 // subpatch or by finer neighbours, in its patch or across a shared patch side), and the
 // polygon is triangulated by a zigzag between its two chains from corner 0 to corner 2.
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "patch_set.h"
@@ -17,9 +18,20 @@ namespace shadowkit::voxel {
 struct SubpatchTessellation {
   PolygonSoup triangles;
   std::vector<std::uint32_t> leaf;
-  std::vector<std::uint32_t> leaf_patch;  ///< per subpatch: its patch
+  std::vector<std::uint32_t> leaf_patch;  ///< per subpatch from first_leaf on: its patch
+  std::uint32_t first_leaf = 0;           ///< of a batch, its first subpatch
+  std::uint32_t patch_of(std::uint32_t subpatch) const { return leaf_patch[subpatch - first_leaf]; }
 };
 
+/// §5.1: the tessellation sent on as it is made, in batches of whole patches in patch
+/// order, each of at least \p batch_triangles triangles but the last. Only the points on
+/// the patch sides (a first pass over every patch) are kept for the whole scene, so the
+/// memory follows the batch, not the scene's tessellation.
+void tessellate_in_batches(const PatchSet& patches, const VoxelGrid& grid, int adjacency,
+                           std::size_t batch_triangles,
+                           const std::function<void(SubpatchTessellation)>& batch);
+
+/// The whole tessellation as one batch.
 SubpatchTessellation tessellate_subpatches(const PatchSet& patches, const VoxelGrid& grid,
                                            int adjacency);
 

@@ -27,31 +27,72 @@ CornerShading corner_shading(int shadowed_corners);
 /// recursion again. A corner outside the grid counts as lit.
 std::vector<std::uint8_t> shadowed_corners(const VoxelMethod& method);
 
+/// Per light of \p scene, the shadowed corners of every subpatch: \p method prepared and
+/// built for each light in turn.
+std::vector<std::vector<std::uint8_t>> shadowed_corners_per_light(const Scene& scene,
+                                                                  VoxelMethod& method,
+                                                                  const Context& ctx);
+
+/// \brief Tessellated subpatches as a scene the z-buffer draws, one object per scene object
+/// that has triangles.
+class SubpatchView {
+ public:
+  SubpatchView(const Scene& scene, const PatchSet& patches,
+               const SubpatchTessellation& tessellation);
+  /// Shades, as seen by \p camera, the pixels of \p image where these triangles are nearer
+  /// than \p depth (distance along the pixel ray), and lowers \p depth there: ambient, plus
+  /// per light Lambert diffuse scaled by corner_shading() of \p shadowed (per light, per
+  /// subpatch) and a Blinn-Phong highlight. Equal depths keep what was drawn first.
+  void draw(const Camera& camera, const std::vector<std::vector<std::uint8_t>>& shadowed,
+            Image<Rgb8>& image, std::vector<float>& depth);
+  std::size_t triangle_count() const { return leaf_.size(); }
+
+ private:
+  Scene view_;                         ///< the triangles, with the scene's lights
+  std::vector<std::uint32_t> object_;  ///< per object of view_: the scene's object
+  std::vector<std::uint32_t> leaf_;    ///< per face of view_
+};
+
+/// An image of \p camera's size, all background, and its depths (+inf).
+struct Frame {
+  explicit Frame(const Camera& camera);
+  Image<Rgb8> image;
+  std::vector<float> depth;
+};
+
 /// \brief The scene's subpatches, tessellated once (§5.3), with the shadowed-corner counts
-/// of every light; render() draws them from any camera.
+/// of every light; render() draws them from any camera (§5.2).
 class SubpatchImage {
  public:
   SubpatchImage(const Scene& scene, const PatchSet& patches,
                 const SubpatchTessellation& tessellation,
                 std::vector<std::vector<std::uint8_t>> shadowed_per_light);
-  /// The image seen by \p camera: ambient, plus per light Lambert diffuse scaled by
-  /// corner_shading() and a Blinn-Phong highlight.
   Image<Rgb8> render(const Camera& camera) const;
-  std::size_t triangle_count() const { return leaf_.size(); }
+  std::size_t triangle_count() const { return view_.triangle_count(); }
   /// Per subpatch, its shadowed corners for light \p light.
   const std::vector<std::uint8_t>& shadowed_corners(std::size_t light) const {
     return shadowed_[light];
   }
 
  private:
-  Scene view_;  ///< the triangles as one object per scene object, with the scene's lights
-  std::vector<std::uint32_t> leaf_;  ///< per face of view_
+  SubpatchView view_;
   std::vector<std::vector<std::uint8_t>> shadowed_;
 };
 
-/// §5 for a whole scene: \p method prepared and built for every light, the shadowed corners
-/// of each light kept (from the frame buffer, §5.2, or on the fly, §5.1), the subpatches
-/// tessellated once.
+/// §5 for a whole scene: the shadowed corners of each light kept (from the frame buffer,
+/// §5.2, or on the fly, §5.1), the subpatches tessellated once.
 SubpatchImage make_subpatch_image(const Scene& scene, VoxelMethod& method, const Context& ctx);
+
+/// \brief §5.1's one still image and how it was drawn.
+struct StillImage {
+  Image<Rgb8> image;
+  std::size_t triangles = 0, batches = 0;
+};
+
+/// §5.1 for a whole scene, in little memory: the shadowed corners of each light, then the
+/// tessellation drawn batch by batch (tessellate_in_batches(), \p batch_triangles) as it is
+/// made, each batch shaded at once and composited by depth into the scene camera's image.
+StillImage render_still(const Scene& scene, VoxelMethod& method, const Context& ctx,
+                        std::size_t batch_triangles);
 
 }  // namespace shadowkit::voxel

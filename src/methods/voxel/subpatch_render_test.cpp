@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 
@@ -116,11 +117,15 @@ struct Render {
   std::size_t method_bytes;
 };
 
+MethodOptions offset_options(const std::string& resolution, const std::string& framebuffer) {
+  return MethodOptions("voxel", {{"resolution", resolution},
+                                 {"test", "offset"},
+                                 {"bound", "scene"},
+                                 {"framebuffer", framebuffer}});
+}
+
 Render render(const Scene& scene, const std::string& resolution, const std::string& framebuffer) {
-  VoxelMethod method(MethodOptions("voxel", {{"resolution", resolution},
-                                             {"test", "offset"},
-                                             {"bound", "scene"},
-                                             {"framebuffer", framebuffer}}));
+  VoxelMethod method(offset_options(resolution, framebuffer));
   SubpatchImage image = make_subpatch_image(scene, method, {});
   return {std::move(image), method.memory_bytes()};
 }
@@ -192,6 +197,64 @@ TEST(StreamedRender, ResolutionTwoThousandFortyEightInLittleMemory) {
   EXPECT_LE(agreement.differing_pct, 0.1);  // flat squares: one normal per voxel
   EXPECT_LT(streamed.method_bytes * 20, kept.method_bytes);
   EXPECT_EQ(streamed.image.render(scene.camera).width, 64);
+}
+
+constexpr Rgb8 kBackground{24, 26, 32};
+
+// Polygon boxes (12 patches each) and a Catmull-Clark box on a ground, in front of and
+// behind each other from the camera: more patches than one run of the batched tessellation.
+Scene boxes_scene() {
+  std::vector<PolygonSoup> soups{testing::horizontal_quad(-4, 4, -4, 4, 0)};
+  for (int k = 0; k < 4; ++k) {
+    const Vec3 lo{-2.5 + 1.3 * k, 0, -1.5 + 0.9 * k};
+    soups.push_back(testing::box(lo, lo + Vec3{0.9, 0.6 + 0.3 * k, 0.8}));
+  }
+  Scene scene = testing::make_scene(
+      testing::camera({1, 4, 7}, {0, 0.5, 0}, 160, 120),
+      {testing::point_light({2, 6, 1}), testing::directional_light({-0.4, -1, -0.2})}, soups);
+  auto surface = SubdivisionSurface::build(testing::box({-1, 0, 1}, {0.4, 1.2, 2.2}), "cube");
+  scene.objects.push_back({"cube", Mesh::build(surface->tessellate(3), "cube", {}), 0, surface});
+  scene.finalize();
+  return scene;
+}
+
+// §5.1's still render draws the tessellation batch by batch and composites by depth: the
+// picture of drawing it at once (the same triangles, the earlier batch winning a tie as the
+// lower triangle index does in one pass), but where two batches' surfaces tie only in the
+// float depth of the visible-surface buffer, which one pass breaks in double.
+TEST(StillRender, BatchesGiveTheImageOfOnePass) {
+  const Scene scene = boxes_scene();
+  const Render whole = render(scene, "64", "0");
+  const Image<Rgb8> one_pass = whole.image.render(scene.camera);
+  for (const std::size_t batch_triangles : {std::size_t(1), std::size_t(3000)}) {
+    VoxelMethod method(offset_options("64", "0"));
+    const StillImage still = render_still(scene, method, {}, batch_triangles);
+    EXPECT_EQ(still.triangles, whole.image.triangle_count());
+    EXPECT_GT(still.batches, 2u) << batch_triangles;
+    ASSERT_EQ(still.image.pixels.size(), one_pass.pixels.size());
+    std::size_t differing = 0, background = 0;
+    for (std::size_t i = 0; i < one_pass.pixels.size(); ++i) {
+      differing += !(one_pass.pixels[i] == still.image.pixels[i]);
+      background += one_pass.pixels[i] == kBackground;
+    }
+    std::printf("%zu batches: %zu of %zu pixels differ from one pass\n", still.batches, differing,
+                one_pass.pixels.size());
+    EXPECT_LE(differing, 3u);
+    EXPECT_LT(background, one_pass.pixels.size() / 2);  // the scene fills the picture
+    EXPECT_GT(background, 0u);
+  }
+}
+
+// A scene the camera does not see: every batch draws nothing, the picture is background.
+TEST(StillRender, SceneBehindTheCameraLeavesTheBackground) {
+  Scene scene = boxes_scene();
+  scene.camera = testing::camera({0, 1, 20}, {0, 1, 40}, 32, 24);
+  VoxelMethod method(offset_options("32", "0"));
+  const StillImage still = render_still(scene, method, {}, 1);
+  EXPECT_GT(still.batches, 2u);
+  const auto drawn = std::count_if(still.image.pixels.begin(), still.image.pixels.end(),
+                                   [](Rgb8 p) { return !(p == kBackground); });
+  EXPECT_EQ(drawn, 0);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // space, until the voxels of a subpatch's four corners are N-adjacent.
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -41,15 +42,17 @@ void voxelize_patch(const PatchSet& patches, std::uint32_t patch, const VoxelGri
 /// The voxel of grid point \p g, unclamped (coordinates may lie outside the grid).
 VoxelIndex voxel_floor(Vec3 g);
 
-/// Runs the recursion over every patch, patches in parallel (oneTBB): per patch, \p value
-/// (Subpatch, Domain) -> T of each of its leaves, in the recursion's order.
+/// Runs the recursion over every patch (or the \p count from \p first on), patches in
+/// parallel (oneTBB): per patch, \p value (Subpatch, Domain) -> T of each of its leaves, in
+/// the recursion's order.
 template <class T, class Value>
 std::vector<std::vector<T>> map_leaves(const PatchSet& patches, const VoxelGrid& grid,
-                                       int adjacency, const Value& value) {
-  std::vector<std::vector<T>> per_patch(patches.size());
-  tbb::parallel_for(std::size_t(0), patches.size(), [&](std::size_t p) {
+                                       int adjacency, const Value& value, std::size_t first = 0,
+                                       std::size_t count = std::size_t(-1)) {
+  std::vector<std::vector<T>> per_patch(std::min(count, patches.size() - first));
+  tbb::parallel_for(std::size_t(0), per_patch.size(), [&](std::size_t p) {
     voxelize_patch(
-        patches, std::uint32_t(p), grid, adjacency,
+        patches, std::uint32_t(first + p), grid, adjacency,
         [&](const Subpatch& leaf, const Domain& d) { per_patch[p].push_back(value(leaf, d)); });
   });
   return per_patch;
