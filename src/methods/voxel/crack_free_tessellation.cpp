@@ -205,8 +205,9 @@ void add_leaf(const PatchSet& patches, const Tessellator& tessellator, const Lea
   out.leaf_patch.push_back(leaf.patch);
 }
 
-// Patches whose leaves are made at once (in parallel) before they are tessellated.
-constexpr std::size_t kRunPatches = 16;
+// Patches whose leaves are made at once (in parallel, a few per core) and kept while they
+// are tessellated: O(M^2) each, so few.
+constexpr std::size_t kRunPatches = 4;
 
 }  // namespace
 
@@ -236,25 +237,26 @@ void tessellate_in_batches(const PatchSet& patches, const VoxelGrid& grid, int a
                            const std::function<void(SubpatchTessellation)>& batch) {
   const PointLists sides = shared_side_points(patches, grid, adjacency);
   SubpatchTessellation out;
+  const auto send = [&] {
+    const auto next_leaf = out.first_leaf + std::uint32_t(out.leaf_patch.size());
+    batch(std::move(out));
+    out = SubpatchTessellation{};
+    out.first_leaf = next_leaf;
+  };
   for (std::size_t first = 0; first < patches.size(); first += kRunPatches) {
     const std::vector<std::vector<Leaf>> leaves = map_leaves<Leaf>(
         patches, grid, adjacency,
-        [](const Subpatch& leaf, const Domain& d) {
-          return Leaf{leaf.patch, d};
-        },
-        first, kRunPatches);
+        [](const Subpatch& leaf, const Domain& d) { return Leaf{leaf.patch, d}; }, first,
+        kRunPatches);
     const Tessellator tessellator(patches, sides, std::uint32_t(first), leaves);
     for (const auto& patch_leaves : leaves) {
-      for (const Leaf& leaf : patch_leaves) add_leaf(patches, tessellator, leaf, out);
-    }
-    if (out.leaf.size() >= batch_triangles) {
-      const auto next_leaf = out.first_leaf + std::uint32_t(out.leaf_patch.size());
-      batch(std::move(out));
-      out = SubpatchTessellation{};
-      out.first_leaf = next_leaf;
+      for (const Leaf& leaf : patch_leaves) {
+        add_leaf(patches, tessellator, leaf, out);
+        if (out.leaf.size() >= batch_triangles) send();
+      }
     }
   }
-  if (!out.leaf_patch.empty()) batch(std::move(out));
+  if (!out.leaf_patch.empty()) send();
 }
 
 SubpatchTessellation tessellate_subpatches(const PatchSet& patches, const VoxelGrid& grid,

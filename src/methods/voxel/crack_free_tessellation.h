@@ -23,10 +23,11 @@ struct SubpatchTessellation {
   std::uint32_t patch_of(std::uint32_t subpatch) const { return leaf_patch[subpatch - first_leaf]; }
 };
 
-/// §5.1: the tessellation sent on as it is made, in batches of whole patches in patch
-/// order, each of at least \p batch_triangles triangles but the last. Only the points on
-/// the patch sides (a first pass over every patch) are kept for the whole scene, so the
-/// memory follows the batch, not the scene's tessellation.
+/// §5.1: the tessellation sent on as it is made, in batches of subpatches in order, each of
+/// \p batch_triangles triangles or a subpatch's few more, the last of fewer. Only the points
+/// on the patch sides (a first pass over every patch) are kept for the whole scene, and the
+/// subpatches of a few patches at a time, so the memory follows the batch, not the scene's
+/// tessellation.
 void tessellate_in_batches(const PatchSet& patches, const VoxelGrid& grid, int adjacency,
                            std::size_t batch_triangles,
                            const std::function<void(SubpatchTessellation)>& batch);

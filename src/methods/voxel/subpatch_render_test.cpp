@@ -202,7 +202,7 @@ TEST(StreamedRender, ResolutionTwoThousandFortyEightInLittleMemory) {
 constexpr Rgb8 kBackground{24, 26, 32};
 
 // Polygon boxes (12 patches each) and a Catmull-Clark box on a ground, in front of and
-// behind each other from the camera: more patches than one run of the batched tessellation.
+// behind each other from the camera.
 Scene boxes_scene() {
   std::vector<PolygonSoup> soups{testing::horizontal_quad(-4, 4, -4, 4, 0)};
   for (int k = 0; k < 4; ++k) {
@@ -226,7 +226,7 @@ TEST(StillRender, BatchesGiveTheImageOfOnePass) {
   const Scene scene = boxes_scene();
   const Render whole = render(scene, "64", "0");
   const Image<Rgb8> one_pass = whole.image.render(scene.camera);
-  for (const std::size_t batch_triangles : {std::size_t(1), std::size_t(3000)}) {
+  for (const std::size_t batch_triangles : {std::size_t(100), std::size_t(3000)}) {
     VoxelMethod method(offset_options("64", "0"));
     const StillImage still = render_still(scene, method, {}, batch_triangles);
     EXPECT_EQ(still.triangles, whole.image.triangle_count());
@@ -250,7 +250,7 @@ TEST(StillRender, SceneBehindTheCameraLeavesTheBackground) {
   Scene scene = boxes_scene();
   scene.camera = testing::camera({0, 1, 20}, {0, 1, 40}, 32, 24);
   VoxelMethod method(offset_options("32", "0"));
-  const StillImage still = render_still(scene, method, {}, 1);
+  const StillImage still = render_still(scene, method, {}, 200);
   EXPECT_GT(still.batches, 2u);
   const auto drawn = std::count_if(still.image.pixels.begin(), still.image.pixels.end(),
                                    [](Rgb8 p) { return !(p == kBackground); });
