@@ -156,6 +156,18 @@ TEST_F(Cli, VoxelRenderWritesBothViews) {
       "--turned-image");
 }
 
+// §5.1: one still image, the tessellation drawn in batches as it is made.
+TEST_F(Cli, VoxelRenderWithoutFrameBufferWritesTheStillImage) {
+  write("ground.obj", kGround);
+  const Result r = run("voxel-render " + scene(R"({"mesh": "ground.obj"})").string() +
+                       " --set voxel.resolution=32 --set voxel.test=offset --set "
+                       "voxel.framebuffer=0 --image " +
+                       (dir_ / "still.png").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr(" batches; "));
+  EXPECT_GT(fs::file_size(dir_ / "still.png"), 0u);
+}
+
 TEST_F(Cli, FragmentsWritesPlyAndAreasThatSumToEachPolygon) {
   const fs::path ply = dir_ / "square.ply";
   const Result r = run("fragments square --threads 1 --out " + ply.string());

@@ -246,8 +246,10 @@ void tessellate_in_batches(const PatchSet& patches, const VoxelGrid& grid, int a
   for (std::size_t first = 0; first < patches.size(); first += kRunPatches) {
     const std::vector<std::vector<Leaf>> leaves = map_leaves<Leaf>(
         patches, grid, adjacency,
-        [](const Subpatch& leaf, const Domain& d) { return Leaf{leaf.patch, d}; }, first,
-        kRunPatches);
+        [](const Subpatch& leaf, const Domain& d) {
+          return Leaf{leaf.patch, d};
+        },
+        first, kRunPatches);
     const Tessellator tessellator(patches, sides, std::uint32_t(first), leaves);
     for (const auto& patch_leaves : leaves) {
       for (const Leaf& leaf : patch_leaves) {
