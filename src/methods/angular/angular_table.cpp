@@ -175,14 +175,13 @@ class Saturation {
   Saturation(const AngularTable& table, const ThetaSlice& s) : table_(table), s_(s) {}
 
   bool covers(const AngularPair& q) {
-    offered_ = {q.phi_begin, q.phi_end, q.hidden, {}};
     if (!std::isfinite(q.phi_begin) || !std::isfinite(q.phi_end)) return false;
     double depth[2] = {-1, -1};  // q's own, once needed
     const auto nearer = [&](Kept& p) {
       if (p.begin > q.phi_begin || p.end < q.phi_end) return false;
       if (depth[0] < 0) {
-        offered_.depth = ray_depth(q.hidden);
-        depth[0] = offered_.depth->at(q.phi_begin), depth[1] = offered_.depth->at(q.phi_end);
+        const RayDepth own = ray_depth(q.hidden);
+        depth[0] = own.at(q.phi_begin), depth[1] = own.at(q.phi_end);
       }
       if (!std::isfinite(depth[0]) || !std::isfinite(depth[1])) return false;
       if (!p.depth) p.depth = ray_depth(p.hidden);
@@ -194,8 +193,7 @@ class Saturation {
     }
     return false;
   }
-  // Keeps the pair last offered to covers(), with its depth if that was needed.
-  void keep() { recent_[kept_++ % 2] = offered_; }
+  void keep(const AngularPair& p) { recent_[kept_++ % 2] = {p.phi_begin, p.phi_end, p.hidden, {}}; }
 
  private:
   // A kept pair; its depth is computed when a later pair first falls within it.
@@ -212,7 +210,6 @@ class Saturation {
   const ThetaSlice& s_;
   std::size_t kept_ = 0;
   Kept recent_[2];
-  Kept offered_;
 };
 
 // The occluding faces' corners in the light frame, in hidden-id order (objects, then their
@@ -412,7 +409,7 @@ std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortSc
   double reach = -std::numeric_limits<double>::infinity();
   for (const AngularPair& pair : entry) {
     if (saturation && saturation->covers(pair)) continue;
-    if (saturation) saturation->keep();
+    if (saturation) saturation->keep(pair);
     if (pair.phi_end - pair.phi_begin > wide) {
       wide_pairs.push_back(pair);
       continue;
