@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <numeric>
@@ -212,6 +213,14 @@ class Saturation {
   Kept recent_[2];
 };
 
+// Copies all 32 bytes of a pair, padding included: a copy of its 28 bytes of fields reads
+// the last 16 at offset 12, across the two 16-byte stores that wrote a pair just before,
+// which the store buffer cannot forward (a stall per pair in the insertion sort).
+void copy_whole(const AngularPair& from, AngularPair& to) {
+  static_assert(sizeof(AngularPair) == 32);
+  std::memcpy(static_cast<void*>(&to), &from, sizeof(AngularPair));
+}
+
 // The occluding faces' corners in the light frame, in hidden-id order (objects, then their
 // occluding faces, as place_hidden_faces assigns the ids): start offsets and corners.
 std::pair<std::vector<std::uint32_t>, std::vector<Vec3>> hidden_corners(
@@ -391,11 +400,14 @@ std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortSc
   };
   double extent_end = entry.front().phi_end;
   for (auto it = entry.begin() + 1; it < entry.end(); ++it) {
-    const AngularPair pair = *it;
+    AngularPair pair;
+    copy_whole(*it, pair);
     extent_end = std::max(extent_end, pair.phi_end);
     auto hole = it;
-    for (; hole != entry.begin() && before(pair, *(hole - 1)); --hole) *hole = *(hole - 1);
-    *hole = pair;
+    for (; hole != entry.begin() && before(pair, *(hole - 1)); --hole) {
+      copy_whole(*(hole - 1), *hole);
+    }
+    copy_whole(pair, *hole);
   }
   // Sec. 10 drops only pairs within a kept one, and never the first: the kept pairs have the
   // same extent. Wide pairs go first, so that the reach of the narrow ones skips well; the
