@@ -282,7 +282,9 @@ std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow
 
 AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
                                  const std::vector<FarSheets>& sheets,
-                                 const AngularTableOptions& options) {
+                                 const AngularTableOptions& options, AngularTableBuffers* buffers) {
+  AngularTableBuffers own;
+  AngularTableBuffers& storage = buffers ? *buffers : own;
   AngularTable table;
   std::vector<ObjectLoops> objects(scene.objects.size());
   place_vertices(scene, frame, objects);
@@ -336,7 +338,9 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   // Fixed chunks of that order, each into its own list: the lists in chunk order keep the
   // loops' order in every entry whichever thread sliced them.
   const std::size_t per_chunk = (work.size() + kChunks - 1) / kChunks;
-  std::vector<std::vector<EntryPair>> lists(kChunks);
+  std::vector<std::vector<EntryPair>>& lists = storage.lists;
+  lists.resize(kChunks);
+  for (std::vector<EntryPair>& list : lists) list.clear();
   tbb::enumerable_thread_specific<SliceScratch> scratch;
   tbb::parallel_for(std::size_t(0), kChunks, [&](std::size_t c) {
     SliceScratch& local = scratch.local();
@@ -352,6 +356,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
       }
     }
   });
+  table.pairs_ = std::move(storage.unsorted);
   table.fill_entries(lists);
   // Step 1.7: sort each entry by phi; Sec. 10: saturate.
   table.wide_.assign(table.theta_.resolution, 0);
@@ -360,7 +365,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
     kept[k] = table.sort_entry(k, options.saturated ? &slices[k] : nullptr, sort_scratch.local());
   });
-  table.compact(kept);
+  storage.unsorted = table.compact(kept);
   return table;
 }
 
@@ -436,7 +441,7 @@ std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortSc
   return std::uint32_t(narrow + wide_pairs.size());
 }
 
-void AngularTable::compact(const std::vector<std::uint32_t>& kept) {
+std::vector<AngularPair> AngularTable::compact(const std::vector<std::uint32_t>& kept) {
   std::vector<std::uint32_t> start(kept.size() + 1, 0);
   for (std::size_t k = 0; k < kept.size(); ++k) start[k + 1] = start[k] + kept[k];
   std::vector<AngularPair> pairs(start.back());
@@ -444,8 +449,9 @@ void AngularTable::compact(const std::vector<std::uint32_t>& kept) {
     std::copy_n(pairs_.begin() + start_[k], kept[k], pairs.begin() + start[k]);
   });
   saturated_ = pairs_.size() - pairs.size();
-  pairs_ = std::move(pairs);
+  std::swap(pairs_, pairs);
   start_ = std::move(start);
+  return pairs;
 }
 
 }  // namespace shadowkit
