@@ -33,6 +33,7 @@ class AngularMethod final : public ShadowMethod {
   Light light_;
   std::optional<LightFrame> frame_;
   AngularTable table_;
+  AngularTableBuffers table_buffers_;
   ThetaBoundaries boundaries_;
   double depth_tolerance_ = 0;
   double lookup_calls_ = 0;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <numeric>
@@ -212,6 +213,14 @@ class Saturation {
   Kept recent_[2];
 };
 
+// Copies all 32 bytes of a pair, padding included: a copy of its 28 bytes of fields reads
+// the last 16 at offset 12, across the two 16-byte stores that wrote a pair just before,
+// which the store buffer cannot forward (a stall per pair in the insertion sort).
+void copy_whole(const AngularPair& from, AngularPair& to) {
+  static_assert(sizeof(AngularPair) == 32);
+  std::memcpy(static_cast<void*>(&to), &from, sizeof(AngularPair));
+}
+
 // The occluding faces' corners in the light frame, in hidden-id order (objects, then their
 // occluding faces, as place_hidden_faces assigns the ids): start offsets and corners.
 std::pair<std::vector<std::uint32_t>, std::vector<Vec3>> hidden_corners(
@@ -273,7 +282,9 @@ std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow
 
 AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
                                  const std::vector<FarSheets>& sheets,
-                                 const AngularTableOptions& options) {
+                                 const AngularTableOptions& options, AngularTableBuffers* buffers) {
+  AngularTableBuffers own;
+  AngularTableBuffers& storage = buffers ? *buffers : own;
   AngularTable table;
   std::vector<ObjectLoops> objects(scene.objects.size());
   place_vertices(scene, frame, objects);
@@ -327,7 +338,9 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   // Fixed chunks of that order, each into its own list: the lists in chunk order keep the
   // loops' order in every entry whichever thread sliced them.
   const std::size_t per_chunk = (work.size() + kChunks - 1) / kChunks;
-  std::vector<std::vector<EntryPair>> lists(kChunks);
+  std::vector<std::vector<EntryPair>>& lists = storage.lists;
+  lists.resize(kChunks);
+  for (std::vector<EntryPair>& list : lists) list.clear();
   tbb::enumerable_thread_specific<SliceScratch> scratch;
   tbb::parallel_for(std::size_t(0), kChunks, [&](std::size_t c) {
     SliceScratch& local = scratch.local();
@@ -343,6 +356,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
       }
     }
   });
+  table.pairs_ = std::move(storage.unsorted);
   table.fill_entries(lists);
   // Step 1.7: sort each entry by phi; Sec. 10: saturate.
   table.wide_.assign(table.theta_.resolution, 0);
@@ -351,7 +365,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
     kept[k] = table.sort_entry(k, options.saturated ? &slices[k] : nullptr, sort_scratch.local());
   });
-  table.compact(kept);
+  storage.unsorted = table.compact(kept);
   return table;
 }
 
@@ -391,11 +405,14 @@ std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortSc
   };
   double extent_end = entry.front().phi_end;
   for (auto it = entry.begin() + 1; it < entry.end(); ++it) {
-    const AngularPair pair = *it;
+    AngularPair pair;
+    copy_whole(*it, pair);
     extent_end = std::max(extent_end, pair.phi_end);
     auto hole = it;
-    for (; hole != entry.begin() && before(pair, *(hole - 1)); --hole) *hole = *(hole - 1);
-    *hole = pair;
+    for (; hole != entry.begin() && before(pair, *(hole - 1)); --hole) {
+      copy_whole(*(hole - 1), *hole);
+    }
+    copy_whole(pair, *hole);
   }
   // Sec. 10 drops only pairs within a kept one, and never the first: the kept pairs have the
   // same extent. Wide pairs go first, so that the reach of the narrow ones skips well; the
@@ -424,7 +441,7 @@ std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortSc
   return std::uint32_t(narrow + wide_pairs.size());
 }
 
-void AngularTable::compact(const std::vector<std::uint32_t>& kept) {
+std::vector<AngularPair> AngularTable::compact(const std::vector<std::uint32_t>& kept) {
   std::vector<std::uint32_t> start(kept.size() + 1, 0);
   for (std::size_t k = 0; k < kept.size(); ++k) start[k + 1] = start[k] + kept[k];
   std::vector<AngularPair> pairs(start.back());
@@ -432,8 +449,9 @@ void AngularTable::compact(const std::vector<std::uint32_t>& kept) {
     std::copy_n(pairs_.begin() + start_[k], kept[k], pairs.begin() + start[k]);
   });
   saturated_ = pairs_.size() - pairs.size();
-  pairs_ = std::move(pairs);
+  std::swap(pairs_, pairs);
   start_ = std::move(start);
+  return pairs;
 }
 
 }  // namespace shadowkit

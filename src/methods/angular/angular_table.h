@@ -66,14 +66,23 @@ struct EntryPair {
   double phi_begin = 0, phi_end = 0;
 };
 
+/// \brief Storage one build leaves for the next (a method object builds once per light and
+/// frame): kept, its capacity spares the next build the page faults of fresh allocations.
+struct AngularTableBuffers {
+  std::vector<std::vector<EntryPair>> lists;  ///< per chunk of RE loops, its pairs
+  std::vector<AngularPair> unsorted;          ///< every pair before saturation and compaction
+};
+
 /// \brief The lookup table: per theta entry, pairs sorted by phi_begin (Sec. 7, step 1.7).
 class AngularTable {
  public:
   /// Sec. 7, step 1: every object's RE loops sliced at each entry's theta (\p sheets: per
-  /// object, as occluding_sheets gives them).
+  /// object, as occluding_sheets gives them). \p buffers, if given, lends its storage to the
+  /// build and gets it back.
   static AngularTable build(const Scene& scene, const LightFrame& frame,
                             const std::vector<FarSheets>& sheets,
-                            const AngularTableOptions& options);
+                            const AngularTableOptions& options,
+                            AngularTableBuffers* buffers = nullptr);
 
   const ThetaQuantization& theta() const { return theta_; }
   std::span<const AngularPair> entry(int k) const {
@@ -121,7 +130,8 @@ class AngularTable {
   };
   // Sorts entry k and, given its slice, saturates it; returns the pairs kept at its front.
   std::uint32_t sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch);
-  void compact(const std::vector<std::uint32_t>& kept);
+  // Keeps the first kept[k] pairs of every entry k; returns the storage they were in.
+  std::vector<AngularPair> compact(const std::vector<std::uint32_t>& kept);
 
   ThetaQuantization theta_;
   std::vector<std::uint32_t> start_;  ///< R + 1 offsets into pairs_

@@ -301,6 +301,24 @@ TEST(AngularTable, AHoleLetsTheLightThroughAndDepthIsExactInsideSpans) {
   EXPECT_GT(testing::counter(angular, "re_loops"), 1);  // outer and hole loops
 }
 
+// \p b has the same entries as \p a, pair for pair and bit for bit.
+void expect_same_table(const AngularTable& a, const AngularTable& b) {
+  EXPECT_EQ(b.pair_count(), a.pair_count());
+  EXPECT_EQ(b.saturated_count(), a.saturated_count());
+  ASSERT_EQ(b.theta().resolution, a.theta().resolution);
+  for (int k = 0; k < a.theta().resolution; ++k) {
+    const auto x = a.entry(k), y = b.entry(k);
+    ASSERT_EQ(x.size(), y.size()) << "entry " << k;
+    ASSERT_EQ(a.wide(k).size(), b.wide(k).size()) << "entry " << k;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      EXPECT_EQ(x[i].phi_begin, y[i].phi_begin);
+      EXPECT_EQ(x[i].phi_end, y[i].phi_end);
+      EXPECT_EQ(x[i].reach, y[i].reach);
+      EXPECT_EQ(x[i].hidden, y[i].hidden);
+    }
+  }
+}
+
 // The loops are sliced in fixed chunks whose lists are scattered in chunk order, so every
 // entry gets its pairs in the same order, and the same table, however many threads slice.
 TEST(AngularTable, TheTableDoesNotDependOnTheNumberOfThreads) {
@@ -314,26 +332,31 @@ TEST(AngularTable, TheTableDoesNotDependOnTheNumberOfThreads) {
   const AngularTable one = build(1), two = build(2);
   ASSERT_GT(one.pair_count(), 10000u);
   EXPECT_GT(one.saturated_count(), 1000u);
-  EXPECT_EQ(two.pair_count(), one.pair_count());
-  EXPECT_EQ(two.saturated_count(), one.saturated_count());
-  ASSERT_EQ(two.theta().resolution, one.theta().resolution);
+  expect_same_table(one, two);
   for (int k = 0; k < one.theta().resolution; ++k) {
-    const auto a = one.entry(k), b = two.entry(k);
-    ASSERT_EQ(a.size(), b.size()) << "entry " << k;
-    ASSERT_EQ(one.wide(k).size(), two.wide(k).size()) << "entry " << k;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      EXPECT_EQ(a[i].phi_begin, b[i].phi_begin);
-      EXPECT_EQ(a[i].phi_end, b[i].phi_end);
-      EXPECT_EQ(a[i].reach, b[i].reach);
-      EXPECT_EQ(a[i].hidden, b[i].hidden);
-    }
     // Step 1.7: the narrow pairs sorted by phi_begin, each reach the running maximum end.
-    const auto narrow = a.subspan(one.wide(k).size());
+    const auto narrow = one.entry(k).subspan(one.wide(k).size());
     for (std::size_t i = 1; i < narrow.size(); ++i) {
       EXPECT_LE(narrow[i - 1].phi_begin, narrow[i].phi_begin);
       EXPECT_EQ(narrow[i].reach, std::max(narrow[i - 1].reach, narrow[i].phi_end));
     }
   }
+}
+
+// Buffers left by a larger table (longer lists, more pairs) change nothing in the next one.
+TEST(AngularTable, BuffersOfAnEarlierBuildLeaveTheTableAsItWas) {
+  const auto build = [](const Scene& scene, AngularTableBuffers* buffers) {
+    const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center(), 0);
+    return AngularTable::build(scene, frame, occluding_sheets(scene, scene.lights[0]), {}, buffers);
+  };
+  const Scene large = load_scene("cubes:300", {}), small = load_scene("tetra:4", {});
+  AngularTableBuffers buffers;
+  const AngularTable first = build(large, &buffers);
+  EXPECT_EQ(buffers.unsorted.size(), first.pair_count() + first.saturated_count());
+  const AngularTable reused = build(small, &buffers), fresh = build(small, nullptr);
+  ASSERT_GT(fresh.pair_count(), 100u);
+  expect_same_table(fresh, reused);
+  expect_same_table(first, build(large, &buffers));
 }
 
 }  // namespace
