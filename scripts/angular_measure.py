@@ -62,7 +62,7 @@ def results(shadowkit, out, repeats):
             rows.append([scene, light, n, int(c["theta_resolution"]), round(ang["build_ms"], 2),
                          int(c["lookup_calls"]), round(ang["shade_ms"], 2),
                          round(rt["shade_ms"], 2), round(ang["shade_ms"] / rt["shade_ms"], 2),
-                         int(c["table_pairs"]), round(ang["memory_bytes"] / 1e6, 3)])
+                         int(c["table_pairs"]), round(c["table_bytes"] / 1e6, 3)])
     write(os.path.join(out, "angular_results.csv"),
           ["scene", "light", "polygons", "R", "table_ms", "lookup_calls", "lookup_ms",
            "raytrace_shade_ms", "lookup_over_raytrace", "pairs", "memory_MB"], rows)
@@ -78,7 +78,7 @@ def scalability(shadowkit, out, repeats):
         rows.append([count, n, int(c["theta_resolution"]), round(ang["build_ms"], 2),
                      round(ang["shade_ms"], 2), round(rt["shade_ms"], 2),
                      int(c["lookup_calls"]), int(c["table_pairs"]), int(c["saturated_pairs"]),
-                     round(ang["memory_bytes"] / 1e6, 3)])
+                     round(c["table_bytes"] / 1e6, 3)])
     write(os.path.join(out, "angular_scalability.csv"),
           ["cubes", "polygons", "R", "table_ms", "lookup_ms", "raytrace_shade_ms",
            "lookup_calls", "pairs", "saturated_pairs", "memory_MB"], rows)

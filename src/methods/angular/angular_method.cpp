@@ -111,6 +111,7 @@ MethodCounters AngularMethod::counters() const {
           {"theta_resolution", double(table_.theta().resolution)},
           {"table_pairs", double(table_.pair_count())},
           {"saturated_pairs", double(table_.saturated_count())},
+          {"table_bytes", double(table_.memory_bytes())},
           {"lookup_calls", lookup_calls_}};
 }
 

@@ -21,7 +21,10 @@ class AngularMethod final : public ShadowMethod {
   void build(const Scene& scene, std::size_t light, const Context& ctx) override;
   void shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
              const Context& ctx) override;
-  std::size_t memory_bytes() const override { return table_.memory_bytes(); }
+  /// The table and the build's buffers, kept for the next build.
+  std::size_t memory_bytes() const override {
+    return table_.memory_bytes() + table_buffers_.memory_bytes();
+  }
   MethodCounters counters() const override;
 
  private:

@@ -71,6 +71,12 @@ struct EntryPair {
 struct AngularTableBuffers {
   std::vector<std::vector<EntryPair>> lists;  ///< per chunk of RE loops, its pairs
   std::vector<AngularPair> unsorted;          ///< every pair before saturation and compaction
+
+  std::size_t memory_bytes() const {
+    std::size_t bytes = unsorted.capacity() * sizeof(AngularPair);
+    for (const auto& list : lists) bytes += list.capacity() * sizeof(EntryPair);
+    return bytes;
+  }
 };
 
 /// \brief The lookup table: per theta entry, pairs sorted by phi_begin (Sec. 7, step 1.7).
