@@ -9,6 +9,23 @@ namespace {
 // (u, v) of corner k.
 constexpr std::array<std::array<double, 2>, 4> kCornerUv{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
 
+// A sliver's corners turned (winding kept) so that its shortest side comes first. As the
+// patch (a, b, c, c), u then runs along that side and v toward the far corner: the u sides
+// are soon adjacent and only v is halved further (voxelizer), where with a long side first
+// both directions would be halved, for leaves growing with its length squared. Triangles
+// whose first side is within twice the shortest keep their corners (and their leaves).
+std::array<std::uint32_t, 3> shortest_side_first(std::array<std::uint32_t, 3> t,
+                                                 const std::vector<Vec3>& positions) {
+  const auto side = [&](int k) {
+    const Vec3 d = positions[t[(k + 1) % 3]] - positions[t[k]];
+    return dot(d, d);
+  };
+  const int first =
+      side(0) <= side(1) ? (side(0) <= side(2) ? 0 : 2) : (side(1) <= side(2) ? 1 : 2);
+  if (side(0) > 4 * side(first)) std::rotate(t.begin(), t.begin() + first, t.end());
+  return t;
+}
+
 }  // namespace
 
 std::array<double, 2> PatchSet::side_uv(int side, double t) {
@@ -54,7 +71,7 @@ void PatchSet::add_triangles(const Scene& scene) {
   for (std::uint32_t t = 0; t < triangles.triangles.size(); ++t) {
     const std::uint32_t object = scene.object_of_face(triangles.triangle_face[t]);
     if (scene.objects[object].subdivision) continue;  // its tessellation; the surface is added
-    const auto& [a, b, c] = triangles.triangles[t];
+    const auto& [a, b, c] = shortest_side_first(triangles.triangles[t], triangles.positions);
     patches_.push_back({object, nullptr, t, {a, b, c, c}});
   }
 }
