@@ -43,6 +43,7 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
   int parts[kCellColumns] = {};
   Bounds3 all_parts[kCellColumns];
   std::fill_n(cell_keys[band], kCellColumns, KeyRange{});
+  std::fill_n(cell_faces[band], kCellColumns, FaceRange{});
   for (int r = band * kBand; r < std::min(h, (band + 1) * kBand); ++r) {
     std::copy_n(frame.surfaces.face.begin() + std::ptrdiff_t(frame.surfaces.index(x0, y0 + r)), w,
                 face + r * w);
@@ -50,6 +51,8 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
     for (int cell = 0; cell * kBlock < w; ++cell) {
       KeyRange& keys = run_keys[r][cell];
       keys = {};
+      FaceRange& faces = run_faces[r][cell];
+      faces = {};
       const int end = std::min(w, (cell + 1) * kBlock);
       for (int c = cell * kBlock, next; c < end; c = next) {
         // A run of one face: its key is linear along the run, so the ends bound it.
@@ -59,6 +62,7 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
           std::fill(key + r * w + c, key + r * w + next, kNaN);
           continue;
         }
+        faces.add(f);
         const KeyPlane& plane = frame.face_keys[f];
         for (int i = c; i < next; ++i) key[r * w + i] = plane.at(x0 + i, y0 + r);
         KeyRange run;
@@ -75,6 +79,7 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
       }
       keys.widen();
       cell_keys[band][cell].add(keys);
+      cell_faces[band][cell].add(faces);
     }
   }
   // Crow's receivers: each visible sub-object's box within the piece of the view that its

@@ -1,6 +1,8 @@
 #pragma once
 // One tile of the counting pass: what its pixels see, summarized for Crow's coherence tests
 // (1977, Sec. VII), and their counts.
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -32,6 +34,31 @@ struct VisibleFrame {
                const VisibleSurfaceBuffer& surfaces, int eye_count);
 };
 
+/// \brief The faces a run of pixels shows: exactly lo and hi while it shows at most two,
+/// any face in [lo, hi] once it shows more.
+struct FaceRange {
+  std::uint32_t lo = kNoFace, hi = 0;
+  bool between = false;  ///< faces strictly between lo and hi may show
+
+  void add(std::uint32_t f) {
+    if (lo == kNoFace) {
+      lo = hi = f;
+    } else if (f != lo && f != hi) {
+      between |= lo != hi || (lo < f && f < hi);
+      lo = std::min(lo, f), hi = std::max(hi, f);
+    }
+  }
+  void add(const FaceRange& r) {
+    if (r.lo == kNoFace) return;
+    add(r.lo), add(r.hi);
+    between |= r.between;
+  }
+  bool shows(std::uint32_t f) const { return f == lo || f == hi || (between && lo < f && f < hi); }
+  bool shows_either(const std::array<std::uint32_t, 2>& f) const {
+    return shows(f[0]) || shows(f[1]);
+  }
+};
+
 /// \brief Crow's receivers in one cell: boxes that hold its visible points, one per visible
 /// sub-object (its box within the piece of the view that its keys there span).
 struct CellReceivers {
@@ -51,6 +78,10 @@ struct CountingTile {
   int delta[kTile * (kTile + 1)];
   int cell_jump[kCellRows][kCellColumns];  ///< settled jumps over whole cells
   KeyRange run_keys[kTile][kCellColumns];  ///< per row and kBlock-pixel run
+  /// Per row and run, and per cell: the range of the face ids they show (lo > hi: none).
+  /// A shadow polygon's edge faces need the pixel test (edge_face_beyond) wherever they
+  /// show; where the range excludes them, a run or cell may be settled by its keys.
+  FaceRange run_faces[kTile][kCellColumns], cell_faces[kCellRows][kCellColumns];
   KeyRange cell_keys[kCellRows][kCellColumns], all_keys;
   CellReceivers cell_receivers[kCellRows][kCellColumns];
   Bounds3 band_receivers[kCellRows];  ///< hold every visible point of a cell row

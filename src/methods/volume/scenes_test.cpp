@@ -80,6 +80,19 @@ TEST(VolumeScenes, NoCountComesOutNegative) {
   EXPECT_GT(testing::counter(m, "receiver_culled"), 0);
 }
 
+TEST(VolumeScenes, NoCountComesOutNegativeWhereARunIsSettledByItsKeys) {
+  // The same hazard on a settled run: a pixel at the open ground's far corner shows a face
+  // along the ground's boundary edge, a sub-pixel past it, and the run's keys put the edge's
+  // polygon wholly in front of it (-1). Runs and cells that show a polygon's edge faces are
+  // now tested pixel by pixel.
+  const Scene scene = load_scene_file(
+      std::filesystem::path(SHADOWKIT_SOURCE_DIR) / "examples" / "subdivision.json", {});
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  VolumeMethod m({});
+  testing::method_mask(m, scene, vsb, 0);
+  EXPECT_EQ(testing::counter(m, "negative_counts"), 0);
+}
+
 TEST(VolumeScenes, EveryExampleAgreesWithTheReference) {
   const std::filesystem::path dir = std::filesystem::path(SHADOWKIT_SOURCE_DIR) / "examples";
   int checked = 0;

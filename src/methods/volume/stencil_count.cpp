@@ -241,8 +241,8 @@ class TileCounter {
                          int last, const int* span_a, const int* span_b, int jump,
                          CountingTile& t) const {
     const int cx0 = t.x0 + c * kBlock, cx1 = std::min(t.x0 + t.w, cx0 + kBlock) - 1;
-    if (jump != 0 && first == t.y0 + band * kBand &&
-        last == std::min(t.y0 + t.h, first + kBand) - 1 &&
+    if (jump != 0 && !t.cell_faces[band][c].shows_either(poly.edge_faces) &&
+        first == t.y0 + band * kBand && last == std::min(t.y0 + t.h, first + kBand) - 1 &&
         std::all_of(span_a + first - t.y0, span_a + last - t.y0 + 1,
                     [&](int a) { return a <= cx0; }) &&
         std::all_of(span_b + first - t.y0, span_b + last - t.y0 + 1,
@@ -255,12 +255,12 @@ class TileCounter {
       const int a = std::max(span_a[py - t.y0], cx0), b = std::min(span_b[py - t.y0], cx1);
       if (a > b) continue;
       const int row = py - t.y0;
-      int j = jump;
+      int j = t.run_faces[row][c].shows_either(poly.edge_faces) ? 0 : jump;
       if (j == 0) {
         const double ka = key.at(a, py), kb = key.at(b, py);
         const Crossing cross =
             classify(std::min(ka, kb), std::max(ka, kb), key.slack, t.run_keys[row][c]);
-        if (cross == Crossing::mixed) {
+        if (cross == Crossing::mixed || t.run_faces[row][c].shows_either(poly.edge_faces)) {
           count_span(poly, key, frame_, t, row, a, b);
           tested += std::size_t(b - a + 1);
           continue;
