@@ -59,7 +59,7 @@ int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx) {
   const Scene scene = load_scene(options.scene, ctx);
   if (!voxel_method.keeps_frame_buffer()) return render_still(scene, voxel_method, options, ctx);
   const auto start = std::chrono::steady_clock::now();
-  const voxel::SubpatchImage source = voxel::make_subpatch_image(scene, voxel_method, ctx);
+  voxel::SubpatchImage source = voxel::make_subpatch_image(scene, voxel_method, ctx);
   const double prepare_ms = ms_since(start);
   const auto view_start = std::chrono::steady_clock::now();
   write_png(options.image, source.render(scene.camera));

@@ -147,10 +147,9 @@ SubpatchImage::SubpatchImage(const Scene& scene, const PatchSet& patches,
                              std::vector<std::vector<std::uint8_t>> shadowed_per_light)
     : view_(scene, patches, tessellation), shadowed_(std::move(shadowed_per_light)) {}
 
-Image<Rgb8> SubpatchImage::render(const Camera& camera) const {
+Image<Rgb8> SubpatchImage::render(const Camera& camera) {
   Frame frame(camera);
-  SubpatchView view = view_;  // draw() moves the view's camera
-  view.draw(camera, shadowed_, frame.image, frame.depth);
+  view_.draw(camera, shadowed_, frame.image, frame.depth);
   return std::move(frame.image);
 }
 

@@ -67,7 +67,8 @@ class SubpatchImage {
   SubpatchImage(const Scene& scene, const PatchSet& patches,
                 const SubpatchTessellation& tessellation,
                 std::vector<std::vector<std::uint8_t>> shadowed_per_light);
-  Image<Rgb8> render(const Camera& camera) const;
+  /// Moves the view's camera to \p camera (the tessellation is not copied).
+  Image<Rgb8> render(const Camera& camera);
   std::size_t triangle_count() const { return view_.triangle_count(); }
   /// Per subpatch, its shadowed corners for light \p light.
   const std::vector<std::uint8_t>& shadowed_corners(std::size_t light) const {

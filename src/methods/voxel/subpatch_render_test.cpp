@@ -187,7 +187,7 @@ TEST(StreamedRender, ResolutionTwoThousandFortyEightInLittleMemory) {
       {testing::directional_light(down_beam)},
       {wall(0), wall(0.1),
        testing::horizontal_quad(-0.05, 0.05, far.z - 0.05, far.z + 0.05, far.y)});
-  const Render kept = render(scene, "2048", "1"), streamed = render(scene, "2048", "0");
+  Render kept = render(scene, "2048", "1"), streamed = render(scene, "2048", "0");
   const CornerAgreement agreement = compare_modes(kept, streamed, 0);
   std::printf(
       "M = 2048: frame buffer %zu bytes, streamed %zu bytes; %zu shadowed corners, "
@@ -224,7 +224,7 @@ Scene boxes_scene() {
 // float depth of the visible-surface buffer, which one pass breaks in double.
 TEST(StillRender, BatchesGiveTheImageOfOnePass) {
   const Scene scene = boxes_scene();
-  const Render whole = render(scene, "64", "0");
+  Render whole = render(scene, "64", "0");
   const Image<Rgb8> one_pass = whole.image.render(scene.camera);
   for (const std::size_t batch_triangles : {std::size_t(100), std::size_t(3000)}) {
     VoxelMethod method(offset_options("64", "0"));

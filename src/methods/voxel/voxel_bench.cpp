@@ -106,7 +106,7 @@ BENCHMARK_CAPTURE(BM_VoxelizeAndShadows, offset, "offset")
 void BM_NewViewFromTheFrameBuffer(benchmark::State& state) {
   const Scene& scene = benchmark_scene();
   VoxelMethod method = method_at(int(state.range(0)), "topology");
-  const voxel::SubpatchImage image = voxel::make_subpatch_image(scene, method, {});
+  voxel::SubpatchImage image = voxel::make_subpatch_image(scene, method, {});
   Camera camera = scene.camera;
   double angle = 0;
   for (auto _ : state) {
