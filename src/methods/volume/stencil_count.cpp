@@ -255,12 +255,16 @@ class TileCounter {
       const int a = std::max(span_a[py - t.y0], cx0), b = std::min(span_b[py - t.y0], cx1);
       if (a > b) continue;
       const int row = py - t.y0;
-      int j = t.run_faces[row][c].shows_either(poly.edge_faces) ? 0 : jump;
-      if (j == 0) {
-        const double ka = key.at(a, py), kb = key.at(b, py);
-        const Crossing cross =
-            classify(std::min(ka, kb), std::max(ka, kb), key.slack, t.run_keys[row][c]);
-        if (cross == Crossing::mixed || t.run_faces[row][c].shows_either(poly.edge_faces)) {
+      const bool shows_edge_face = t.run_faces[row][c].shows_either(poly.edge_faces);
+      int j = jump;
+      if (j == 0 || shows_edge_face) {
+        // A run showing one of the polygon's edge faces needs edge_face_beyond, pixel by pixel.
+        Crossing cross = Crossing::mixed;
+        if (!shows_edge_face) {
+          const double ka = key.at(a, py), kb = key.at(b, py);
+          cross = classify(std::min(ka, kb), std::max(ka, kb), key.slack, t.run_keys[row][c]);
+        }
+        if (cross == Crossing::mixed) {
           count_span(poly, key, frame_, t, row, a, b);
           tested += std::size_t(b - a + 1);
           continue;
