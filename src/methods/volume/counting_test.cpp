@@ -68,6 +68,23 @@ TEST(Counting, EyeInsideAShadowVolumeCountsDepthPassFromTheEyesCount) {
             0.05);
 }
 
+TEST(Counting, TilesNoShadowPolygonReachesKeepTheEyesCount) {
+  // The camera under the square looks down at ground wholly in its shadow: the volume's
+  // polygons all lie outside the view, so no tile counts any, and every count is the eye's.
+  const Scene scene = square_scene({0, 0.5, 0}, {0.3, 0, 0.1});
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  VolumeMethod m({});
+  const ShadowMask mask = testing::method_mask(m, scene, vsb, 0);
+  EXPECT_EQ(testing::counter(m, "fill"), 0);
+  std::size_t covered = 0;
+  for (std::size_t i = 0; i < mask.pixels.size(); ++i) {
+    if (!vsb.covered(i)) continue;
+    ++covered;
+    ASSERT_EQ(mask.pixels[i], kMaskShadow) << "pixel " << i;
+  }
+  EXPECT_EQ(covered, mask.pixels.size());
+}
+
 TEST(Counting, NearPlaneCuttingAShadowVolumeSwitchesToDepthFail) {
   // The eye on the shadow polygon of the square's edge x = 1 (the plane through the light
   // and that edge): the near plane cuts it, and the square's volume is counted depth-fail.

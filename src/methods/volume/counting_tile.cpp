@@ -127,10 +127,21 @@ std::size_t CountingTile::finish(const VisibleFrame& frame, ShadowMask& mask) {
       if (f == kNoFace) continue;
       const int total = count[r * w + c] + jump;
       negative += total < 0;
-      out[c] = total <= 0 && frame.lit_side[f] ? kMaskLit : kMaskShadow;
+      out[c] = mask_value(frame, f, total);
     }
   }
   return negative;
+}
+
+void CountingTile::finish_uncounted(const VisibleFrame& frame, int x0, int y0, int w, int h,
+                                    ShadowMask& mask) {
+  for (int r = 0; r < h; ++r) {
+    const std::size_t first = frame.surfaces.index(x0, y0 + r);
+    for (std::size_t i = first; i < first + std::size_t(w); ++i) {
+      const std::uint32_t f = frame.surfaces.face[i];
+      if (f != kNoFace) mask.pixels[i] = mask_value(frame, f, frame.eye_count);
+    }
+  }
 }
 
 }  // namespace shadowkit

@@ -34,6 +34,12 @@ struct VisibleFrame {
                const VisibleSurfaceBuffer& surfaces, int eye_count);
 };
 
+/// A visible point on face \p f with count \p total is in shadow when the count is positive
+/// or when the camera sees the face's unlit side (contract condition 1).
+inline std::uint8_t mask_value(const VisibleFrame& frame, std::uint32_t f, int total) {
+  return total <= 0 && frame.lit_side[f] ? kMaskLit : kMaskShadow;
+}
+
 /// \brief The faces a run of pixels shows: exactly lo and hi while it shows at most two,
 /// any face in [lo, hi] once it shows more.
 struct FaceRange {
@@ -93,6 +99,9 @@ struct CountingTile {
   /// the count is positive or where the camera sees a face's unlit side. Returns the number
   /// of negative counts (an error in the counting).
   std::size_t finish(const VisibleFrame& frame, ShadowMask& mask);
+  /// The mask of a tile that no shadow polygon reaches: every count is the eye's.
+  static void finish_uncounted(const VisibleFrame& frame, int x0, int y0, int w, int h,
+                               ShadowMask& mask);
 
  private:
   void load_band(const VisibleFrame& frame, int band);

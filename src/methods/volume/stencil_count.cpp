@@ -318,10 +318,12 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
     thread_local CountingTile t;
     const int x0 = (tile % bins.tiles_x) * kTile, y0 = (tile / bins.tiles_x) * kTile;
-    if (!t.load(frame, x0, y0, std::min(kTile, view.width - x0),
-                std::min(kTile, view.height - y0))) {
+    const int w = std::min(kTile, view.width - x0), h = std::min(kTile, view.height - y0);
+    if (bins.start[tile] == bins.start[tile + 1]) {
+      CountingTile::finish_uncounted(frame, x0, y0, w, h, mask);
       return;
     }
+    if (!t.load(frame, x0, y0, w, h)) return;
     std::size_t tile_fill = 0, tile_culled = 0;
     std::uint32_t part = kNoSubObject;
     std::optional<ReceiverTest> receivers;
