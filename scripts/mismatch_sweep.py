@@ -10,7 +10,7 @@ ground quad, a box, a floating quad, a fin of three quads on one edge, coplanar 
 and a closed room. With --shrink every failure is reduced greedily (objects, then the other
 lights) to the smallest scene that still fails, written next to it as NAME.min.json.
 
-    python3 scripts/mismatch_sweep.py --seed 1 --count 60 --out out/sweep --shrink
+    python3 scripts/mismatch_sweep.py --seed 1 --count 500 --out out/sweep --shrink
 """
 
 import argparse
@@ -210,56 +210,71 @@ def random_scene(rng):
 # ---------------------------------------------------------------------------------------------
 # Running compare.
 
-def compare(shadowkit, path, methods, timeout):
+def compare(shadowkit, path, methods, settings, timeout):
     """{(method, light): interior %}, or an error string when the run fails."""
     cmd = [shadowkit, "compare", path, "--methods", ",".join(methods), "--json"]
+    for setting in settings:
+        cmd += ["--set", setting]
     try:
         run = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
     except subprocess.TimeoutExpired:
         return f"timed out after {timeout} s"
     if run.returncode != 0:
         return f"exit {run.returncode}: {run.stderr.strip().splitlines()[-1:]}"
-    return {(r["method"], r["light"]): r["mismatch_interior_pct"] for r in json.loads(run.stdout)
-            if r["method"] in methods}
+    return {(r["method"], r["light"]): (r["mismatch_interior_pct"], r["interior_pixels"])
+            for r in json.loads(run.stdout) if r["method"] in methods}
 
 
 def failures_of(result):
-    return [(m, l, pct) for (m, l), pct in sorted(result.items()) if pct > THRESHOLDS[m]]
+    return [(m, l, pct, n) for (m, l), (pct, n) in sorted(result.items()) if pct > THRESHOLDS[m]]
 
 
-def still_fails(shadowkit, scene, path, method, light, timeout):
+def save(scene, path):
+    """One line per light and object, so that scenes read and diff well."""
+    lines = [f' "camera": {json.dumps(scene["camera"])},', ' "lights": [']
+    lines += [f"  {json.dumps(l)}," for l in scene["lights"]]
+    lines[-1] = lines[-1].rstrip(",")
+    lines += [" ],", ' "objects": [']
+    lines += [f"  {json.dumps(o)}," for o in scene["objects"]]
+    lines[-1] = lines[-1].rstrip(",")
     with open(path, "w") as out:
-        json.dump(scene, out, indent=1)
-    result = compare(shadowkit, path, [method], timeout)
-    return isinstance(result, dict) and result.get((method, light), 0.0) > THRESHOLDS[method]
+        out.write("{\n" + "\n".join(lines) + "\n ]\n}\n")
 
 
-def shrink(shadowkit, scene, path, method, light, timeout):
+def still_fails(shadowkit, scene, path, method, light, settings, timeout):
+    save(scene, path)
+    result = compare(shadowkit, path, [method], settings, timeout)
+    return isinstance(result, dict) and result.get((method, light), (0.0,))[0] > THRESHOLDS[method]
+
+
+def shrink(shadowkit, scene, path, method, light, settings, timeout):
     """Greedily drops objects, then the other lights, while the failure stays."""
     best = copy.deepcopy(scene)
     i = 0
     while i < len(best["objects"]) and len(best["objects"]) > 1:
         trial = copy.deepcopy(best)
         del trial["objects"][i]
-        if still_fails(shadowkit, trial, path, method, light, timeout):
+        if still_fails(shadowkit, trial, path, method, light, settings, timeout):
             best = trial
         else:
             i += 1
     trial = copy.deepcopy(best)
     trial["lights"] = [best["lights"][light]]
-    if len(best["lights"]) > 1 and still_fails(shadowkit, trial, path, method, 0, timeout):
+    if len(best["lights"]) > 1 and still_fails(shadowkit, trial, path, method, 0, settings, timeout):
         best, light = trial, 0
-    still_fails(shadowkit, best, path, method, light, timeout)  # leaves the minimum on disk
+    still_fails(shadowkit, best, path, method, light, settings, timeout)  # leaves the minimum on disk
     return best, light
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--seed", type=int, default=1)
-    parser.add_argument("--count", type=int, default=60)
+    parser.add_argument("--count", type=int, default=500)
     parser.add_argument("--out", default=os.path.join(ROOT, "out", "sweep"))
     parser.add_argument("--shadowkit", default=os.path.join(ROOT, "build", "shadowkit"))
     parser.add_argument("--methods", default="volume,angular,svbsp")
+    parser.add_argument("--set", action="append", default=[], metavar="METHOD.KEY=VALUE",
+                        help="passed to compare, e.g. angular.saturated=0 (repeatable)")
     parser.add_argument("--timeout", type=float, default=120.0, help="seconds per compare")
     parser.add_argument("--shrink", action="store_true", help="reduce every failing scene")
     args = parser.parse_args()
@@ -277,25 +292,25 @@ def main():
         scene = random_scene(rng)
         name = f"s{args.seed}-{index:03d}"
         path = os.path.join(args.out, name + ".json")
-        with open(path, "w") as out:
-            json.dump(scene, out, indent=1)
-        result = compare(args.shadowkit, path, methods, args.timeout)
+        save(scene, path)
+        result = compare(args.shadowkit, path, methods, args.set, args.timeout)
         if isinstance(result, str):
             errors.append(name)
             print(f"ERROR {name}: {result}", flush=True)
             continue
-        for (m, l), pct in result.items():
+        for (m, l), (pct, _) in result.items():
             stats[m]["runs"] += 1
             if pct > stats[m]["worst"]:
                 stats[m]["worst"], stats[m]["worst_at"] = pct, f"{name} L{l}"
-        for m, l, pct in failures_of(result):
+        for m, l, pct, interior in failures_of(result):
             stats[m]["fail"] += 1
             print(f"FAIL {name} L{l} {scene['lights'][l]['type']} {m} interior {pct:.4f}% "
-                  f"(threshold {THRESHOLDS[m]}%)", flush=True)
+                  f"(threshold {THRESHOLDS[m]}%, about {round(pct * interior / 100)} of "
+                  f"{interior} pixels)", flush=True)
             if args.shrink:
                 small, light = shrink(args.shadowkit, scene,
                                       os.path.join(args.out, f"{name}.{m}.L{l}.min.json"), m, l,
-                                      args.timeout)
+                                      args.set, args.timeout)
                 print(f"  shrunk to {len(small['objects'])} objects, {len(small['lights'])} "
                       f"lights: {name}.{m}.L{l}.min.json L{light}", flush=True)
 
