@@ -8,7 +8,8 @@ summary table. The meshes are the models of examples/models (open, non-manifold 
 Catmull-Clark control meshes read as plain polygon meshes) and small ones written here: a
 ground quad, a box, a floating quad, a fin of three quads on one edge, coplanar touching boxes
 and a closed room. With --shrink every failure is reduced greedily (objects, then the other
-lights) to the smallest scene that still fails, written next to it as NAME.min.json.
+lights) to the smallest scene that still fails, written next to it as
+NAME.METHOD.L<light>.min.json.
 
     python3 scripts/mismatch_sweep.py --seed 1 --count 500 --out out/sweep --shrink
 """
@@ -30,7 +31,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # object space, so anything above 0.05% is suspect).
 THRESHOLDS = {"volume": 0.05, "angular": 0.2, "svbsp": 0.05}
 
-# Models read as plain polygon meshes (no "subdivision"), with their bounding-box heights.
+# Models read as plain polygon meshes (no "subdivision"); all are about unit size.
 MODELS = ["pebble.obj", "pebble.off", "pebble.ply", "pebble.stl", "open-sheet.obj",
           "torus-knot.obj", "cc-open-box.obj", "cc-torus.obj", "cc-pentagonal-prism.obj"]
 GENERATED = ["box", "quad", "fin", "touching-boxes"]
@@ -260,9 +261,10 @@ def shrink(shadowkit, scene, path, method, light, settings, timeout):
             i += 1
     trial = copy.deepcopy(best)
     trial["lights"] = [best["lights"][light]]
-    if len(best["lights"]) > 1 and still_fails(shadowkit, trial, path, method, 0, settings, timeout):
+    if len(best["lights"]) > 1 and still_fails(shadowkit, trial, path, method, 0, settings,
+                                               timeout):
         best, light = trial, 0
-    still_fails(shadowkit, best, path, method, light, settings, timeout)  # leaves the minimum on disk
+    still_fails(shadowkit, best, path, method, light, settings, timeout)  # the minimum on disk
     return best, light
 
 
