@@ -13,6 +13,7 @@ ViewFrustum ViewFrustum::of(const Camera& camera, double near) {
   const Vec3 corners[4] = {f - r * tx + u * ty, f + r * tx + u * ty, f + r * tx - u * ty,
                            f - r * tx - u * ty};
   for (int k = 0; k < 4; ++k) {
+    v.near_corners[k] = camera.position + corners[k] * near;
     Vec3 n = normalize(cross(corners[k], corners[(k + 1) % 4]));
     if (dot(n, f) < 0) n = -n;
     v.planes[k + 1] = {n, -dot(n, camera.position)};

@@ -26,6 +26,14 @@ TEST(ViewFrustum, SidesPassThroughTheOuterPixelEdges) {
   EXPECT_TRUE(view.holds(cam.position + f * 0.51));
   EXPECT_NEAR(view.near_radius,
               0.5 * length(f + r * (g.x0 - 0.5 * g.step) + u * (g.y0 + 0.5 * g.step)), 1e-12);
+  // Each corner of the near rectangle lies on the near plane and on the two sides it joins.
+  for (int k = 0; k < 4; ++k) {
+    const Vec3 c = view.near_corners[k];
+    EXPECT_NEAR(view.planes[0].distance(c), 0, 1e-12);
+    EXPECT_NEAR(view.planes[1 + k].distance(c), 0, 1e-12);
+    EXPECT_NEAR(view.planes[1 + (k + 3) % 4].distance(c), 0, 1e-12);
+    EXPECT_NEAR(length(c - cam.position), view.near_radius, 1e-12);
+  }
 }
 
 TEST(ViewFrustum, ExcludesOnlyWhatOnePlaneSeparates) {

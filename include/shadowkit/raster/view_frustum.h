@@ -14,6 +14,9 @@ namespace shadowkit {
 /// the outermost pixels, normals pointing inward. There is no far plane.
 struct ViewFrustum {
   std::array<Plane, 5> planes;  ///< the near plane, then the sides
+  /// The near plane's rectangle, its corners in the sides' order: with the sides' edges
+  /// beyond it, what bounds the view where no scene face does (an eye inside the scene).
+  std::array<Vec3, 4> near_corners;
   /// The radius around the eye of the part of the view in front of the near plane.
   double near_radius = 0;
 

@@ -33,15 +33,37 @@ std::array<std::vector<Vec3>, 6> box_faces(const Bounds3& box) {
   return faces;
 }
 
+// The box's six planes, normals inward.
+std::array<Plane, 6> box_planes(const Bounds3& box) {
+  std::array<Plane, 6> planes;
+  for (int a = 0; a < 3; ++a) {
+    Vec3 n{0, 0, 0};
+    n[a] = 1;
+    planes[2 * a] = {n, -box.lo[a]};
+    planes[2 * a + 1] = {-n, box.hi[a]};
+  }
+  return planes;
+}
+
 }  // namespace
 
 ViewTheta view_theta(const Scene& scene, const LightFrame& frame) {
   const ViewFrustum frustum = view_of(scene);
+  const Bounds3 box = scene.bounds();
+  // The corners of the part of the box in view: its faces within the frustum, and, when the
+  // eye is inside the box, the near plane's rectangle within the box. Theta takes its
+  // extremes over a convex region at its corners (a constant-theta set is a half-space, or
+  // a wedge about the light's axis).
+  std::vector<std::vector<Vec3>> boundary;
+  for (const std::vector<Vec3>& face : box_faces(box)) boundary.push_back(frustum.clip(face));
+  std::vector<Vec3> near(frustum.near_corners.begin(), frustum.near_corners.end());
+  for (const Plane& plane : box_planes(box)) near = clip_polygon(near, plane);
+  boundary.push_back(std::move(near));
   ViewTheta view;
   view.lo = std::numeric_limits<double>::infinity();
   view.hi = -view.lo;
-  for (const std::vector<Vec3>& face : box_faces(scene.bounds())) {
-    for (const Vec3 p : frustum.clip(face)) {
+  for (const std::vector<Vec3>& polygon : boundary) {
+    for (const Vec3 p : polygon) {
       const Vec3 v = frame.local(p);
       if (frame.point_light() && std::hypot(v.y, v.z) <= 0) return {};  // on the light's axis
       const double theta = frame.angular_local(v).theta;

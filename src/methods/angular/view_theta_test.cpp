@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "../../testing/method_testing.h"
 #include "../../testing/test_scenes.h"
 #include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/scene_file.h"
@@ -38,6 +39,30 @@ TEST(ViewTheta, HoldsTheThetaOfEveryVisiblePoint) {
     }
   }
   EXPECT_GE(bounded, 5);
+}
+
+// With the eye inside the scene's box, the region in view is bounded by the near plane as
+// well as the box's faces: the quad under the eye, inside a closed box, was outside the
+// table (and lit) when only the faces counted.
+TEST(ViewTheta, AnEyeInsideTheSceneBoxKeepsWhatLiesNearIt) {
+  const Scene scene = load_scene_file(
+      std::string(SHADOWKIT_SOURCE_DIR) + "/examples/sweep/angular-eye-inside-box.json", {});
+  const Bounds3 box = scene.bounds();
+  const Vec3 eye = scene.camera.position;
+  ASSERT_TRUE(box.lo.x < eye.x && eye.x < box.hi.x && box.lo.y < eye.y && eye.y < box.hi.y &&
+              box.lo.z < eye.z && eye.z < box.hi.z);
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  for (std::size_t l = 0; l < scene.lights.size(); ++l) {
+    const LightFrame frame(scene.lights[l], scene.camera, scene.bounds().center(), l);
+    const ViewTheta view = view_theta(scene, frame);
+    ASSERT_TRUE(view.bounded);
+    for (std::size_t i = 0; i < vsb.face.size(); ++i) {
+      const double theta = frame.angular(vsb.point(i)).theta;
+      ASSERT_GE(theta, view.lo) << "light " << l << " pixel " << i;
+      ASSERT_LE(theta, view.hi) << "light " << l << " pixel " << i;
+    }
+  }
+  EXPECT_LE(testing::worst_interior_mismatch(scene, "angular"), 0.2);
 }
 
 // Eq. 4: about one entry per scan line where the scene is seen, so R follows the image
