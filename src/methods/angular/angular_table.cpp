@@ -20,6 +20,7 @@ namespace shadowkit {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
 // The RE loops are sliced in this many chunks, each a task with its own list of pairs:
 // enough for both cores to balance on small scenes too, few enough lists to merge.
 constexpr std::size_t kChunks = 16;
@@ -146,69 +147,85 @@ ThetaQuantization quantize(const Scene& scene, const std::vector<ObjectLoops>& o
   return q;
 }
 
-// Depth along the rays of one slice as a function of phi, (alpha phi + beta) / (gamma phi +
-// delta): where the ray at phi meets a plane (a point light's ray scaled to unit rho);
-// +inf where it does not.
-struct RayDepth {
-  double alpha = 0, beta = 0, gamma = 0, delta = 1;
+// A plane's depth along the rays of a slice as a linear form in (phi, u, v): for a point
+// light the inverse depth 1 / t = (a.x phi + a.y sin + a.z cos) / -b of the plane
+// a.p + b = 0 along the ray (phi, sin, cos) of the slice at theta (scaled to unit rho), with
+// (u, v) = (sin, cos); for a directional light the depth t = (a.x phi + a.y theta + b) / -a.z
+// along the ray through (phi, theta), with (u, v) = (theta, 1).
+struct DepthForm {
+  Vec3 c;
 
-  RayDepth() = default;
-  RayDepth(const ThetaSlice& s, const FrameAffine& plane) {
-    if (s.point_light) {
-      beta = -plane.b, gamma = plane.a.x, delta = plane.a.y * s.sin + plane.a.z * s.cos;
-    } else {
-      alpha = -plane.a.x, beta = -(plane.a.y * s.theta + plane.b), delta = plane.a.z;
-    }
+  static DepthForm of(const FrameAffine& plane, bool point_light) {
+    if (point_light) return {plane.a * (1 / -plane.b)};
+    return {Vec3{plane.a.x, plane.a.y, plane.b} * (1 / -plane.a.z)};
   }
-  double at(double phi) const {
-    const double t = (alpha * phi + beta) / (gamma * phi + delta);
-    return std::isfinite(t) && t > 0 ? t : std::numeric_limits<double>::infinity();
-  }
+  double at(double phi, double u, double v) const { return c.x * phi + c.y * u + c.z * v; }
 };
 
 // Sec. 10 within one entry, its pairs offered in order of phi_begin: a pair adds nothing
 // when one of the last two kept pairs holds its phi range and lies nearer the light at both
-// its ends (depth along the rays is linear-fractional in phi, so the ends decide). The pair
-// reaching furthest is no better a candidate: on the cube field it is the ground's, behind
-// everything.
+// its ends, at the entry's centre and at its two theta bounds: a pair answers for the whole
+// entry, and a face nearly edge-on to the light (a ground under a grazing light) can be
+// nearer at the centre and far beyond at a bound. Depth along the rays is linear-fractional
+// in phi, so the ends decide; across the entry the bounds and the centre stand for theta.
+// The pair reaching furthest is no better a candidate: on the cube field it is the
+// ground's, behind everything.
 class Saturation {
  public:
-  Saturation(const AngularTable& table, const ThetaSlice& s) : table_(table), s_(s) {}
+  Saturation(const AngularTable& table, int k, bool point_light)
+      : table_(table), point_light_(point_light) {
+    const ThetaQuantization& q = table.theta();
+    const double thetas[3] = {q.centre(k), q.lower(k), q.lower(k + 1)};  // most fail at once
+    for (int i = 0; i < 3; ++i) {
+      rays_[i] = point_light ? std::pair{std::sin(thetas[i]), std::cos(thetas[i])}
+                             : std::pair{thetas[i], 1.0};
+    }
+  }
 
   bool covers(const AngularPair& q) {
     if (!std::isfinite(q.phi_begin) || !std::isfinite(q.phi_end)) return false;
-    double depth[2] = {-1, -1};  // q's own, once needed
-    const auto nearer = [&](Kept& p) {
-      if (p.begin > q.phi_begin || p.end < q.phi_end) return false;
-      if (depth[0] < 0) {
-        const RayDepth own = ray_depth(q.hidden);
-        depth[0] = own.at(q.phi_begin), depth[1] = own.at(q.phi_end);
-      }
-      if (!std::isfinite(depth[0]) || !std::isfinite(depth[1])) return false;
-      if (!p.depth) p.depth = ray_depth(p.hidden);
-      return depth[0] > p.depth->at(q.phi_begin) * (1 + 1e-9) &&
-             depth[1] > p.depth->at(q.phi_end) * (1 + 1e-9);
-    };
+    std::optional<DepthForm> own;  // q's, once needed
     for (std::size_t i = 0; i < std::min<std::size_t>(kept_, 2); ++i) {
-      if (nearer(recent_[i])) return true;
+      const Kept& p = recent_[i];
+      if (p.begin > q.phi_begin || p.end < q.phi_end) continue;
+      if (!own) own = form(q.hidden);
+      if (nearer(p.depth, *own, q.phi_begin, q.phi_end)) return true;
     }
     return false;
   }
-  void keep(const AngularPair& p) { recent_[kept_++ % 2] = {p.phi_begin, p.phi_end, p.hidden, {}}; }
+  void keep(const AngularPair& p) {
+    recent_[kept_++ % 2] = {p.phi_begin, p.phi_end, form(p.hidden)};
+  }
 
  private:
-  // A kept pair; its depth is computed when a later pair first falls within it.
   struct Kept {
     double begin = 0, end = 0;
-    std::uint32_t hidden = 0;
-    std::optional<RayDepth> depth;
+    DepthForm depth;
   };
-  RayDepth ray_depth(std::uint32_t hidden) const {
-    return RayDepth(s_, table_.hidden(hidden).plane);
+
+  DepthForm form(std::uint32_t hidden) const {
+    return DepthForm::of(table_.hidden(hidden).plane, point_light_);
+  }
+  // Plane p lies nearer the light than plane q, which the rays meet, along every ray at
+  // phi0 and phi1 of the entry's three thetas (NaN and infinity, a plane through the light
+  // or parallel to the rays, are never nearer).
+  bool nearer(const DepthForm& p, const DepthForm& q, double phi0, double phi1) const {
+    constexpr double kTolerance = 1 + 1e-9;
+    for (const auto& [u, v] : rays_) {
+      for (const double phi : {phi0, phi1}) {
+        const double wp = p.at(phi, u, v), wq = q.at(phi, u, v);
+        const bool ok = point_light_  // w is 1 / t
+                            ? wq > 0 && wq < kInf && wp < kInf && wp > wq * kTolerance
+                            : wq < kInf && wp > 0 && wq > wp * kTolerance;
+        if (!ok) return false;
+      }
+    }
+    return true;
   }
 
   const AngularTable& table_;
-  const ThetaSlice& s_;
+  bool point_light_;
+  std::pair<double, double> rays_[3];
   std::size_t kept_ = 0;
   Kept recent_[2];
 };
@@ -419,7 +436,7 @@ std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortSc
   // narrow ones move down in place past the dropped and the wide.
   const double wide = (extent_end - entry.front().phi_begin) / 16;
   std::optional<Saturation> saturation;
-  if (saturate) saturation.emplace(*this, *saturate);
+  if (saturate) saturation.emplace(*this, k, saturate->point_light);
   std::vector<AngularPair>& wide_pairs = scratch.pairs;
   wide_pairs.clear();
   std::size_t narrow = 0;
