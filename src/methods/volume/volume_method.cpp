@@ -61,7 +61,11 @@ CasterVolume caster_volume(const Scene& scene, const SubObjects& parts,
   std::erase_if(edges, [&](const ContourEdge& e) {
     return !casting[edge_sub_object(object, parts, e.edge)];
   });
-  if (edges.empty()) return v;
+  // No contour edges is no reason to stop: a closed mesh around a point light has none, and
+  // its faces alone bound its volume, all space outside it (Crow Sec. VII: the polygons
+  // facing the light with the shadow polygons bound the volume). No pixel ray crosses a
+  // face before its visible point, so depth-pass gives every point the eye's count through
+  // those faces ("the eye is in shadow"); depth-fail counts them as caps.
   const std::vector<ContourLoop> loops = chain_contour_loops(edges);
   v.contour_edges = edges.size();
   v.loops = loops.size();
