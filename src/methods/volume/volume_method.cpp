@@ -22,13 +22,18 @@ struct CasterVolume {
 };
 
 // Depth-pass misses crossings the near plane clips away, so it needs every shadow polygon
-// farther from the eye than the near part of the view; and it needs the eye's own count.
+// farther from the eye than the near part of the view; and every face, or the view shows
+// points behind a clipped face with the eye's count (a light inside a closed mesh: points
+// inside it, counted 1). And it needs the eye's own count.
 bool needs_depth_fail(const Mesh& mesh, const std::vector<ContourEdge>& edges, const Light& light,
                       Vec3 eye, const ViewFrustum& view, std::optional<int> eye_count) {
   if (!eye_count) return true;
-  return std::any_of(edges.begin(), edges.end(), [&](const ContourEdge& e) {
-    return std::abs(side_plane(mesh, e, light).distance(eye)) <= 2 * view.near_radius;
-  });
+  const auto near_eye = [&](const Plane& plane) {
+    return std::abs(plane.distance(eye)) <= 2 * view.near_radius;
+  };
+  return std::any_of(edges.begin(), edges.end(),
+                     [&](const ContourEdge& e) { return near_eye(side_plane(mesh, e, light)); }) ||
+         std::any_of(mesh.planes.begin(), mesh.planes.end(), near_eye);
 }
 
 // Indices of the scene triangles of object \p o (they follow face order).
