@@ -96,6 +96,25 @@ TEST(Counting, NearPlaneCuttingAShadowVolumeSwitchesToDepthFail) {
   EXPECT_LE(testing::worst_interior_mismatch(scene, "volume"), 0.05);
 }
 
+TEST(Counting, NearPlaneCuttingAFaceSwitchesToDepthFail) {
+  // The eye 1e-7 outside a closed box's face x = 1, looking in: the near plane (2.6e-7 in
+  // front of it) cuts the face away, and the view shows the box's inside without the eye's
+  // count changing. Inside, everything is lit by a light in the box and shadowed by one
+  // outside it.
+  const Camera cam = testing::camera({1 + 1e-7, 1.5, 0.3}, {-1, 1.2, 0}, 64, 48);
+  for (const Vec3 light : {Vec3{0, 1.5, 0}, Vec3{3, 5, 2}}) {
+    const Scene scene = testing::make_scene(cam, {testing::point_light(light)},
+                                            {testing::box({-1, 0.5, -1}, {1, 2.5, 1})});
+    const std::uint8_t inside = light.x < 1 ? kMaskLit : kMaskShadow;
+    EXPECT_EQ(depth_fail_objects(scene), 1);
+    const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+    VolumeMethod m({});
+    const ShadowMask mask = testing::method_mask(m, scene, vsb, 0);
+    EXPECT_EQ(std::count(mask.pixels.begin(), mask.pixels.end(), inside), 64 * 48) << light.x;
+    EXPECT_LE(testing::worst_interior_mismatch(scene, "volume"), 0.05) << light.x;
+  }
+}
+
 TEST(Counting, ForcedDepthPassAndDepthFailAgreeWithTheReference) {
   const Scene scene = square_scene({0, 9, 6}, {0, 0, 0});
   EXPECT_EQ(depth_fail_objects(scene, {"volume", {{"count", "pass"}}}), 0);

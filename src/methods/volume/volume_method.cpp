@@ -22,13 +22,18 @@ struct CasterVolume {
 };
 
 // Depth-pass misses crossings the near plane clips away, so it needs every shadow polygon
-// farther from the eye than the near part of the view; and it needs the eye's own count.
+// farther from the eye than the near part of the view; and every face, or the view shows
+// points behind a clipped face with the eye's count (a light inside a closed mesh: points
+// inside it, counted 1). And it needs the eye's own count.
 bool needs_depth_fail(const Mesh& mesh, const std::vector<ContourEdge>& edges, const Light& light,
                       Vec3 eye, const ViewFrustum& view, std::optional<int> eye_count) {
   if (!eye_count) return true;
-  return std::any_of(edges.begin(), edges.end(), [&](const ContourEdge& e) {
-    return std::abs(side_plane(mesh, e, light).distance(eye)) <= 2 * view.near_radius;
-  });
+  const auto near_eye = [&](const Plane& plane) {
+    return std::abs(plane.distance(eye)) <= 2 * view.near_radius;
+  };
+  return std::any_of(edges.begin(), edges.end(),
+                     [&](const ContourEdge& e) { return near_eye(side_plane(mesh, e, light)); }) ||
+         std::any_of(mesh.planes.begin(), mesh.planes.end(), near_eye);
 }
 
 // Indices of the scene triangles of object \p o (they follow face order).
@@ -61,7 +66,11 @@ CasterVolume caster_volume(const Scene& scene, const SubObjects& parts,
   std::erase_if(edges, [&](const ContourEdge& e) {
     return !casting[edge_sub_object(object, parts, e.edge)];
   });
-  if (edges.empty()) return v;
+  // No contour edges is no reason to stop: a closed mesh around a point light has none, and
+  // its faces alone bound its volume, all space outside it (Crow Sec. VII: the polygons
+  // facing the light with the shadow polygons bound the volume). No pixel ray crosses a
+  // face before its visible point, so depth-pass gives every point the eye's count through
+  // those faces ("the eye is in shadow"); depth-fail counts them as caps.
   const std::vector<ContourLoop> loops = chain_contour_loops(edges);
   v.contour_edges = edges.size();
   v.loops = loops.size();
