@@ -34,7 +34,7 @@ struct ObjectLoops {
   std::vector<std::uint32_t> hidden_id;   // per face, into AngularTable::hidden_
   std::vector<char> convex;               // per occluding face
   std::vector<std::uint32_t> axis_faces;  // occluding faces the light's X axis pierces at X < 0
-  double theta_lo = std::numeric_limits<double>::infinity(), theta_hi = -theta_lo;
+  double theta_lo = kInf, theta_hi = -theta_lo;
   bool wraps = false;  // an RE passes behind the light's back (theta = +-pi)
 };
 
@@ -123,7 +123,7 @@ void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& fra
 ThetaQuantization quantize(const Scene& scene, const std::vector<ObjectLoops>& objects,
                            const ViewTheta& view, double scan_line, int resolution) {
   ThetaQuantization q;
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  double lo = kInf, hi = -lo;
   for (const ObjectLoops& o : objects) {
     q.full_turn = q.full_turn || o.wraps || !o.axis_faces.empty();
     lo = std::min(lo, o.theta_lo);
@@ -440,7 +440,7 @@ std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortSc
   std::vector<AngularPair>& wide_pairs = scratch.pairs;
   wide_pairs.clear();
   std::size_t narrow = 0;
-  double reach = -std::numeric_limits<double>::infinity();
+  double reach = -kInf;
   for (const AngularPair& pair : entry) {
     if (saturation && saturation->covers(pair)) continue;
     if (saturation) saturation->keep(pair);
