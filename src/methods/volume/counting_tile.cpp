@@ -31,7 +31,11 @@ bool CountingTile::load(const VisibleFrame& frame, int x0_, int y0_, int w_, int
   std::fill_n(&cell_jump[0][0], kCellRows * kCellColumns, 0);
   all_keys = {};
   receivers = {};
+  visible_parts.clear();
+  shadowed = 0;
   for (int band = 0; band * kBand < h; ++band) load_band(frame, band);
+  std::sort(visible_parts.begin(), visible_parts.end());
+  visible_parts.erase(std::unique(visible_parts.begin(), visible_parts.end()), visible_parts.end());
   return !all_keys.empty();
 }
 
@@ -44,6 +48,7 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
   Bounds3 all_parts[kCellColumns];
   std::fill_n(cell_keys[band], kCellColumns, KeyRange{});
   std::fill_n(cell_faces[band], kCellColumns, FaceRange{});
+  bool lit[kCellColumns] = {};  // shows a face's lit side
   for (int r = band * kBand; r < std::min(h, (band + 1) * kBand); ++r) {
     std::copy_n(frame.surfaces.face.begin() + std::ptrdiff_t(frame.surfaces.index(x0, y0 + r)), w,
                 face + r * w);
@@ -63,6 +68,7 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
           continue;
         }
         faces.add(f);
+        lit[cell] |= frame.lit_side[f];
         const KeyPlane& plane = frame.face_keys[f];
         for (int i = c; i < next; ++i) key[r * w + i] = plane.at(x0 + i, y0 + r);
         KeyRange run;
@@ -70,6 +76,7 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
         run.add(key[r * w + next - 1]);
         keys.add(run);
         const std::uint32_t p = frame.parts.of_face[f];
+        if (visible_parts.empty() || visible_parts.back() != p) visible_parts.push_back(p);
         all_parts[cell].add(frame.parts.bounds[p]);
         const int known = std::min(parts[cell], kCellReceivers);
         const int slot = int(std::find(part[cell], part[cell] + known, p) - part[cell]);
@@ -90,6 +97,7 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
     CellReceivers& out = cell_receivers[band][cell];
     out.count = 0;
     if (cell_keys[band][cell].empty()) continue;
+    if (!lit[cell]) shadowed |= std::uint64_t(1) << (band * kCellColumns + cell);
     const int xa = x0 + cell * kBlock, xb = x0 + std::min(w, (cell + 1) * kBlock) - 1;
     const auto add = [&](const Bounds3& box, const KeyRange& keys) {
       const Bounds3 piece = view_piece(frame.rays, xa, ya, xb, yb, keys);
@@ -120,11 +128,16 @@ std::size_t CountingTile::finish(const VisibleFrame& frame, ShadowMask& mask) {
       row_delta[std::min(w, (cell + 1) * kBlock)] -= cell_jump[r / kBand][cell];
     }
     std::uint8_t* out = &mask.pixels[frame.surfaces.index(x0, y0 + r)];
+    const std::uint64_t shadowed_row = shadowed >> (r / kBand * kCellColumns);
     int jump = 0;
     for (int c = 0; c < w; ++c) {
       jump += row_delta[c];
       const std::uint32_t f = face[r * w + c];
       if (f == kNoFace) continue;
+      if (shadowed_row >> (c / kBlock) & 1) {
+        out[c] = kMaskShadow;
+        continue;
+      }
       const int total = count[r * w + c] + jump;
       negative += total < 0;
       out[c] = mask_value(frame, f, total);

@@ -40,6 +40,18 @@ inline std::uint8_t mask_value(const VisibleFrame& frame, std::uint32_t f, int t
   return total <= 0 && frame.lit_side[f] ? kMaskLit : kMaskShadow;
 }
 
+/// Whether the visible point of pixel (\p x, \p y), at depth key \p visible, lies beyond
+/// \p plane (on its positive side; the eye on its negative), whose key plane is \p key: a
+/// larger key than the visible one. Keys within the slack of each other fall back to the
+/// exact plane test on the visible point itself.
+inline bool beyond_plane(const Plane& plane, const KeyPlane& key, const VisibleFrame& frame, int x,
+                         int y, double visible) {
+  const double k = key.at(x, y);
+  if (k - key.slack > visible) return true;
+  if (k + key.slack < visible) return false;
+  return plane.distance(frame.surfaces.point(frame.surfaces.index(x, y))) > 0;
+}
+
 /// \brief The faces a run of pixels shows: exactly lo and hi while it shows at most two,
 /// any face in [lo, hi] once it shows more.
 struct FaceRange {
@@ -90,8 +102,17 @@ struct CountingTile {
   FaceRange run_faces[kTile][kCellColumns], cell_faces[kCellRows][kCellColumns];
   KeyRange cell_keys[kCellRows][kCellColumns], all_keys;
   CellReceivers cell_receivers[kCellRows][kCellColumns];
-  Bounds3 band_receivers[kCellRows];  ///< hold every visible point of a cell row
-  Bounds3 receivers;                  ///< holds every visible point of the tile
+  Bounds3 band_receivers[kCellRows];         ///< hold every visible point of a cell row
+  Bounds3 receivers;                         ///< holds every visible point of the tile
+  std::vector<std::uint32_t> visible_parts;  ///< the sub-objects it shows, sorted
+  /// Cells whose every visible point is in shadow, whatever the other volumes add: it lies
+  /// in a convex volume (ConvexVolume), or the camera sees only unlit sides (contract
+  /// condition 1). Every count being >= 0, no more polygons need to visit them.
+  std::uint64_t shadowed = 0;
+
+  bool shows(std::uint32_t sub_object) const {
+    return std::binary_search(visible_parts.begin(), visible_parts.end(), sub_object);
+  }
 
   /// Loads the tile at (x0, y0), w x h pixels; false if it shows only background.
   bool load(const VisibleFrame& frame, int x0, int y0, int w, int h);

@@ -57,6 +57,16 @@ inline Crossing classify(double key_lo, double key_hi, double slack, const KeyRa
   return Crossing::mixed;
 }
 
+/// Places \p key over the pixels of columns [xa, xb] and rows [ya, yb] against their
+/// \p visible keys: a plane's key is linear, so its corners bound it.
+inline Crossing classify_rectangle(const KeyPlane& key, int xa, int xb, int ya, int yb,
+                                   const KeyRange& visible) {
+  const double k00 = key.at(xa, ya), k10 = key.at(xb, ya), k01 = key.at(xa, yb),
+               k11 = key.at(xb, yb);
+  return classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}), key.slack,
+                  visible);
+}
+
 /// The world-space box holding every point that pixel centres [x0, x1] x [y0, y1] see at
 /// keys in \p keys (widened, not empty, positive): the corners of that piece of the view.
 Bounds3 view_piece(const RayGrid& rays, int x0, int y0, int x1, int y1, const KeyRange& keys);

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "../../raster/convex_polygon.h"
+#include "convex_volume.h"
 #include "counting_tile.h"
 #include "polygon_tiles.h"
 
@@ -16,7 +17,6 @@ namespace shadowkit {
 namespace {
 
 using raster::ScreenPolygon;
-constexpr std::uint32_t kNoSubObject = std::numeric_limits<std::uint32_t>::max();
 
 // Shadow polygons as convex screen polygons, face = polygon index. Order does not matter:
 // counts add up.
@@ -52,15 +52,6 @@ int settled_jump(const ShadowPolygon& p, Crossing c) {
   return c == Crossing::all_behind ? -p.jump : 0;
 }
 
-// The polygon's key plane over columns [xa, xb] of rows [ya, yb], against visible keys.
-Crossing classify_rectangle(const KeyPlane& key, int xa, int xb, int ya, int yb,
-                            const KeyRange& visible) {
-  const double k00 = key.at(xa, ya), k10 = key.at(xb, ya), k01 = key.at(xa, yb),
-               k11 = key.at(xb, yb);
-  return classify(std::min({k00, k10, k01, k11}), std::max({k00, k10, k01, k11}), key.slack,
-                  visible);
-}
-
 // Whether the visible point of pixel \p i, on the polygon's edge face \p k, lies beyond the
 // polygon's plane. Hazard: where the raster gives such a face a pixel whose ray passes just
 // outside it (vertices snap to 1/256 pixel), the visible point is taken on its plane a
@@ -73,11 +64,10 @@ bool edge_face_beyond(const ShadowPolygon& p, int k, const VisibleFrame& frame, 
   return side > 0;
 }
 
-// Adds one polygon's crossings on columns [first, last] of tile row \p row, pixel by pixel:
-// where the visible point lies beyond the polygon's plane, its key is smaller than the
-// polygon's. Keys within the slack of each other fall back to the exact plane test on the
-// visible point itself, so only coverage depends on the raster. The tile's own copies of
-// faces and keys keep the common case to a few operations per pixel.
+// Adds one polygon's crossings on columns [first, last] of tile row \p row, pixel by pixel,
+// where the visible point lies beyond the polygon's plane (beyond_plane): only coverage
+// depends on the raster. The tile's own copies of faces and keys keep the common case to a
+// few operations per pixel.
 void count_span(const ShadowPolygon& p, const KeyPlane& key, const VisibleFrame& frame,
                 CountingTile& t, int row, int first, int last) {
   const int py = t.y0 + row;
@@ -94,12 +84,8 @@ void count_span(const ShadowPolygon& p, const KeyPlane& key, const VisibleFrame&
     if (f == p.edge_faces[0] || f == p.edge_faces[1]) {
       beyond = edge_face_beyond(p, f == p.edge_faces[0] ? 0 : 1, frame, frame.surfaces.index(c, py),
                                 visible);
-    } else if (const double k = key.at(c, py); k - key.slack > visible) {
-      beyond = true;
-    } else if (k + key.slack < visible) {
-      beyond = false;
     } else {
-      beyond = dot(p.normal, frame.surfaces.point(frame.surfaces.index(c, py))) + p.d > 0;
+      beyond = beyond_plane({p.normal, p.d}, key, frame, c, py, visible);
     }
     t.count[base + c] += beyond && f != p.face ? before : behind;
   }
@@ -125,6 +111,7 @@ class ReceiverTest {
   /// Whether it can shadow a visible point of the cell.
   bool reaches(int cell_row, int cell_column) {
     const std::uint64_t bit = std::uint64_t(1) << (cell_row * kCellColumns + cell_column);
+    if (tile_.shadowed & bit) return false;  // settled whatever it adds
     if (!(tested_ & bit)) {
       tested_ |= bit;
       const CellReceivers& cell = tile_.cell_receivers[cell_row][cell_column];
@@ -207,6 +194,29 @@ class TileCounter {
         }
       }
       first = last + 1;
+    }
+    return tested;
+  }
+
+  // Counts a convex volume whole over the tile, in the cells its polygons \p group reach
+  // within their bounds; returns the pixels tested one by one.
+  std::size_t count_volume(const ConvexVolume& volume, std::span<const ScreenPolygon* const> group,
+                           ReceiverTest& receivers, CountingTile& t) const {
+    int xa = t.x0 + t.w, xb = t.x0 - 1, ya = t.y0 + t.h, yb = t.y0 - 1;
+    for (const ScreenPolygon* s : group) {
+      xa = std::min(xa, s->min_x), xb = std::max(xb, s->max_x);
+      ya = std::min(ya, s->min_y), yb = std::max(yb, s->max_y);
+    }
+    xa = std::max(xa, t.x0), xb = std::min(xb, t.x0 + t.w - 1);
+    ya = std::max(ya, t.y0), yb = std::min(yb, t.y0 + t.h - 1);
+    if (xa > xb || ya > yb) return 0;
+    std::size_t tested = 0;
+    for (int band = (ya - t.y0) / kBand; band <= (yb - t.y0) / kBand; ++band) {
+      if (!receivers.reaches_band(band)) continue;
+      for (int c = (xa - t.x0) / kBlock; c <= (xb - t.x0) / kBlock; ++c) {
+        if (receivers.reaches(band, c))
+          tested += volume.count_cell(frame_, band, c, xa, xb, ya, yb, t);
+      }
     }
     return tested;
   }
@@ -313,6 +323,7 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   const PolygonBins bins(screen, view.width, view.height);
   const TileCounter counter(polygons, keys, frame);
   const std::vector<char> cullable = receiver_cullable(frusta, polygons, cam.position);
+  const ConvexVolumes volumes(polygons, frusta, cullable, frame.rays);
   std::atomic<std::size_t> fill = 0, negative = 0, culled = 0;
 
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
@@ -325,20 +336,30 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
     }
     if (!t.load(frame, x0, y0, w, h)) return;
     std::size_t tile_fill = 0, tile_culled = 0;
-    std::uint32_t part = kNoSubObject;
-    std::optional<ReceiverTest> receivers;
-    for (std::uint32_t b = bins.start[tile]; b < bins.start[tile + 1]; ++b) {
-      const ScreenPolygon& s = screen[bins.items[b]];
+    thread_local std::vector<const ScreenPolygon*> group;
+    for (std::uint32_t b = bins.start[tile], end; b < bins.start[tile + 1]; b = end) {
       // Polygons come grouped by sub-object: Crow's receiver test once per sub-object and
       // tile, then per cell.
-      if (const std::uint32_t k = polygons[s.face].sub_object; k != part) {
-        part = k;
-        receivers.reset();
-        if (!cullable[k] || !frusta[k].misses(t.receivers))
-          receivers.emplace(frusta[k], cullable[k], t);
-        tile_culled += !receivers;
+      const std::uint32_t k = polygons[screen[bins.items[b]].face].sub_object;
+      group.clear();
+      for (end = b; end < bins.start[tile + 1]; ++end) {
+        const ScreenPolygon& s = screen[bins.items[end]];
+        if (polygons[s.face].sub_object != k) break;
+        group.push_back(&s);
       }
-      if (receivers) tile_fill += counter.count_polygon(s, *receivers, t);
+      if (cullable[k] && frusta[k].misses(t.receivers)) {
+        ++tile_culled;
+        continue;
+      }
+      ReceiverTest receivers(frusta[k], cullable[k], t);
+      // A tile showing the sub-object itself counts its polygons: where the raster gives one
+      // of its faces a pixel just past an edge, the point on the face's plane may lie in its
+      // own volume, which its polygons, with their edge faces, place as the exact test does.
+      if (const ConvexVolume* volume = volumes.of(k); volume && !t.shows(k)) {
+        tile_fill += counter.count_volume(*volume, group, receivers, t);
+      } else {
+        for (const ScreenPolygon* s : group) tile_fill += counter.count_polygon(*s, receivers, t);
+      }
     }
     fill += tile_fill;
     culled += tile_culled;

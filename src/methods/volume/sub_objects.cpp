@@ -1,6 +1,7 @@
 #include "sub_objects.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 #include <tuple>
@@ -9,6 +10,23 @@ namespace shadowkit {
 namespace {
 
 constexpr std::uint32_t kUnnumbered = std::numeric_limits<std::uint32_t>::max();
+
+// Whether every face's plane of sub-object \p k has all of \p points (its vertices) on one
+// side. Hazard: a relative tolerance, far above the rounding of the planes.
+bool faces_support(const Scene& scene, const SubObjects& s, std::size_t k,
+                   std::span<const Vec3> points) {
+  const Bounds3& b = s.bounds[k];
+  const double tolerance = 1e-9 * std::max({b.diagonal(), length(b.lo), length(b.hi)}) + 1e-300;
+  return std::all_of(s.faces(k).begin(), s.faces(k).end(), [&](std::uint32_t f) {
+    const Plane& plane = scene.face_plane(f);
+    double lo = INFINITY, hi = -INFINITY;
+    for (const Vec3& p : points) {
+      const double d = plane.distance(p);
+      lo = std::min(lo, d), hi = std::max(hi, d);
+    }
+    return lo >= -tolerance || hi <= tolerance;
+  });
+}
 
 // Union-find over the faces of one mesh.
 struct FaceSets {
@@ -26,6 +44,7 @@ struct FaceSets {
 SubObjects SubObjects::of(const Scene& scene) {
   SubObjects s;
   s.of_face.resize(scene.face_count());
+  std::vector<char> closed;
   for (const SceneObject& object : scene.objects) {
     const Mesh& mesh = object.mesh;
     FaceSets sets(mesh.face_count());
@@ -38,11 +57,18 @@ SubObjects SubObjects::of(const Scene& scene) {
     std::vector<std::uint32_t> id(mesh.face_count(), kUnnumbered);
     for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
       std::uint32_t& part = id[sets.find(f)];
-      if (part == kUnnumbered) part = std::uint32_t(s.bounds.size()), s.bounds.emplace_back();
+      if (part == kUnnumbered) {
+        part = std::uint32_t(s.bounds.size());
+        s.bounds.emplace_back();
+        closed.push_back(1);
+      }
       s.of_face[object.first_face + f] = part;
       for (std::uint32_t k = 0; k < mesh.face_size(f); ++k) {
         s.bounds[part].add(mesh.vertices[mesh.face_vertex(f, k)]);
       }
+    }
+    for (const MeshEdge& edge : mesh.edges) {
+      if (edge.use_count != 2) closed[id[sets.find(mesh.edge_uses[edge.first_use].face)]] = 0;
     }
   }
   // Faces per sub-object, by counting sort.
@@ -54,6 +80,7 @@ SubObjects SubObjects::of(const Scene& scene) {
   for (std::uint32_t f = 0; f < s.of_face.size(); ++f) s.face_ids_[next[s.of_face[f]]++] = f;
   // Corners: the distinct vertices of small sub-objects, the box of large ones.
   s.corner_start_.push_back(0);
+  s.convex.assign(s.size(), 0);
   std::vector<Vec3> points;
   for (std::size_t k = 0; k < s.size(); ++k) {
     points.clear();
@@ -81,6 +108,8 @@ SubObjects SubObjects::of(const Scene& scene) {
         points.push_back(
             {c & 1 ? b.hi.x : b.lo.x, c & 2 ? b.hi.y : b.lo.y, c & 4 ? b.hi.z : b.lo.z});
       }
+    } else {
+      s.convex[k] = closed[k] && faces_support(scene, s, k, points);
     }
     s.corners_.insert(s.corners_.end(), points.begin(), points.end());
     s.corner_start_.push_back(std::uint32_t(s.corners_.size()));

@@ -19,6 +19,11 @@ struct SubObjects {
 
   std::vector<std::uint32_t> of_face;  ///< sub-object per global face id
   std::vector<Bounds3> bounds;         ///< per sub-object, of its faces' vertices
+  /// Per sub-object: closed (every edge has two faces) and convex (every face's plane has
+  /// all its vertices on one side), with its vertices listed as its corners. Its shadow
+  /// volume is then the region behind its light-facing faces and inside the planes of its
+  /// contour edges' shadow polygons, which ShadowFrustum can hold exactly.
+  std::vector<char> convex;
 
   static SubObjects of(const Scene& scene);
   std::size_t size() const { return bounds.size(); }

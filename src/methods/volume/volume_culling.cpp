@@ -99,20 +99,27 @@ ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Rea
 }
 
 void ShadowFrustum::cut(std::span<const Vec3> corners, const Plane& plane) {
-  if (everywhere_ || cuts_ == kMaxPlanes || !is_finite(plane.normal) || plane.normal == Vec3{})
+  if (everywhere_ || plane.normal == Vec3{}) return;  // the plane at infinity bounds nothing
+  if (cuts_ == kMaxPlanes || !is_finite(plane.normal)) {
+    lost_ = true;
     return;
+  }
   double lo = INFINITY, hi = -INFINITY;
   for (const Vec3& p : corners) {
     const double d = plane.distance(p);
     lo = std::min(lo, d), hi = std::max(hi, d);
   }
   const bool positive = lo >= -tolerance_, negative = hi <= tolerance_;
-  if (!positive && !negative) return;  // corners on both sides
+  if (!positive && !negative) {  // corners on both sides
+    lost_ = true;
+    return;
+  }
   // The corners' side; the one away from the light when they all lie on the plane.
   Plane inward = plane;
   if (!positive || (negative && light_side(plane, light_) > 0)) inward = {-plane.normal, -plane.d};
   const double light_at = light_side(inward, light_);
   if (light_at > (light_.type == Light::Type::point ? tolerance_ : 1e-12)) return;
+  volume_planes_[cuts_] = inward;
   // Moved out past the corners' tolerance and the rounding of later tests.
   inward.d += 2 * tolerance_;
   // Cuts go first: they are the tighter. Without room, the box plane in the way goes.

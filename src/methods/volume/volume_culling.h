@@ -28,6 +28,16 @@ class ShadowFrustum {
   /// takes the place of one of the box's planes when there is no room.
   void cut(std::span<const Vec3> corners, const Plane& plane);
   static constexpr int kMaxPlanes = 12;
+  /// Declares the region the exact volume of a closed convex sub-object (SubObjects::convex)
+  /// once the planes of all its faces and of the shadow polygons of all its contour edges
+  /// were cut in (a light-facing face and a contour edge bound it; cut refuses a face turned
+  /// away). It stays a bound only if some cut found no room or no plane.
+  void make_exact() { exact_ = !everywhere_ && !lost_; }
+  /// The planes of an exact region as cut, inward normals, not moved out: the volume is
+  /// the points on their positive side. Empty when the region is only a bound.
+  std::span<const Plane> volume_planes() const {
+    return {volume_planes_.data(), exact_ ? std::size_t(cuts_) : 0};
+  }
 
   /// No point of \p receiver can lie in the region: nothing inside the box shadows it.
   bool misses(const Bounds3& receiver) const;
@@ -36,9 +46,12 @@ class ShadowFrustum {
 
  private:
   bool everywhere_ = false;  ///< a point light inside the box
+  bool lost_ = false;        ///< a plane of the volume was refused: the region is larger
+  bool exact_ = false;       ///< the region is the shadow volume itself (make_exact)
   Light light_;
   double tolerance_ = 0;  ///< far above the rounding of distances to points in the reach
-  std::array<Plane, kMaxPlanes> planes_{};  ///< inward normals: the cuts, then the box's
+  std::array<Plane, kMaxPlanes> planes_{};         ///< inward normals: the cuts, then the box's
+  std::array<Plane, kMaxPlanes> volume_planes_{};  ///< the cuts before they were moved out
   int plane_count_ = 0, cuts_ = 0;
   std::array<Vec3, 16> hull_{};  ///< the box's corners and the same pushed to the reach
   Bounds3 hull_box_;

@@ -19,6 +19,7 @@ struct CasterVolume {
   int eye_count = 0;
   std::size_t contour_edges = 0, loops = 0, open_loops = 0;
   bool depth_fail = false;
+  std::vector<std::uint32_t> incomplete;  ///< sub-objects with a contour edge but no polygon
 };
 
 // Depth-pass misses crossings the near plane clips away, so it needs every shadow polygon
@@ -86,10 +87,13 @@ CasterVolume caster_volume(const Scene& scene, const SubObjects& parts,
   v.eye_count = v.depth_fail ? 0 : *eye_count;
   // Shadow polygons (Fig. 4), and the caps that close the volumes for depth-fail.
   for (const ContourEdge& e : edges) {
+    const std::uint32_t part = edge_sub_object(object, parts, e.edge);
     if (auto p = side_polygon(mesh, e, light, reach, eye, v.depth_fail)) {
-      p->sub_object = edge_sub_object(object, parts, e.edge);
+      p->sub_object = part;
       for (std::uint32_t& f : p->edge_faces) f = f == kNoFace ? f : object.first_face + f;
       v.polygons.push_back(*p);
+    } else {
+      v.incomplete.push_back(part);
     }
   }
   if (v.depth_fail) {
@@ -152,7 +156,9 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
   eye_count_ = 0;
   contour_edges_ = contour_loops_ = open_loops_ = depth_fail_objects_ = 0;
   culled_sub_objects_ = double(std::count(casting.begin(), casting.end(), 0));
+  std::vector<char> complete(parts_.size(), 1);
   for (const CasterVolume& v : casters) {
+    for (std::uint32_t k : v.incomplete) complete[k] = 0;
     polygons_.insert(polygons_.end(), v.polygons.begin(), v.polygons.end());
     eye_count_ += v.eye_count;
     contour_edges_ += double(v.contour_edges);
@@ -160,13 +166,13 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
     open_loops_ += double(v.open_loops);
     depth_fail_objects_ += v.depth_fail;
   }
-  cut_frusta(scene);
+  cut_frusta(scene, complete);
 }
 
-void VolumeMethod::cut_frusta(const Scene& scene) {
+void VolumeMethod::cut_frusta(const Scene& scene, const std::vector<char>& complete) {
   // The planes of a sub-object's shadow polygons and faces bound its volume where its
-  // vertices lie on one side: the receiver test then knows the volume of a convex
-  // sub-object exactly.
+  // vertices lie on one side: the receiver test then knows the volume of a closed convex
+  // sub-object exactly, if each of its contour edges has its polygon (\p complete).
   std::vector<std::size_t> runs;  // where each sub-object's polygons begin
   for (std::size_t i = 0; i < polygons_.size(); ++i) {
     if (i == 0 || polygons_[i].sub_object != polygons_[i - 1].sub_object) runs.push_back(i);
@@ -179,6 +185,7 @@ void VolumeMethod::cut_frusta(const Scene& scene) {
       frusta_[k].cut(corners, {polygons_[i].normal, polygons_[i].d});
     }
     for (std::uint32_t f : parts_.faces(k)) frusta_[k].cut(corners, scene.face_plane(f));
+    if (parts_.convex[k] && complete[k]) frusta_[k].make_exact();
   });
 }
 

@@ -28,7 +28,7 @@ class VolumeMethod final : public ShadowMethod {
   MethodCounters counters() const override;
 
  private:
-  void cut_frusta(const Scene& scene);
+  void cut_frusta(const Scene& scene, const std::vector<char>& complete);
 
   Counting counting_ = Counting::automatic;
   SubObjects parts_;
