@@ -42,6 +42,7 @@ class ConvexVolumes {
   const ConvexVolume* of(std::uint32_t k) const {
     return index_[k] < 0 ? nullptr : &volumes_[std::size_t(index_[k])];
   }
+  std::size_t size() const { return volumes_.size(); }
 
  private:
   std::vector<std::int32_t> index_;

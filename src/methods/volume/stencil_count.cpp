@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -324,7 +325,7 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   const TileCounter counter(polygons, keys, frame);
   const std::vector<char> cullable = receiver_cullable(frusta, polygons, cam.position);
   const ConvexVolumes volumes(polygons, frusta, cullable, frame.rays);
-  std::atomic<std::size_t> fill = 0, negative = 0, culled = 0;
+  std::atomic<std::size_t> fill = 0, negative = 0, culled = 0, shadowed = 0;
 
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
     thread_local CountingTile t;
@@ -363,9 +364,10 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
     }
     fill += tile_fill;
     culled += tile_culled;
+    shadowed += std::size_t(std::popcount(t.shadowed));
     negative += t.finish(frame, mask);
   });
-  return {fill.load(), negative.load(), culled.load()};
+  return {fill.load(), negative.load(), culled.load(), volumes.size(), shadowed.load()};
 }
 
 }  // namespace shadowkit

@@ -15,6 +15,8 @@ struct StencilStats {
   std::size_t fill = 0;             ///< pixels covered by shadow polygons, summed over polygons
   std::size_t negative = 0;         ///< covered pixels whose count came out below zero (an error)
   std::size_t receiver_culled = 0;  ///< (sub-object, tile) pairs skipped by the receiver test
+  std::size_t convex_volumes = 0;   ///< sub-objects whose volumes were counted whole
+  std::size_t shadowed_cells = 0;   ///< cells settled in shadow (CountingTile::shadowed)
 };
 
 /// Rasterizes \p polygons over the camera view with the shared scan converter and, per

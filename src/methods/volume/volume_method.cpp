@@ -196,6 +196,8 @@ void VolumeMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surface
   fill_ = double(stats.fill);
   negative_counts_ = double(stats.negative);
   receiver_culled_ = double(stats.receiver_culled);
+  convex_volumes_ = double(stats.convex_volumes);
+  shadowed_cells_ = double(stats.shadowed_cells);
 }
 
 std::size_t VolumeMethod::memory_bytes() const {
@@ -210,7 +212,8 @@ MethodCounters VolumeMethod::counters() const {
       {"open_contour_loops", open_loops_},         {"shadow_polygons", double(polygons_.size())},
       {"depth_fail_objects", depth_fail_objects_}, {"culled_sub_objects", culled_sub_objects_},
       {"receiver_culled", receiver_culled_},       {"fill", fill_},
-      {"negative_counts", negative_counts_}};
+      {"negative_counts", negative_counts_},       {"convex_volumes", convex_volumes_},
+      {"shadowed_cells", shadowed_cells_}};
 }
 
 }  // namespace shadowkit

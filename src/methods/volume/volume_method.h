@@ -38,7 +38,8 @@ class VolumeMethod final : public ShadowMethod {
   int eye_count_ = 0;  ///< per-face volumes holding the eye, over depth-pass objects
   double contour_edges_ = 0, contour_loops_ = 0, open_loops_ = 0;
   double depth_fail_objects_ = 0, culled_sub_objects_ = 0;
-  double fill_ = 0, negative_counts_ = 0, receiver_culled_ = 0;
+  double fill_ = 0, negative_counts_ = 0, receiver_culled_ = 0, convex_volumes_ = 0,
+         shadowed_cells_ = 0;
 };
 
 }  // namespace shadowkit
