@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace shadowkit {
 
@@ -54,6 +55,48 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
   }
   if (std::isfinite(next_phi)) next_x = std::min(next_x, run.phi_crossing(next_phi, query.column));
   return {false, next_x};
+}
+
+bool grazed(const LookupQuery& query, bool point_light) {
+  const FrameAffine& plane = query.face_plane;
+  // Point light: the distance from the light (the origin) to the plane over the distance to
+  // the point; directional: the light's direction is the frame's Z axis.
+  const double sine = point_light ? std::abs(plane.b) / length(query.local) : std::abs(plane.a.z);
+  return sine < kGrazingSine * length(plane.a);
+}
+
+LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
+                            const ScanLineRun& run, const LookupQuery& query, int k) {
+  const LookupResult own = lookup(table, run, query);
+  if (own.shadowed) return own;
+  const ThetaQuantization& q = table.theta();
+  const double centre = q.centre(k);
+  double past_centre = frame.angular_local(query.local).theta - centre;
+  if (frame.point_light()) past_centre = std::remainder(past_centre, 2 * std::numbers::pi);
+  const int other = past_centre < 0 ? k - 1 : k + 1;
+  LookupQuery across = query;
+  across.entry = q.entry(other);
+  const LookupResult beside = lookup(table, run, across);
+  if (!beside.shadowed) {
+    // Both lit: that holds while both answers do and the point stays on this side of the
+    // entry's centre.
+    return {false,
+            std::min(
+                {own.next_x, beside.next_x, run.crossing(frame.theta_plane(centre), query.column)}),
+            2};
+  }
+  const double next_x = query.column + 1;
+  for (const int near : {k, other}) {
+    for (const AngularPair& pair : table.entry(q.entry(near))) {
+      if (table.hidden(pair.hidden).face != query.face &&
+          table.blocks(pair.hidden, query.local, frame.point_light(), query.depth_tolerance) &&
+          table.reaches_front_of(pair.hidden, query.face_plane, query.face_light_side,
+                                 query.depth_tolerance)) {
+        return {true, next_x, 2};
+      }
+    }
+  }
+  return {false, next_x, 2};
 }
 
 }  // namespace shadowkit

@@ -297,6 +297,28 @@ std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow
   return {skipped ? &narrow[skipped - 1] : nullptr, narrow.subspan(skipped)};
 }
 
+bool AngularTable::blocks(std::uint32_t i, Vec3 p, bool point_light, double tolerance) const {
+  const HiddenFace& h = hidden_[i];
+  if (!h.behind(p, tolerance)) return false;
+  // Where the ray meets the face's plane, then the crossing number of that point in the
+  // face, both projected along the plane normal's largest axis.
+  const FrameAffine& plane = h.plane;
+  const Vec3 at =
+      point_light ? p * (-plane.b / dot(plane.a, p)) : p - Vec3{0, 0, plane.at(p) / plane.a.z};
+  const Vec3 n{std::abs(plane.a.x), std::abs(plane.a.y), std::abs(plane.a.z)};
+  const int u = n.x >= n.y && n.x >= n.z ? 1 : 0, v = n.z >= n.x && n.z >= n.y ? 1 : 2;
+  bool inside = false;
+  const std::uint32_t first = corner_start_[i], count = corner_start_[i + 1] - first;
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const Vec3 a = corners_[first + k], b = corners_[first + (k + 1) % count];
+    if ((a[v] > at[v]) != (b[v] > at[v]) &&
+        at[u] < a[u] + (b[u] - a[u]) * (at[v] - a[v]) / (b[v] - a[v])) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
 AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
                                  const std::vector<FarSheets>& sheets,
                                  const AngularTableOptions& options, AngularTableBuffers* buffers) {

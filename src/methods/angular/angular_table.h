@@ -117,6 +117,9 @@ class AngularTable {
     }
     return false;
   }
+  /// The ray from the light to \p p (towards the light from \p p, for a directional light)
+  /// passes through occluding face \p i before \p p, by more than \p tolerance.
+  bool blocks(std::uint32_t i, Vec3 p, bool point_light, double tolerance) const;
   std::size_t pair_count() const { return pairs_.size(); }
   /// The ridge edges and RE loops the table was built from.
   const RidgeEdgeStats& loop_stats() const { return loop_stats_; }
