@@ -39,7 +39,7 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
 /// error over the sine, many pixels, and a receiver in the light's own plane maps to a
 /// sliver of the table thinner than an entry, which no R resolves.
 bool grazed(const LookupQuery& query, bool point_light);
-inline constexpr double kGrazingSine = 0.1;
+inline constexpr double kGrazingSine = 0.07;
 
 /// The query on a grazed face: lookup's answer where it is shadow. Where it is lit, the
 /// entry whose centre lies on the other side of the point's theta (\p k: its unwrapped
