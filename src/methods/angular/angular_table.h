@@ -95,9 +95,11 @@ class AngularTable {
     if (k < 0) return {};
     return {pairs_.data() + start_[k], pairs_.data() + start_[k + 1]};
   }
-  /// The wide pairs of entry \p k (longer than a sixteenth of the entry's extent, such as a
-  /// ground plane's): scanned whole by every query.
-  std::span<const AngularPair> wide(int k) const { return entry(k).first(wide_[k]); }
+  /// The wide pairs of entry \p k (none for k = -1, outside the table), longer than a
+  /// sixteenth of the entry's extent (such as a ground plane's): scanned whole by every query.
+  std::span<const AngularPair> wide(int k) const {
+    return k < 0 ? std::span<const AngularPair>{} : entry(k).first(wide_[k]);
+  }
   /// The narrow pairs of entry \p k, sorted by phi_begin, from the first whose reach gets to
   /// \p phi: the ones before it all end before phi (a binary search instead of the paper's
   /// scan from the start of the entry); and the pair just before those, whose reach is the
