@@ -402,7 +402,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   std::vector<std::uint32_t> kept(table.theta_.resolution);
   tbb::enumerable_thread_specific<SortScratch> sort_scratch;
   tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
-    kept[k] = table.sort_entry(k, options.saturated ? &slices[k] : nullptr, sort_scratch.local());
+    kept[k] = table.sort_entry(k, options.saturated, frame.point_light(), sort_scratch.local());
   });
   storage.unsorted = table.compact(kept);
   return table;
@@ -434,7 +434,8 @@ void AngularTable::fill_entries(std::span<const std::vector<EntryPair>> lists) {
   });
 }
 
-std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch) {
+std::uint32_t AngularTable::sort_entry(int k, bool saturate, bool point_light,
+                                       SortScratch& scratch) {
   const std::span<AngularPair> entry(pairs_.data() + start_[k], pairs_.data() + start_[k + 1]);
   if (entry.empty()) return 0;
   // Step 1.7: sort by phi_begin. The pairs arrive nearly sorted (loops in order of phi), so
@@ -458,7 +459,7 @@ std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortSc
   // narrow ones move down in place past the dropped and the wide.
   const double wide = (extent_end - entry.front().phi_begin) / 16;
   std::optional<Saturation> saturation;
-  if (saturate) saturation.emplace(*this, k, saturate->point_light);
+  if (saturate) saturation.emplace(*this, k, point_light);
   std::vector<AngularPair>& wide_pairs = scratch.pairs;
   wide_pairs.clear();
   std::size_t narrow = 0;

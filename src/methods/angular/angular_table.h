@@ -58,7 +58,6 @@ struct AngularTableOptions {
   bool saturated = true;  ///< Sec. 10: drop pairs another pair of the entry already covers
 };
 
-struct ThetaSlice;
 
 /// \brief A pair and the entry it belongs to, while the table is built (24 bytes: no reach).
 struct EntryPair {
@@ -139,8 +138,8 @@ class AngularTable {
   struct SortScratch {
     std::vector<AngularPair> pairs;  // the entry's kept wide pairs in order
   };
-  // Sorts entry k and, given its slice, saturates it; returns the pairs kept at its front.
-  std::uint32_t sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch);
+  // Sorts entry k and, if asked, saturates it; returns the pairs kept at its front.
+  std::uint32_t sort_entry(int k, bool saturate, bool point_light, SortScratch& scratch);
   // Keeps the first kept[k] pairs of every entry k; returns the storage they were in.
   std::vector<AngularPair> compact(const std::vector<std::uint32_t>& kept);
 
