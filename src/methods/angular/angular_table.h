@@ -58,7 +58,6 @@ struct AngularTableOptions {
   bool saturated = true;  ///< Sec. 10: drop pairs another pair of the entry already covers
 };
 
-
 /// \brief A pair and the entry it belongs to, while the table is built (24 bytes: no reach).
 struct EntryPair {
   std::uint32_t entry = 0, hidden = 0;
