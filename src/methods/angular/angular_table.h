@@ -52,6 +52,8 @@ struct ThetaQuantization {
   double centre(int k) const { return theta_min + (k + 0.5) * step; }
 };
 
+struct DepthForm;  // an occluding face's depth along a slice's rays, while the table is built
+
 /// \brief What the table is built from and how.
 struct AngularTableOptions {
   int resolution = 0;     ///< R; 0: eq. 4
@@ -137,8 +139,10 @@ class AngularTable {
   struct SortScratch {
     std::vector<AngularPair> pairs;  // the entry's kept wide pairs in order
   };
-  // Sorts entry k and, if asked, saturates it; returns the pairs kept at its front.
-  std::uint32_t sort_entry(int k, bool saturate, bool point_light, SortScratch& scratch);
+  // Sorts entry k and, given the occluding faces' depth forms, saturates it; returns the
+  // pairs kept at its front.
+  std::uint32_t sort_entry(int k, std::span<const DepthForm> forms, bool point_light,
+                           SortScratch& scratch);
   // Keeps the first kept[k] pairs of every entry k; returns the storage they were in.
   std::vector<AngularPair> compact(const std::vector<std::uint32_t>& kept);
 
