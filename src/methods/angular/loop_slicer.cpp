@@ -25,6 +25,9 @@ struct EdgeSides {
     Crossing c;
     c.p = a + (b - a) * (ga / (ga - gb));
     c.rho = s.rho(c.p);
+    // On the light's X axis: the half-plane's edge, whose phi is +-inf by the sign of X
+    // (tan(phi) = X / rho with rho >= 0), never a rounded -0's opposite.
+    if (c.rho == 0) c.rho = +0.0;
     c.phi = s.phi(c.p, c.rho);
     c.edge = e;
     return c;

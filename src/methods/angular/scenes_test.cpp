@@ -179,7 +179,7 @@ TEST(AngularScenes, EverySweepExampleAgreesWithTheReference) {
         << entry.path().filename();
     ++checked;
   }
-  EXPECT_GE(checked, 8);
+  EXPECT_GE(checked, 9);
 }
 
 TEST(AngularScenes, EveryExampleAgreesWithTheReference) {
