@@ -449,7 +449,7 @@ std::uint32_t AngularTable::sort_entry(int k, std::span<const DepthForm> forms, 
   // Step 1.7: sort by phi_begin. The pairs arrive nearly sorted (loops in order of phi), so
   // an insertion sort.
   const auto before = [](const AngularPair& a, const AngularPair& b) {
-    return a.phi_begin != b.phi_begin ? a.phi_begin < b.phi_begin : a.hidden < b.hidden;
+    return a.phi_begin < b.phi_begin;  // stable: ties keep the lists' fixed order
   };
   double extent_end = entry.front().phi_end;
   for (auto it = entry.begin() + 1; it < entry.end(); ++it) {
