@@ -11,6 +11,7 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
   const double phi = query.phi;
   const bool up = query.phi_increasing;
   double next_x = std::numeric_limits<double>::infinity();
+  std::uint32_t by = 0;  // the pair's hidden face that shadows the point
   // The nearest pair boundary ahead along the run.
   double next_phi = up ? next_x : -next_x;
   const auto ahead = [&](double boundary) {
@@ -27,6 +28,7 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
                                query.depth_tolerance)) {
       const double end = run.phi_crossing(up ? pair.phi_end : pair.phi_begin, query.column);
       next_x = std::min(end, change);
+      by = pair.hidden;
       return true;
     }
     next_x = std::min(next_x, change);  // the run may pass behind this face in the pair
@@ -38,7 +40,7 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
       if (up == (pair.phi_begin > phi)) ahead(up ? pair.phi_begin : pair.phi_end);
       continue;
     }
-    if (shadows(pair)) return {true, next_x};
+    if (shadows(pair)) return {true, next_x, 1, by};
   }
   const auto [before, narrow] = table.narrow_from(query.entry, phi);
   if (!up && before) ahead(before->reach);  // the narrow pairs skipped all end before phi
@@ -51,7 +53,7 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
       if (!up) ahead(pair.phi_end);
       continue;
     }
-    if (shadows(pair)) return {true, next_x};
+    if (shadows(pair)) return {true, next_x, 1, by};
   }
   if (std::isfinite(next_phi)) next_x = std::min(next_x, run.phi_crossing(next_phi, query.column));
   return {false, next_x};
@@ -68,16 +70,20 @@ bool grazed(const LookupQuery& query, bool point_light) {
 LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
                             const ScanLineRun& run, const LookupQuery& query, int k) {
   const LookupResult own = lookup(table, run, query);
-  if (own.shadowed) return own;
+  const bool point_light = frame.point_light();
+  if (own.shadowed && table.blocks(own.hidden, query.local, point_light, query.depth_tolerance)) {
+    return own;
+  }
   const ThetaQuantization& q = table.theta();
   const double centre = q.centre(k);
   double past_centre = frame.angular_local(query.local).theta - centre;
-  if (frame.point_light()) past_centre = std::remainder(past_centre, 2 * std::numbers::pi);
+  if (point_light) past_centre = std::remainder(past_centre, 2 * std::numbers::pi);
   const int other = past_centre < 0 ? k - 1 : k + 1;
   LookupQuery across = query;
   across.entry = q.entry(other);
   const LookupResult beside = lookup(table, run, across);
-  if (!beside.shadowed) {
+  if (own.shadowed && beside.shadowed) return {true, own.next_x, 2, own.hidden};
+  if (!own.shadowed && !beside.shadowed) {
     // Both lit: that holds while both answers do and the point stays on this side of the
     // entry's centre.
     return {false,
@@ -89,10 +95,10 @@ LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
   for (const int near : {k, other}) {
     for (const AngularPair& pair : table.entry(q.entry(near))) {
       if (table.hidden(pair.hidden).face != query.face &&
-          table.blocks(pair.hidden, query.local, frame.point_light(), query.depth_tolerance) &&
+          table.blocks(pair.hidden, query.local, point_light, query.depth_tolerance) &&
           table.reaches_front_of(pair.hidden, query.face_plane, query.face_light_side,
                                  query.depth_tolerance)) {
-        return {true, next_x, 2};
+        return {true, next_x, 2, pair.hidden};
       }
     }
   }

@@ -11,7 +11,8 @@ namespace shadowkit {
 struct LookupResult {
   bool shadowed = false;
   double next_x = 0;
-  int lookups = 1;  ///< entries scanned for it
+  int lookups = 1;           ///< entries scanned for it
+  std::uint32_t hidden = 0;  ///< when shadowed by a pair: its hidden face
 };
 
 /// \brief What a lookup needs to know about the queried visible point.
@@ -41,12 +42,12 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
 bool grazed(const LookupQuery& query, bool point_light);
 inline constexpr double kGrazingSine = 0.07;
 
-/// The query on a grazed face: lookup's answer where it is shadow. Where it is lit, the
-/// entry whose centre lies on the other side of the point's theta (\p k: its unwrapped
-/// entry) answers too; where that one sees shadow, the point lies near a shadow's edge
-/// between the two slices, and the faces of both entries' pairs are tested exactly
-/// (AngularTable::blocks), for this pixel alone. A face that holds the point and spans its
-/// theta crosses one of the two slices unless it lies wholly between them.
+/// The query on a grazed face: lookup's answer where it is shadow by a face that blocks the
+/// point exactly (AngularTable::blocks). Otherwise the entry whose centre lies on the other
+/// side of the point's theta (\p k: its unwrapped entry) answers too; where the two differ,
+/// the point lies near a shadow's edge between the two slices, and the faces of both
+/// entries' pairs are tested exactly, for this pixel alone. A face that holds the point and
+/// spans its theta crosses one of the two slices unless it lies wholly between them.
 LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
                             const ScanLineRun& run, const LookupQuery& query, int k);
 

@@ -179,7 +179,7 @@ TEST(AngularScenes, EverySweepExampleAgreesWithTheReference) {
         << entry.path().filename();
     ++checked;
   }
-  EXPECT_GE(checked, 9);
+  EXPECT_GE(checked, 10);
 }
 
 TEST(AngularScenes, EveryExampleAgreesWithTheReference) {
