@@ -92,14 +92,18 @@ LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
             2};
   }
   const double next_x = query.column + 1;
-  for (const int near : {k, other}) {
-    for (const AngularPair& pair : table.entry(q.entry(near))) {
-      if (table.hidden(pair.hidden).face != query.face &&
-          table.blocks(pair.hidden, query.local, point_light, query.depth_tolerance) &&
-          table.reaches_front_of(pair.hidden, query.face_plane, query.face_light_side,
-                                 query.depth_tolerance)) {
-        return {true, next_x, 2, pair.hidden};
-      }
+  const auto blocks = [&](std::uint32_t i) {
+    return table.hidden(i).face != query.face &&
+           table.blocks(i, query.local, point_light, query.depth_tolerance) &&
+           table.reaches_front_of(i, query.face_plane, query.face_light_side,
+                                  query.depth_tolerance);
+  };
+  for (const int near : {q.entry(k), q.entry(other)}) {
+    for (const AngularPair& pair : table.entry(near)) {
+      if (blocks(pair.hidden)) return {true, next_x, 2, pair.hidden};
+    }
+    for (const std::uint32_t i : table.covered(near)) {
+      if (blocks(i)) return {true, next_x, 2, i};
     }
   }
   return {false, next_x, 2};

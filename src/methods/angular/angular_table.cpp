@@ -469,11 +469,16 @@ std::uint32_t AngularTable::sort_entry(int k, std::span<const DepthForm> forms, 
   std::optional<Saturation> saturation;
   if (!forms.empty()) saturation.emplace(theta_, forms, k, point_light);
   std::vector<AngularPair>& wide_pairs = scratch.pairs;
+  std::vector<std::uint32_t>& covered = scratch.covered;
   wide_pairs.clear();
+  covered.clear();
   std::size_t narrow = 0;
   double reach = -kInf;
   for (const AngularPair& pair : entry) {
-    if (saturation && saturation->covers(pair)) continue;
+    if (saturation && saturation->covers(pair)) {
+      covered.push_back(pair.hidden);
+      continue;
+    }
     if (saturation) saturation->keep(pair);
     if (pair.phi_end - pair.phi_begin > wide) {
       wide_pairs.push_back(pair);
@@ -486,15 +491,26 @@ std::uint32_t AngularTable::sort_entry(int k, std::span<const DepthForm> forms, 
                      entry.begin() + narrow + wide_pairs.size());
   std::copy(wide_pairs.begin(), wide_pairs.end(), entry.begin());
   wide_[k] = std::uint32_t(wide_pairs.size());
-  return std::uint32_t(narrow + wide_pairs.size());
+  // The covered pairs' faces go in the slots after the kept pairs, for compact.
+  const std::size_t kept = narrow + wide_pairs.size();
+  for (std::size_t i = 0; i < covered.size(); ++i) entry[kept + i].hidden = covered[i];
+  return std::uint32_t(kept);
 }
 
 std::vector<AngularPair> AngularTable::compact(const std::vector<std::uint32_t>& kept) {
   std::vector<std::uint32_t> start(kept.size() + 1, 0);
-  for (std::size_t k = 0; k < kept.size(); ++k) start[k + 1] = start[k] + kept[k];
+  covered_start_.assign(kept.size() + 1, 0);
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    start[k + 1] = start[k] + kept[k];
+    covered_start_[k + 1] = covered_start_[k] + (start_[k + 1] - start_[k] - kept[k]);
+  }
   std::vector<AngularPair> pairs(start.back());
+  covered_.resize(covered_start_.back());
   tbb::parallel_for(std::size_t(0), kept.size(), [&](std::size_t k) {
     std::copy_n(pairs_.begin() + start_[k], kept[k], pairs.begin() + start[k]);
+    for (std::uint32_t i = covered_start_[k]; i < covered_start_[k + 1]; ++i) {
+      covered_[i] = pairs_[start_[k] + kept[k] + (i - covered_start_[k])].hidden;
+    }
   });
   saturated_ = pairs_.size() - pairs.size();
   std::swap(pairs_, pairs);

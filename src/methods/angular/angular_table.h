@@ -127,17 +127,27 @@ class AngularTable {
   const RidgeEdgeStats& loop_stats() const { return loop_stats_; }
   /// Pairs dropped by saturation (Sec. 10).
   std::size_t saturated_count() const { return saturated_; }
+  /// The occluding faces of the pairs saturation dropped from entry \p k (none for k = -1).
+  /// A lookup needs none of them, but off the entry's centre such a face may block a point
+  /// that its covering pair's face does not: the exact test near a shadow's edge
+  /// (lookup_grazing) takes them as candidates too.
+  std::span<const std::uint32_t> covered(int k) const {
+    if (k < 0) return {};
+    return {covered_.data() + covered_start_[k], covered_.data() + covered_start_[k + 1]};
+  }
   std::size_t memory_bytes() const {
     return pairs_.capacity() * sizeof(AngularPair) +
            (start_.capacity() + wide_.capacity()) * sizeof(std::uint32_t) +
            hidden_.capacity() * sizeof(HiddenFace) +
-           corner_start_.capacity() * sizeof(std::uint32_t) + corners_.capacity() * sizeof(Vec3);
+           corner_start_.capacity() * sizeof(std::uint32_t) + corners_.capacity() * sizeof(Vec3) +
+           (covered_start_.capacity() + covered_.capacity()) * sizeof(std::uint32_t);
   }
 
  private:
   void fill_entries(std::span<const std::vector<EntryPair>> lists);
   struct SortScratch {
-    std::vector<AngularPair> pairs;  // the entry's kept wide pairs in order
+    std::vector<AngularPair> pairs;      // the entry's kept wide pairs in order
+    std::vector<std::uint32_t> covered;  // the hidden faces of the pairs saturation drops
   };
   // Sorts entry k and, given the occluding faces' depth forms, saturates it; returns the
   // pairs kept at its front.
@@ -151,8 +161,10 @@ class AngularTable {
   std::vector<std::uint32_t> wide_;   ///< per entry: its first wide_[k] pairs are wide
   std::vector<AngularPair> pairs_;
   std::vector<HiddenFace> hidden_;
-  std::vector<std::uint32_t> corner_start_;  ///< per hidden face, into corners_
-  std::vector<Vec3> corners_;                ///< hidden faces' corners, light frame
+  std::vector<std::uint32_t> corner_start_;   ///< per hidden face, into corners_
+  std::vector<Vec3> corners_;                 ///< hidden faces' corners, light frame
+  std::vector<std::uint32_t> covered_start_;  ///< R + 1 offsets into covered_
+  std::vector<std::uint32_t> covered_;        ///< per entry, saturated pairs' hidden faces
   std::size_t saturated_ = 0;
   RidgeEdgeStats loop_stats_;
 };

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -361,6 +362,7 @@ void expect_same_table(const AngularTable& a, const AngularTable& b) {
       EXPECT_EQ(x[i].reach, y[i].reach);
       EXPECT_EQ(x[i].hidden, y[i].hidden);
     }
+    EXPECT_TRUE(std::ranges::equal(a.covered(k), b.covered(k))) << "entry " << k;
   }
 }
 
@@ -386,6 +388,32 @@ TEST(AngularTable, TheTableDoesNotDependOnTheNumberOfThreads) {
       EXPECT_EQ(narrow[i].reach, std::max(narrow[i - 1].reach, narrow[i].phi_end));
     }
   }
+}
+
+// Saturation drops pairs from the table but keeps their faces: per entry, the kept pairs'
+// faces and the covered ones are the faces of the unsaturated entry's pairs.
+TEST(AngularTable, SaturationKeepsTheFacesOfThePairsItDrops) {
+  const Scene scene = load_scene("cubes:300", {});
+  const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center(), 0);
+  const auto sheets = occluding_sheets(scene, scene.lights[0]);
+  const AngularTable saturated = AngularTable::build(scene, frame, sheets, {0, true});
+  const AngularTable all = AngularTable::build(scene, frame, sheets, {0, false});
+  ASSERT_EQ(saturated.theta().resolution, all.theta().resolution);
+  EXPECT_GT(saturated.saturated_count(), 1000u);
+  EXPECT_TRUE(all.covered(0).empty());
+  std::size_t covered = 0;
+  for (int k = 0; k < all.theta().resolution; ++k) {
+    std::vector<std::uint32_t> expected, found;
+    for (const AngularPair& p : all.entry(k)) expected.push_back(p.hidden);
+    for (const AngularPair& p : saturated.entry(k)) found.push_back(p.hidden);
+    found.insert(found.end(), saturated.covered(k).begin(), saturated.covered(k).end());
+    covered += saturated.covered(k).size();
+    std::ranges::sort(expected);
+    std::ranges::sort(found);
+    EXPECT_EQ(found, expected) << "entry " << k;
+  }
+  EXPECT_EQ(covered, saturated.saturated_count());
+  EXPECT_TRUE(saturated.covered(-1).empty());
 }
 
 // Buffers left by a larger table (longer lists, more pairs) change nothing in the next one.
