@@ -11,7 +11,6 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
   const double phi = query.phi;
   const bool up = query.phi_increasing;
   double next_x = std::numeric_limits<double>::infinity();
-  std::uint32_t by = 0;  // the pair's hidden face that shadows the point
   // The nearest pair boundary ahead along the run.
   double next_phi = up ? next_x : -next_x;
   const auto ahead = [&](double boundary) {
@@ -28,7 +27,6 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
                                query.depth_tolerance)) {
       const double end = run.phi_crossing(up ? pair.phi_end : pair.phi_begin, query.column);
       next_x = std::min(end, change);
-      by = pair.hidden;
       return true;
     }
     next_x = std::min(next_x, change);  // the run may pass behind this face in the pair
@@ -40,7 +38,7 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
       if (up == (pair.phi_begin > phi)) ahead(up ? pair.phi_begin : pair.phi_end);
       continue;
     }
-    if (shadows(pair)) return {true, next_x, 1, by};
+    if (shadows(pair)) return {true, next_x, 1, pair.hidden};
   }
   const auto [before, narrow] = table.narrow_from(query.entry, phi);
   if (!up && before) ahead(before->reach);  // the narrow pairs skipped all end before phi
@@ -53,7 +51,7 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
       if (!up) ahead(pair.phi_end);
       continue;
     }
-    if (shadows(pair)) return {true, next_x, 1, by};
+    if (shadows(pair)) return {true, next_x, 1, pair.hidden};
   }
   if (std::isfinite(next_phi)) next_x = std::min(next_x, run.phi_crossing(next_phi, query.column));
   return {false, next_x};
