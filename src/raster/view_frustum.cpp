@@ -52,4 +52,15 @@ std::vector<Vec3> clip_polygon(std::span<const Vec3> polygon, const Plane& plane
   return out;
 }
 
+std::array<Plane, 6> box_planes(const Bounds3& box) {
+  std::array<Plane, 6> planes;
+  for (int a = 0; a < 3; ++a) {
+    Vec3 n{0, 0, 0};
+    n[a] = 1;
+    planes[2 * a] = {n, -box.lo[a]};
+    planes[2 * a + 1] = {-n, box.hi[a]};
+  }
+  return planes;
+}
+
 }  // namespace shadowkit

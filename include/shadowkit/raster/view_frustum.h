@@ -32,4 +32,7 @@ struct ViewFrustum {
 /// Sutherland-Hodgman: the part of the convex \p polygon where plane.distance >= 0.
 std::vector<Vec3> clip_polygon(std::span<const Vec3> polygon, const Plane& plane);
 
+/// The six planes of \p box, normals inward (for clip_polygon).
+std::array<Plane, 6> box_planes(const Bounds3& box);
+
 }  // namespace shadowkit

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace shadowkit {
 
@@ -37,7 +38,7 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
       if (up == (pair.phi_begin > phi)) ahead(up ? pair.phi_begin : pair.phi_end);
       continue;
     }
-    if (shadows(pair)) return {true, next_x};
+    if (shadows(pair)) return {true, next_x, 1, pair.hidden};
   }
   const auto [before, narrow] = table.narrow_from(query.entry, phi);
   if (!up && before) ahead(before->reach);  // the narrow pairs skipped all end before phi
@@ -50,10 +51,60 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
       if (!up) ahead(pair.phi_end);
       continue;
     }
-    if (shadows(pair)) return {true, next_x};
+    if (shadows(pair)) return {true, next_x, 1, pair.hidden};
   }
   if (std::isfinite(next_phi)) next_x = std::min(next_x, run.phi_crossing(next_phi, query.column));
   return {false, next_x};
+}
+
+bool grazed(const LookupQuery& query, bool point_light) {
+  const FrameAffine& plane = query.face_plane;
+  // Point light: the distance from the light (the origin) to the plane over the distance to
+  // the point; directional: the light's direction is the frame's Z axis.
+  const double sine = point_light ? std::abs(plane.b) / length(query.local) : std::abs(plane.a.z);
+  return sine < kGrazingSine * length(plane.a);
+}
+
+LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
+                            const ScanLineRun& run, const LookupQuery& query, int k) {
+  const LookupResult own = lookup(table, run, query);
+  const bool point_light = frame.point_light();
+  if (own.shadowed && table.blocks(own.hidden, query.local, point_light, query.depth_tolerance)) {
+    return own;
+  }
+  const ThetaQuantization& q = table.theta();
+  const double centre = q.centre(k);
+  double past_centre = frame.angular_local(query.local).theta - centre;
+  if (point_light) past_centre = std::remainder(past_centre, 2 * std::numbers::pi);
+  const int other = past_centre < 0 ? k - 1 : k + 1;
+  LookupQuery across = query;
+  across.entry = q.entry(other);
+  const LookupResult beside = lookup(table, run, across);
+  if (own.shadowed && beside.shadowed) return {true, own.next_x, 2, own.hidden};
+  if (!own.shadowed && !beside.shadowed) {
+    // Both lit: that holds while both answers do and the point stays on this side of the
+    // entry's centre.
+    return {false,
+            std::min(
+                {own.next_x, beside.next_x, run.crossing(frame.theta_plane(centre), query.column)}),
+            2};
+  }
+  const double next_x = query.column + 1;
+  const auto blocks = [&](std::uint32_t i) {
+    return table.hidden(i).face != query.face &&
+           table.blocks(i, query.local, point_light, query.depth_tolerance) &&
+           table.reaches_front_of(i, query.face_plane, query.face_light_side,
+                                  query.depth_tolerance);
+  };
+  for (const int near : {q.entry(k), q.entry(other)}) {
+    for (const AngularPair& pair : table.entry(near)) {
+      if (blocks(pair.hidden)) return {true, next_x, 2, pair.hidden};
+    }
+    for (const std::uint32_t i : table.covered(near)) {
+      if (blocks(i)) return {true, next_x, 2, i};
+    }
+  }
+  return {false, next_x, 2};
 }
 
 }  // namespace shadowkit

@@ -11,6 +11,8 @@ namespace shadowkit {
 struct LookupResult {
   bool shadowed = false;
   double next_x = 0;
+  int lookups = 1;           ///< entries scanned for it
+  std::uint32_t hidden = 0;  ///< when shadowed by a pair: its hidden face
 };
 
 /// \brief What a lookup needs to know about the queried visible point.
@@ -31,5 +33,22 @@ struct LookupQuery {
 /// the pair's end, the start of the next pair, or where the run crosses the plane of the
 /// hidden face of a pair holding phi.
 LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const LookupQuery& query);
+
+/// Whether the light grazes the queried point's face: the light's rays meet its plane there
+/// at a sine below kGrazingSine. An angular error of the table (a pair cut at its entry's
+/// centre theta answers for the whole entry) moves a shadow's edge on such a face by that
+/// error over the sine, many pixels, and a receiver in the light's own plane maps to a
+/// sliver of the table thinner than an entry, which no R resolves.
+bool grazed(const LookupQuery& query, bool point_light);
+inline constexpr double kGrazingSine = 0.07;
+
+/// The query on a grazed face: lookup's answer where it is shadow by a face that blocks the
+/// point exactly (AngularTable::blocks). Otherwise the entry whose centre lies on the other
+/// side of the point's theta (\p k: its unwrapped entry) answers too; where the two differ,
+/// the point lies near a shadow's edge between the two slices, and the faces of both
+/// entries' pairs are tested exactly, for this pixel alone. A face that holds the point and
+/// spans its theta crosses one of the two slices unless it lies wholly between them.
+LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
+                            const ScanLineRun& run, const LookupQuery& query, int k);
 
 }  // namespace shadowkit

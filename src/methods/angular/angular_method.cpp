@@ -82,8 +82,10 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
       query.column = x;
       query.phi_increasing = run.phi_increasing(x);
       query.depth_tolerance = depth_tolerance_;
-      const LookupResult result = lookup(table_, run, query);
-      ++lookups;
+      const LookupResult result = grazed(query, frame_->point_light())
+                                      ? lookup_grazing(table_, *frame_, run, query, k)
+                                      : lookup(table_, run, query);
+      lookups += std::size_t(result.lookups);
       // Steps 3-4: hold the answer until nextX or the end of the maximum run (eq. 7).
       const double end = std::min(result.next_x, max_run_end(run, boundaries_, k, x));
       const int stop = int(std::clamp(std::ceil(end), double(x + 1), double(face_end)));

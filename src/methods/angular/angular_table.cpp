@@ -21,6 +21,7 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // The RE loops are sliced in this many chunks, each a task with its own list of pairs:
 // enough for both cores to balance on small scenes too, few enough lists to merge.
 constexpr std::size_t kChunks = 16;
@@ -147,20 +148,25 @@ ThetaQuantization quantize(const Scene& scene, const std::vector<ObjectLoops>& o
   return q;
 }
 
+}  // namespace
+
 // A plane's depth along the rays of a slice as a linear form in (phi, u, v): for a point
 // light the inverse depth 1 / t = (a.x phi + a.y sin + a.z cos) / -b of the plane
 // a.p + b = 0 along the ray (phi, sin, cos) of the slice at theta (scaled to unit rho), with
 // (u, v) = (sin, cos); for a directional light the depth t = (a.x phi + a.y theta + b) / -a.z
 // along the ray through (phi, theta), with (u, v) = (theta, 1).
 struct DepthForm {
-  Vec3 c;
+  Vec3 c;  ///< NaN for a plane through the light or parallel to the rays: never compared
 
   static DepthForm of(const FrameAffine& plane, bool point_light) {
-    if (point_light) return {plane.a * (1 / -plane.b)};
-    return {Vec3{plane.a.x, plane.a.y, plane.b} * (1 / -plane.a.z)};
+    const Vec3 c = point_light ? plane.a * (1 / -plane.b)
+                               : Vec3{plane.a.x, plane.a.y, plane.b} * (1 / -plane.a.z);
+    const bool finite = std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z);
+    return {finite ? c : Vec3{kNaN, kNaN, kNaN}};
   }
-  double at(double phi, double u, double v) const { return c.x * phi + c.y * u + c.z * v; }
 };
+
+namespace {
 
 // Sec. 10 within one entry, its pairs offered in order of phi_begin: a pair adds nothing
 // when one of the last two kept pairs holds its phi range and lies nearer the light at both
@@ -172,9 +178,8 @@ struct DepthForm {
 // ground's, behind everything.
 class Saturation {
  public:
-  Saturation(const AngularTable& table, int k, bool point_light)
-      : table_(table), point_light_(point_light) {
-    const ThetaQuantization& q = table.theta();
+  Saturation(const ThetaQuantization& q, std::span<const DepthForm> forms, int k, bool point_light)
+      : forms_(forms), point_light_(point_light) {
     const double thetas[3] = {q.centre(k), q.lower(k), q.lower(k + 1)};  // most fail at once
     for (int i = 0; i < 3; ++i) {
       rays_[i] = point_light ? std::pair{std::sin(thetas[i]), std::cos(thetas[i])}
@@ -184,46 +189,41 @@ class Saturation {
 
   bool covers(const AngularPair& q) {
     if (!std::isfinite(q.phi_begin) || !std::isfinite(q.phi_end)) return false;
-    std::optional<DepthForm> own;  // q's, once needed
     for (std::size_t i = 0; i < std::min<std::size_t>(kept_, 2); ++i) {
       const Kept& p = recent_[i];
       if (p.begin > q.phi_begin || p.end < q.phi_end) continue;
-      if (!own) own = form(q.hidden);
-      if (nearer(p.depth, *own, q.phi_begin, q.phi_end)) return true;
+      if (nearer(*p.depth, forms_[q.hidden], q.phi_begin, q.phi_end)) return true;
     }
     return false;
   }
   void keep(const AngularPair& p) {
-    recent_[kept_++ % 2] = {p.phi_begin, p.phi_end, form(p.hidden)};
+    recent_[kept_++ % 2] = {p.phi_begin, p.phi_end, &forms_[p.hidden]};
   }
 
  private:
   struct Kept {
     double begin = 0, end = 0;
-    DepthForm depth;
+    const DepthForm* depth = nullptr;
   };
-
-  DepthForm form(std::uint32_t hidden) const {
-    return DepthForm::of(table_.hidden(hidden).plane, point_light_);
-  }
   // Plane p lies nearer the light than plane q, which the rays meet, along every ray at
-  // phi0 and phi1 of the entry's three thetas (NaN and infinity, a plane through the light
-  // or parallel to the rays, are never nearer).
+  // phi0 and phi1 of the entry's three thetas. For a point light w = 1 / t: p's w exceeds
+  // q's, which is positive; for a directional light w = t: q's exceeds p's, positive. Both
+  // differences are linear forms, so each is checked at the phi end where it is least.
   bool nearer(const DepthForm& p, const DepthForm& q, double phi0, double phi1) const {
     constexpr double kTolerance = 1 + 1e-9;
-    for (const auto& [u, v] : rays_) {
-      for (const double phi : {phi0, phi1}) {
-        const double wp = p.at(phi, u, v), wq = q.at(phi, u, v);
-        const bool ok = point_light_  // w is 1 / t
-                            ? wq > 0 && wq < kInf && wp < kInf && wp > wq * kTolerance
-                            : wq < kInf && wp > 0 && wq > wp * kTolerance;
-        if (!ok) return false;
-      }
-    }
-    return true;
+    const Vec3 larger = point_light_ ? p.c : q.c, positive = point_light_ ? q.c : p.c;
+    return positive_on_rays(larger - positive * kTolerance, phi0, phi1) &&
+           positive_on_rays(positive, phi0, phi1);
+  }
+  // A linear form in (phi, u, v) is positive on every ray at phi0 and phi1 (false for NaN).
+  bool positive_on_rays(const Vec3& form, double phi0, double phi1) const {
+    const double along = form.x * (form.x > 0 ? phi0 : phi1);
+    bool positive = true;
+    for (const auto& [u, v] : rays_) positive &= along + form.y * u + form.z * v > 0;
+    return positive;
   }
 
-  const AngularTable& table_;
+  std::span<const DepthForm> forms_;  // per occluding face
   bool point_light_;
   std::pair<double, double> rays_[3];
   std::size_t kept_ = 0;
@@ -297,6 +297,28 @@ std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow
   return {skipped ? &narrow[skipped - 1] : nullptr, narrow.subspan(skipped)};
 }
 
+bool AngularTable::blocks(std::uint32_t i, Vec3 p, bool point_light, double tolerance) const {
+  const HiddenFace& h = hidden_[i];
+  if (!h.behind(p, tolerance)) return false;
+  // Where the ray meets the face's plane, then the crossing number of that point in the
+  // face, both projected along the plane normal's largest axis.
+  const FrameAffine& plane = h.plane;
+  const Vec3 at =
+      point_light ? p * (-plane.b / dot(plane.a, p)) : p - Vec3{0, 0, plane.at(p) / plane.a.z};
+  const Vec3 n{std::abs(plane.a.x), std::abs(plane.a.y), std::abs(plane.a.z)};
+  const int u = n.x >= n.y && n.x >= n.z ? 1 : 0, v = n.z >= n.x && n.z >= n.y ? 1 : 2;
+  bool inside = false;
+  const std::uint32_t first = corner_start_[i], count = corner_start_[i + 1] - first;
+  for (std::uint32_t k = 0; k < count; ++k) {
+    const Vec3 a = corners_[first + k], b = corners_[first + (k + 1) % count];
+    if ((a[v] > at[v]) != (b[v] > at[v]) &&
+        at[u] < a[u] + (b[u] - a[u]) * (at[v] - a[v]) / (b[v] - a[v])) {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
 AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
                                  const std::vector<FarSheets>& sheets,
                                  const AngularTableOptions& options, AngularTableBuffers* buffers) {
@@ -340,14 +362,18 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     for (std::uint32_t l = 0; l < objects[o].loops.size(); ++l) work.emplace_back(o, l);
     for (const std::uint32_t f : objects[o].axis_faces) work.emplace_back(o, ~f);
   }
-  // Loops in order of phi, so that each entry's pairs arrive nearly sorted (step 1.7).
-  std::vector<double> phi(work.size(), 0);
-  for (std::size_t i = 0; i < work.size(); ++i) {
+  // Loops in order of their least phi, so that each entry's pairs arrive nearly sorted (step
+  // 1.7): a walk starts where an RE rises through the slice, on the loop's side of smaller
+  // phi (its far sheet lies towards larger phi).
+  std::vector<double> phi(work.size(), -kInf);
+  tbb::parallel_for(std::size_t(0), work.size(), [&](std::size_t i) {
     const auto [o, l] = work[i];
-    if (l >= objects[o].loops.size()) continue;
-    const RidgeEdge& re = objects[o].ridges[objects[o].loops[l].edges[0]];
-    phi[i] = frame.phi_local(objects[o].local[re.from]);
-  }
+    if (l >= objects[o].loops.size()) return;
+    phi[i] = kInf;
+    for (const std::uint32_t e : objects[o].loops[l].edges) {
+      phi[i] = std::min(phi[i], frame.phi_local(objects[o].local[objects[o].ridges[e].from]));
+    }
+  });
   std::vector<std::uint32_t> order(work.size());
   std::iota(order.begin(), order.end(), 0u);
   std::sort(order.begin(), order.end(),
@@ -378,9 +404,13 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   // Step 1.7: sort each entry by phi; Sec. 10: saturate.
   table.wide_.assign(table.theta_.resolution, 0);
   std::vector<std::uint32_t> kept(table.theta_.resolution);
+  std::vector<DepthForm> forms(options.saturated ? table.hidden_.size() : 0);
+  tbb::parallel_for(std::size_t(0), forms.size(), [&](std::size_t i) {
+    forms[i] = DepthForm::of(table.hidden_[i].plane, frame.point_light());
+  });
   tbb::enumerable_thread_specific<SortScratch> sort_scratch;
   tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
-    kept[k] = table.sort_entry(k, options.saturated ? &slices[k] : nullptr, sort_scratch.local());
+    kept[k] = table.sort_entry(k, forms, frame.point_light(), sort_scratch.local());
   });
   storage.unsorted = table.compact(kept);
   return table;
@@ -412,13 +442,14 @@ void AngularTable::fill_entries(std::span<const std::vector<EntryPair>> lists) {
   });
 }
 
-std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch) {
+std::uint32_t AngularTable::sort_entry(int k, std::span<const DepthForm> forms, bool point_light,
+                                       SortScratch& scratch) {
   const std::span<AngularPair> entry(pairs_.data() + start_[k], pairs_.data() + start_[k + 1]);
   if (entry.empty()) return 0;
   // Step 1.7: sort by phi_begin. The pairs arrive nearly sorted (loops in order of phi), so
   // an insertion sort.
   const auto before = [](const AngularPair& a, const AngularPair& b) {
-    return a.phi_begin != b.phi_begin ? a.phi_begin < b.phi_begin : a.hidden < b.hidden;
+    return a.phi_begin < b.phi_begin;  // stable: ties keep the lists' fixed order
   };
   double extent_end = entry.front().phi_end;
   for (auto it = entry.begin() + 1; it < entry.end(); ++it) {
@@ -436,13 +467,18 @@ std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortSc
   // narrow ones move down in place past the dropped and the wide.
   const double wide = (extent_end - entry.front().phi_begin) / 16;
   std::optional<Saturation> saturation;
-  if (saturate) saturation.emplace(*this, k, saturate->point_light);
+  if (!forms.empty()) saturation.emplace(theta_, forms, k, point_light);
   std::vector<AngularPair>& wide_pairs = scratch.pairs;
+  std::vector<std::uint32_t>& covered = scratch.covered;
   wide_pairs.clear();
+  covered.clear();
   std::size_t narrow = 0;
   double reach = -kInf;
   for (const AngularPair& pair : entry) {
-    if (saturation && saturation->covers(pair)) continue;
+    if (saturation && saturation->covers(pair)) {
+      covered.push_back(pair.hidden);
+      continue;
+    }
     if (saturation) saturation->keep(pair);
     if (pair.phi_end - pair.phi_begin > wide) {
       wide_pairs.push_back(pair);
@@ -455,15 +491,26 @@ std::uint32_t AngularTable::sort_entry(int k, const ThetaSlice* saturate, SortSc
                      entry.begin() + narrow + wide_pairs.size());
   std::copy(wide_pairs.begin(), wide_pairs.end(), entry.begin());
   wide_[k] = std::uint32_t(wide_pairs.size());
-  return std::uint32_t(narrow + wide_pairs.size());
+  // The covered pairs' faces go in the slots after the kept pairs, for compact.
+  const std::size_t kept = narrow + wide_pairs.size();
+  for (std::size_t i = 0; i < covered.size(); ++i) entry[kept + i].hidden = covered[i];
+  return std::uint32_t(kept);
 }
 
 std::vector<AngularPair> AngularTable::compact(const std::vector<std::uint32_t>& kept) {
   std::vector<std::uint32_t> start(kept.size() + 1, 0);
-  for (std::size_t k = 0; k < kept.size(); ++k) start[k + 1] = start[k] + kept[k];
+  covered_start_.assign(kept.size() + 1, 0);
+  for (std::size_t k = 0; k < kept.size(); ++k) {
+    start[k + 1] = start[k] + kept[k];
+    covered_start_[k + 1] = covered_start_[k] + (start_[k + 1] - start_[k] - kept[k]);
+  }
   std::vector<AngularPair> pairs(start.back());
+  covered_.resize(covered_start_.back());
   tbb::parallel_for(std::size_t(0), kept.size(), [&](std::size_t k) {
     std::copy_n(pairs_.begin() + start_[k], kept[k], pairs.begin() + start[k]);
+    for (std::uint32_t i = covered_start_[k]; i < covered_start_[k + 1]; ++i) {
+      covered_[i] = pairs_[start_[k] + kept[k] + (i - covered_start_[k])].hidden;
+    }
   });
   saturated_ = pairs_.size() - pairs.size();
   std::swap(pairs_, pairs);

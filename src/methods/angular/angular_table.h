@@ -52,13 +52,13 @@ struct ThetaQuantization {
   double centre(int k) const { return theta_min + (k + 0.5) * step; }
 };
 
+struct DepthForm;  // an occluding face's depth along a slice's rays, while the table is built
+
 /// \brief What the table is built from and how.
 struct AngularTableOptions {
   int resolution = 0;     ///< R; 0: eq. 4
   bool saturated = true;  ///< Sec. 10: drop pairs another pair of the entry already covers
 };
-
-struct ThetaSlice;
 
 /// \brief A pair and the entry it belongs to, while the table is built (24 bytes: no reach).
 struct EntryPair {
@@ -95,9 +95,11 @@ class AngularTable {
     if (k < 0) return {};
     return {pairs_.data() + start_[k], pairs_.data() + start_[k + 1]};
   }
-  /// The wide pairs of entry \p k (longer than a sixteenth of the entry's extent, such as a
-  /// ground plane's): scanned whole by every query.
-  std::span<const AngularPair> wide(int k) const { return entry(k).first(wide_[k]); }
+  /// The wide pairs of entry \p k (none for k = -1, outside the table), longer than a
+  /// sixteenth of the entry's extent (such as a ground plane's): scanned whole by every query.
+  std::span<const AngularPair> wide(int k) const {
+    return k < 0 ? std::span<const AngularPair>{} : entry(k).first(wide_[k]);
+  }
   /// The narrow pairs of entry \p k, sorted by phi_begin, from the first whose reach gets to
   /// \p phi: the ones before it all end before phi (a binary search instead of the paper's
   /// scan from the start of the entry); and the pair just before those, whose reach is the
@@ -117,25 +119,40 @@ class AngularTable {
     }
     return false;
   }
+  /// The ray from the light to \p p (towards the light from \p p, for a directional light)
+  /// passes through occluding face \p i before \p p, by more than \p tolerance.
+  bool blocks(std::uint32_t i, Vec3 p, bool point_light, double tolerance) const;
   std::size_t pair_count() const { return pairs_.size(); }
   /// The ridge edges and RE loops the table was built from.
   const RidgeEdgeStats& loop_stats() const { return loop_stats_; }
   /// Pairs dropped by saturation (Sec. 10).
   std::size_t saturated_count() const { return saturated_; }
+  /// The occluding faces of the pairs saturation dropped from entry \p k (none for k = -1).
+  /// A lookup needs none of them, but off the entry's centre such a face may block a point
+  /// that its covering pair's face does not: the exact test near a shadow's edge
+  /// (lookup_grazing) takes them as candidates too.
+  std::span<const std::uint32_t> covered(int k) const {
+    if (k < 0) return {};
+    return {covered_.data() + covered_start_[k], covered_.data() + covered_start_[k + 1]};
+  }
   std::size_t memory_bytes() const {
     return pairs_.capacity() * sizeof(AngularPair) +
            (start_.capacity() + wide_.capacity()) * sizeof(std::uint32_t) +
            hidden_.capacity() * sizeof(HiddenFace) +
-           corner_start_.capacity() * sizeof(std::uint32_t) + corners_.capacity() * sizeof(Vec3);
+           corner_start_.capacity() * sizeof(std::uint32_t) + corners_.capacity() * sizeof(Vec3) +
+           (covered_start_.capacity() + covered_.capacity()) * sizeof(std::uint32_t);
   }
 
  private:
   void fill_entries(std::span<const std::vector<EntryPair>> lists);
   struct SortScratch {
-    std::vector<AngularPair> pairs;  // the entry's kept wide pairs in order
+    std::vector<AngularPair> pairs;      // the entry's kept wide pairs in order
+    std::vector<std::uint32_t> covered;  // the hidden faces of the pairs saturation drops
   };
-  // Sorts entry k and, given its slice, saturates it; returns the pairs kept at its front.
-  std::uint32_t sort_entry(int k, const ThetaSlice* saturate, SortScratch& scratch);
+  // Sorts entry k and, given the occluding faces' depth forms, saturates it; returns the
+  // pairs kept at its front.
+  std::uint32_t sort_entry(int k, std::span<const DepthForm> forms, bool point_light,
+                           SortScratch& scratch);
   // Keeps the first kept[k] pairs of every entry k; returns the storage they were in.
   std::vector<AngularPair> compact(const std::vector<std::uint32_t>& kept);
 
@@ -144,8 +161,10 @@ class AngularTable {
   std::vector<std::uint32_t> wide_;   ///< per entry: its first wide_[k] pairs are wide
   std::vector<AngularPair> pairs_;
   std::vector<HiddenFace> hidden_;
-  std::vector<std::uint32_t> corner_start_;  ///< per hidden face, into corners_
-  std::vector<Vec3> corners_;                ///< hidden faces' corners, light frame
+  std::vector<std::uint32_t> corner_start_;   ///< per hidden face, into corners_
+  std::vector<Vec3> corners_;                 ///< hidden faces' corners, light frame
+  std::vector<std::uint32_t> covered_start_;  ///< R + 1 offsets into covered_
+  std::vector<std::uint32_t> covered_;        ///< per entry, saturated pairs' hidden faces
   std::size_t saturated_ = 0;
   RidgeEdgeStats loop_stats_;
 };

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -301,6 +302,51 @@ TEST(AngularTable, AHoleLetsTheLightThroughAndDepthIsExactInsideSpans) {
   EXPECT_GT(testing::counter(angular, "re_loops"), 1);  // outer and hole loops
 }
 
+// The hidden-face index of global face \p face: the first pair cut from it.
+std::uint32_t hidden_of(const AngularTable& table, std::uint32_t face) {
+  for (int k = 0; k < table.theta().resolution; ++k) {
+    for (const AngularPair& p : table.entry(k)) {
+      if (table.hidden(p.hidden).face == face) return p.hidden;
+    }
+  }
+  ADD_FAILURE() << "no pair of face " << face;
+  return 0;
+}
+
+// The exact test of a grazed query (angular_lookup.h): an L-shaped face, one non-convex
+// hexagon at height 1, blocks the ground under its arms, not under its notch, and nothing
+// above it; for a point light (rays spreading from above one arm) and a directional one.
+TEST(AngularTable, AFaceBlocksExactlyThePointsBehindItsOwnOutline) {
+  PolygonSoup l_shape;
+  l_shape.positions = {{0, 1, 0}, {2, 1, 0}, {2, 1, 1}, {1, 1, 1}, {1, 1, 2}, {0, 1, 2}};
+  l_shape.add_face({0, 1, 2, 3, 4, 5});
+  struct Case {
+    Light light;
+    Vec3 under_arm, under_notch;
+  };
+  const Case cases[] = {
+      {Light::point({0.5, 5, 0.5}),
+       {1.5, 0, 0.5},
+       {1.5, 0, 1.5}},  // meet y = 1 at (1.3, 0.5), (1.3, 1.3)
+      {Light::directional(normalize(Vec3{0.1, -1, 0.1})), {1.6, 0, 0.6}, {1.6, 0, 1.6}}};
+  for (const Case& c : cases) {
+    const Scene scene =
+        testing::make_scene(testing::camera({1, 6, 6}, {1, 0, 1}, 160, 120), {c.light},
+                            {testing::horizontal_quad(-8, 8, -8, 8, 0), l_shape});
+    const LightFrame frame(c.light, scene.camera, scene.bounds().center(), 0);
+    const AngularTable table =
+        AngularTable::build(scene, frame, occluding_sheets(scene, c.light), {});
+    const std::uint32_t l_face = hidden_of(table, 1);
+    const bool point = c.light.type == Light::Type::point;
+    const double tolerance = 1e-9;
+    EXPECT_TRUE(table.blocks(l_face, frame.local(c.under_arm), point, tolerance));
+    EXPECT_FALSE(table.blocks(l_face, frame.local(c.under_notch), point, tolerance));
+    EXPECT_FALSE(
+        table.blocks(l_face, frame.local(c.under_arm + Vec3{0, 1.5, 0}), point, tolerance));
+    EXPECT_FALSE(table.blocks(l_face, frame.local({3, 0, 0.5}), point, tolerance));  // beside
+  }
+}
+
 // \p b has the same entries as \p a, pair for pair and bit for bit.
 void expect_same_table(const AngularTable& a, const AngularTable& b) {
   EXPECT_EQ(b.pair_count(), a.pair_count());
@@ -316,6 +362,7 @@ void expect_same_table(const AngularTable& a, const AngularTable& b) {
       EXPECT_EQ(x[i].reach, y[i].reach);
       EXPECT_EQ(x[i].hidden, y[i].hidden);
     }
+    EXPECT_TRUE(std::ranges::equal(a.covered(k), b.covered(k))) << "entry " << k;
   }
 }
 
@@ -341,6 +388,32 @@ TEST(AngularTable, TheTableDoesNotDependOnTheNumberOfThreads) {
       EXPECT_EQ(narrow[i].reach, std::max(narrow[i - 1].reach, narrow[i].phi_end));
     }
   }
+}
+
+// Saturation drops pairs from the table but keeps their faces: per entry, the kept pairs'
+// faces and the covered ones are the faces of the unsaturated entry's pairs.
+TEST(AngularTable, SaturationKeepsTheFacesOfThePairsItDrops) {
+  const Scene scene = load_scene("cubes:300", {});
+  const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center(), 0);
+  const auto sheets = occluding_sheets(scene, scene.lights[0]);
+  const AngularTable saturated = AngularTable::build(scene, frame, sheets, {0, true});
+  const AngularTable all = AngularTable::build(scene, frame, sheets, {0, false});
+  ASSERT_EQ(saturated.theta().resolution, all.theta().resolution);
+  EXPECT_GT(saturated.saturated_count(), 1000u);
+  EXPECT_TRUE(all.covered(0).empty());
+  std::size_t covered = 0;
+  for (int k = 0; k < all.theta().resolution; ++k) {
+    std::vector<std::uint32_t> expected, found;
+    for (const AngularPair& p : all.entry(k)) expected.push_back(p.hidden);
+    for (const AngularPair& p : saturated.entry(k)) found.push_back(p.hidden);
+    found.insert(found.end(), saturated.covered(k).begin(), saturated.covered(k).end());
+    covered += saturated.covered(k).size();
+    std::ranges::sort(expected);
+    std::ranges::sort(found);
+    EXPECT_EQ(found, expected) << "entry " << k;
+  }
+  EXPECT_EQ(covered, saturated.saturated_count());
+  EXPECT_TRUE(saturated.covered(-1).empty());
 }
 
 // Buffers left by a larger table (longer lists, more pairs) change nothing in the next one.

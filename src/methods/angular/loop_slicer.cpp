@@ -25,6 +25,9 @@ struct EdgeSides {
     Crossing c;
     c.p = a + (b - a) * (ga / (ga - gb));
     c.rho = s.rho(c.p);
+    // On the light's X axis: the half-plane's edge, whose phi is +-inf by the sign of X
+    // (tan(phi) = X / rho with rho >= 0), never a rounded -0's opposite.
+    if (c.rho == 0) c.rho = +0.0;
     c.phi = s.phi(c.p, c.rho);
     c.edge = e;
     return c;
@@ -151,6 +154,33 @@ void walk(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, Crossing at
   }
 }
 
+// Slices ridge edge \p re over the entries whose centre its unwrapped theta interval
+// [lo, hi] may hold.
+void slice_ridge_edge(const SlicedMesh& m, const RidgeEdge& re, double lo, double hi,
+                      const ThetaQuantization& q, std::span<const ThetaSlice> slices,
+                      SliceScratch& scratch, std::vector<EntryPair>& out) {
+  scratch.path.clear();
+  // One more entry at each end against rounding (the side test decides), within the table
+  // unless it goes all around.
+  const double first = std::floor((lo - q.theta_min) / q.step - 0.5);
+  const double last = std::ceil((hi - q.theta_min) / q.step - 0.5);
+  const double end = q.full_turn ? first + q.resolution : q.resolution - 1;
+  const int k0 = int(std::max(first, q.full_turn ? first : 0.0));
+  const int k1 = int(std::min(last, end));
+  const MeshEdge& edge = m.mesh.edges[re.edge];
+  for (int k = k0; k <= k1; ++k) {
+    const int entry = q.entry(k);
+    if (entry < 0) continue;
+    const ThetaSlice& s = slices[entry];
+    const EdgeSides sides(m, s, edge);
+    const bool from_below = (re.from == edge.v0 ? sides.ga : sides.gb) < 0;
+    if (!(from_below && sides.crossed())) continue;  // up
+    const Crossing at = sides.crossing(s, re.edge);
+    if (at.rho <= 0) continue;  // in the half-plane at theta + pi: another entry's
+    walk(m, s, re.face, at, scratch, out);
+  }
+}
+
 }  // namespace
 
 ThetaSlice theta_slice(const ThetaQuantization& q, bool point_light, int k) {
@@ -178,30 +208,15 @@ void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Ri
     // going down begins nothing; near-constant theta is left to the side test.
     if ((hi - lo) * (wraps ? -1 : 1) < -1e-9) continue;
     if (lo > hi) std::swap(lo, hi);
-    if (wraps) {
-      std::swap(lo, hi);
-      hi += 2 * std::numbers::pi;
+    if (!wraps) {
+      slice_ridge_edge(m, re, lo, hi, q, slices, scratch, out);
+      continue;
     }
-    scratch.path.clear();
-    // Entries whose centre the edge may cross, one more at each end against rounding (the
-    // side test decides), within the table unless it goes all around.
-    const double first = std::floor((lo - q.theta_min) / q.step - 0.5);
-    const double last = std::ceil((hi - q.theta_min) / q.step - 0.5);
-    const double end = q.full_turn ? first + q.resolution : q.resolution - 1;
-    const int k0 = int(std::max(first, q.full_turn ? first : 0.0));
-    const int k1 = int(std::min(last, end));
-    for (int k = k0; k <= k1; ++k) {
-      const int entry = q.entry(k);
-      if (entry < 0) continue;
-      const ThetaSlice& s = slices[entry];
-      const MeshEdge& edge = m.mesh.edges[re.edge];
-      const EdgeSides sides(m, s, edge);
-      const bool from_below = (re.from == edge.v0 ? sides.ga : sides.gb) < 0;
-      if (!(from_below && sides.crossed())) continue;  // up
-      const Crossing at = sides.crossing(s, re.edge);
-      if (at.rho <= 0) continue;  // in the half-plane at theta + pi: another entry's
-      walk(m, s, re.face, at, scratch, out);
-    }
+    // Unwrapped, it runs from hi up past pi to lo + 2 pi. A table cut to the view lies
+    // within [-pi, pi]: the part past pi is its start, a turn lower.
+    slice_ridge_edge(m, re, hi, lo + 2 * std::numbers::pi, q, slices, scratch, out);
+    if (!q.full_turn)
+      slice_ridge_edge(m, re, hi - 2 * std::numbers::pi, lo, q, slices, scratch, out);
   }
 }
 

@@ -33,18 +33,6 @@ std::array<std::vector<Vec3>, 6> box_faces(const Bounds3& box) {
   return faces;
 }
 
-// The box's six planes, normals inward.
-std::array<Plane, 6> box_planes(const Bounds3& box) {
-  std::array<Plane, 6> planes;
-  for (int a = 0; a < 3; ++a) {
-    Vec3 n{0, 0, 0};
-    n[a] = 1;
-    planes[2 * a] = {n, -box.lo[a]};
-    planes[2 * a + 1] = {-n, box.hi[a]};
-  }
-  return planes;
-}
-
 }  // namespace
 
 ViewTheta view_theta(const Scene& scene, const LightFrame& frame) {

@@ -24,17 +24,6 @@ Bounds3 clipped_bounds(const Scene& scene, std::span<const Plane> planes) {
   return box;
 }
 
-std::vector<Plane> box_planes(const Bounds3& box) {
-  std::vector<Plane> planes;
-  for (int a = 0; a < 3; ++a) {
-    Vec3 n;
-    n[a] = 1;
-    planes.push_back({n, -box.lo[a]});
-    planes.push_back({-n, box.hi[a]});
-  }
-  return planes;
-}
-
 // The box that holds every segment from a point of \p seen toward \p light, within the scene.
 Bounds3 reach_toward(const Bounds3& seen, const Light& light, const Bounds3& scene_box) {
   Bounds3 reach = seen;
