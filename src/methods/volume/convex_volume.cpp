@@ -2,12 +2,60 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
+#include <limits>
 
 namespace shadowkit {
+namespace {
+
+struct Point2 {
+  double x, y;
+};
+
+// The convex hull of \p p, counter-clockwise (Andrew's monotone chain); \p p is reordered.
+std::vector<Point2> convex_hull(std::vector<Point2>& p) {
+  std::sort(p.begin(), p.end(),
+            [](Point2 a, Point2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  const auto turn = [](Point2 o, Point2 a, Point2 b) {
+    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+  };
+  if (p.size() < 3) return p;
+  std::vector<Point2> hull(2 * p.size());
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    while (n >= 2 && turn(hull[n - 2], hull[n - 1], p[i]) <= 0) --n;
+    hull[n++] = p[i];
+  }
+  for (std::size_t i = p.size() - 1, lower = n + 1; i-- > 0;) {
+    while (n >= lower && turn(hull[n - 2], hull[n - 1], p[i]) <= 0) --n;
+    hull[n++] = p[i];
+  }
+  hull.resize(n - 1);
+  return hull;
+}
+
+}  // namespace
+
+bool outline_columns(std::span<const OutlineEdge> outline, int ya, int yb, int& xa, int& xb) {
+  // Rows widened by a pixel: the corners were snapped, the centres' coverage is the raster's.
+  const double lo_y = ya - 1.0, hi_y = yb + 1.0;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const OutlineEdge& e : outline) {
+    if (e.y1 < lo_y || e.y0 > hi_y) continue;
+    const double xs = e.y0 < lo_y ? e.x0 + e.slope * (lo_y - e.y0) : e.x0;
+    const double xe = e.y1 > hi_y ? e.x0 + e.slope * (hi_y - e.y0) : e.x1;
+    lo = std::min({lo, xs, xe}), hi = std::max({hi, xs, xe});
+  }
+  if (!(lo <= hi)) return false;
+  xa = std::max(xa, int(std::floor(lo)) - 1);
+  xb = std::min(xb, int(std::ceil(hi)) + 1);
+  return xa <= xb;
+}
 
 ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons,
                              const std::vector<ShadowFrustum>& frusta,
-                             const std::vector<char>& cullable, const RayGrid& rays)
+                             const std::vector<char>& cullable, const RayGrid& rays,
+                             std::span<const raster::ScreenPolygon> screen)
     : index_(frusta.size(), -1) {
   std::vector<char> depth_pass(frusta.size(), 1);
   for (const ShadowPolygon& p : polygons) depth_pass[p.sub_object] &= !p.depth_fail;
@@ -27,6 +75,28 @@ ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons,
     }
     index_[k] = std::int32_t(volumes_.size());
     volumes_.push_back(v);
+  }
+  // Each volume's outline: the hull of its polygons' corners on screen.
+  std::vector<std::vector<Point2>> corners(volumes_.size());
+  for (const raster::ScreenPolygon& s : screen) {
+    const std::int32_t v = index_[polygons[s.face].sub_object];
+    if (v < 0) continue;
+    for (int i = 0; i < s.count; ++i) {
+      const raster::FixedPoint q = s.corners[std::size_t(i)].p;
+      constexpr double kSub = double(raster::kSubpixel);
+      corners[std::size_t(v)].push_back(
+          {(double(q.x) - kSub / 2) / kSub, (double(q.y) - kSub / 2) / kSub});
+    }
+  }
+  outline_start_.push_back(0);
+  for (std::vector<Point2>& c : corners) {
+    const std::vector<Point2> hull = convex_hull(c);
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+      Point2 a = hull[i], b = hull[(i + 1) % hull.size()];
+      if (a.y > b.y) std::swap(a, b);
+      outline_.push_back({a.x, a.y, b.x, b.y, b.y > a.y ? (b.x - a.x) / (b.y - a.y) : 0});
+    }
+    outline_start_.push_back(outline_.size());
   }
 }
 

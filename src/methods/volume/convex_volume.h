@@ -4,8 +4,10 @@
 // 0 outside, so a test against its planes takes the place of scan-converting its polygons.
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
+#include "../../raster/convex_polygon.h"
 #include "counting_tile.h"
 #include "shadow_polygon.h"
 #include "volume_culling.h"
@@ -30,6 +32,16 @@ struct ConvexVolume {
                          CountingTile& t) const;
 };
 
+/// \brief One edge of a volume's outline on screen, in pixel units (column x's centre at x),
+/// from its upper end (y0) down to its lower end (y1).
+struct OutlineEdge {
+  double x0, y0, x1, y1, slope;  ///< slope: dx / dy (0 for a horizontal edge)
+};
+
+/// Narrows columns [xa, xb] to those whose pixel centres, widened by a pixel, the convex
+/// \p outline can hold on rows [ya, yb]; false when none.
+bool outline_columns(std::span<const OutlineEdge> outline, int ya, int yb, int& xa, int& xb);
+
 /// \brief The ConvexVolume of every sub-object whose volume is counted whole: its frustum is
 /// exact (ShadowFrustum::make_exact), its polygons are depth-pass, and its volume misses the
 /// eye (\p cullable), so the eye's count holds nothing of it.
@@ -37,16 +49,26 @@ class ConvexVolumes {
  public:
   ConvexVolumes(const std::vector<ShadowPolygon>& polygons,
                 const std::vector<ShadowFrustum>& frusta, const std::vector<char>& cullable,
-                const RayGrid& rays);
+                const RayGrid& rays, std::span<const raster::ScreenPolygon> screen);
   /// Sub-object \p k's volume, or null where its polygons are counted one by one.
   const ConvexVolume* of(std::uint32_t k) const {
     return index_[k] < 0 ? nullptr : &volumes_[std::size_t(index_[k])];
   }
   std::size_t size() const { return volumes_.size(); }
+  /// The convex hull on screen of sub-object \p k's shadow polygons (their scan-converted
+  /// corners): a visible point in its volume, in a pixel that does not show the sub-object,
+  /// lies behind a crossing with one of its polygons, so its pixel centre lies within the
+  /// hull up to the corners' snapping.
+  std::span<const OutlineEdge> outline(std::uint32_t k) const {
+    const std::size_t v = std::size_t(index_[k]);
+    return {outline_.data() + outline_start_[v], outline_start_[v + 1] - outline_start_[v]};
+  }
 
  private:
   std::vector<std::int32_t> index_;
   std::vector<ConvexVolume> volumes_;
+  std::vector<std::size_t> outline_start_;
+  std::vector<OutlineEdge> outline_;
 };
 
 }  // namespace shadowkit

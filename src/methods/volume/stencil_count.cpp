@@ -201,8 +201,9 @@ class TileCounter {
 
   // Counts a convex volume whole over the tile, in the cells its polygons \p group reach
   // within their bounds; returns the pixels tested one by one.
-  std::size_t count_volume(const ConvexVolume& volume, std::span<const ScreenPolygon* const> group,
-                           ReceiverTest& receivers, CountingTile& t) const {
+  std::size_t count_volume(const ConvexVolume& volume, std::span<const OutlineEdge> outline,
+                           std::span<const ScreenPolygon* const> group, ReceiverTest& receivers,
+                           CountingTile& t) const {
     int xa = t.x0 + t.w, xb = t.x0 - 1, ya = t.y0 + t.h, yb = t.y0 - 1;
     for (const ScreenPolygon* s : group) {
       xa = std::min(xa, s->min_x), xb = std::max(xb, s->max_x);
@@ -213,10 +214,15 @@ class TileCounter {
     if (xa > xb || ya > yb) return 0;
     std::size_t tested = 0;
     for (int band = (ya - t.y0) / kBand; band <= (yb - t.y0) / kBand; ++band) {
+      // The columns of the band within the volume's outline.
+      const int band_ya = std::max(ya, t.y0 + band * kBand),
+                band_yb = std::min(yb, t.y0 + band * kBand + kBand - 1);
+      int band_xa = xa, band_xb = xb;
+      if (!outline_columns(outline, band_ya, band_yb, band_xa, band_xb)) continue;
       if (!receivers.reaches_band(band)) continue;
-      for (int c = (xa - t.x0) / kBlock; c <= (xb - t.x0) / kBlock; ++c) {
+      for (int c = (band_xa - t.x0) / kBlock; c <= (band_xb - t.x0) / kBlock; ++c) {
         if (receivers.reaches(band, c))
-          tested += volume.count_cell(frame_, band, c, xa, xb, ya, yb, t);
+          tested += volume.count_cell(frame_, band, c, band_xa, band_xb, band_ya, band_yb, t);
       }
     }
     return tested;
@@ -324,7 +330,7 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   const PolygonBins bins(screen, view.width, view.height);
   const TileCounter counter(polygons, keys, frame);
   const std::vector<char> cullable = receiver_cullable(frusta, polygons, cam.position);
-  const ConvexVolumes volumes(polygons, frusta, cullable, frame.rays);
+  const ConvexVolumes volumes(polygons, frusta, cullable, frame.rays, screen);
   std::atomic<std::size_t> fill = 0, negative = 0, culled = 0, shadowed = 0;
 
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
@@ -357,7 +363,7 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
       // of its faces a pixel just past an edge, the point on the face's plane may lie in its
       // own volume, which its polygons, with their edge faces, place as the exact test does.
       if (const ConvexVolume* volume = volumes.of(k); volume && !t.shows(k)) {
-        tile_fill += counter.count_volume(*volume, group, receivers, t);
+        tile_fill += counter.count_volume(*volume, volumes.outline(k), group, receivers, t);
       } else {
         for (const ScreenPolygon* s : group) tile_fill += counter.count_polygon(*s, receivers, t);
       }
