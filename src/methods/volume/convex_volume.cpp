@@ -100,10 +100,74 @@ ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons,
   }
 }
 
+std::size_t ConvexVolume::count_run(const VisibleFrame& frame, int row, int c, unsigned pending,
+                                    std::uint32_t mixed, CountingTile& t) const {
+  // The cell's run of the row at once, two pixels a vector: per plane, the pixels certainly
+  // on the volume's side of it (the key beyond its slack) and those certainly outside.
+  static_assert(kBlock == 2 * kLaneVectors);
+  const int py = t.y0 + row, x0 = t.x0 + c * kBlock, first = row * t.w - t.x0 + x0;
+  const int width = std::min(kBlock, t.x0 + t.w - x0);
+  Lanes visible[kLaneVectors];
+  for (int j = 0; j < kBlock; ++j) {
+    visible[j / 2][j % 2] = j < width ? t.key[first + j] : std::numeric_limits<double>::quiet_NaN();
+  }
+  LaneMask inside[kLaneVectors], outside[kLaneVectors] = {};
+  for (LaneMask& m : inside) m = ~LaneMask{};
+  for (std::uint32_t m = mixed; m; m &= m - 1) {
+    const int k = std::countr_zero(m);
+    const KeyPlane& key = keys[k];
+    const double at = key.at(x0, py);
+    Lanes lane_key = Lanes{at, at + key.a};
+    const Lanes step = Lanes{2 * key.a, 2 * key.a};
+    const bool beyond = inside_beyond >> k & 1;
+    for (int v = 0; v < kLaneVectors; ++v, lane_key += step) {
+      const LaneMask over = lane_key - key.slack > visible[v];
+      const LaneMask under = lane_key + key.slack < visible[v];
+      inside[v] &= beyond ? over : under;
+      outside[v] |= beyond ? under : over;
+    }
+  }
+  const auto bits = [](const LaneMask* m) {
+    unsigned out = 0;
+    for (int v = 0; v < kLaneVectors; ++v) {
+      out |= unsigned(m[v][0] & 1) << (2 * v) | unsigned(m[v][1] & 1) << (2 * v + 1);
+    }
+    return out;
+  };
+  LaneMask shown[kLaneVectors];
+  for (int v = 0; v < kLaneVectors; ++v) shown[v] = visible[v] == visible[v];  // not background
+  const unsigned tested = bits(shown) & pending;
+  unsigned in = bits(inside) & tested;
+  // Pixels near a plane: the exact test.
+  for (unsigned near = tested & ~in & ~bits(outside); near; near &= near - 1) {
+    const int j = std::countr_zero(near);
+    bool in_volume = true;
+    for (std::uint32_t m = mixed; m && in_volume; m &= m - 1) {
+      const int k = std::countr_zero(m);
+      in_volume = beyond_plane(planes[k], keys[k], frame, x0 + j, py, t.key[first + j]) ==
+                  bool(inside_beyond >> k & 1);
+    }
+    in |= unsigned(in_volume) << j;
+  }
+  for (int j = 0; j < width; ++j) t.count[first + j] += int(in >> j & 1);
+  t.settled[row] |= std::uint64_t(in) << (x0 - t.x0);
+  return std::size_t(std::popcount(tested));
+}
+
 std::size_t ConvexVolume::count_cell(const VisibleFrame& frame, int band, int c, int xa, int xb,
                                      int ya, int yb, CountingTile& t) const {
   const int cx0 = t.x0 + c * kBlock, cx1 = std::min(t.x0 + t.w, cx0 + kBlock) - 1;
   const int cy0 = t.y0 + band * kBand, cy1 = std::min(t.y0 + t.h, cy0 + kBand) - 1;
+  const std::uint64_t cell_bit = std::uint64_t(1) << (band * kCellColumns + c);
+  // Pixels settled before: skipped; all of the cell's: the cell is.
+  const auto settled_cell = [&] {
+    for (int row = cy0 - t.y0; row <= cy1 - t.y0; ++row) {
+      if ((t.settled[row] >> (cx0 - t.x0) & 0xFF) != 0xFF) return false;
+    }
+    t.shadowed |= cell_bit;
+    return true;
+  };
+  if (settled_cell()) return 0;
   // Each plane against the cell's visible keys: all beyond it, none, or mixed (left to the
   // pixels).
   std::uint32_t mixed = 0;
@@ -116,13 +180,16 @@ std::size_t ConvexVolume::count_cell(const VisibleFrame& frame, int band, int c,
     }
   }
   if (!mixed) {  // every visible point of the cell in the volume: shadowed, whatever else
-    t.shadowed |= std::uint64_t(1) << (band * kCellColumns + c);
+    t.shadowed |= cell_bit;
     return 0;
   }
   std::size_t tested = 0;
   const int a = std::max(xa, cx0), b = std::min(xb, cx1);
   for (int py = std::max(ya, cy0); py <= std::min(yb, cy1); ++py) {
     const int row = py - t.y0;
+    const unsigned pending =
+        (((2u << (b - a)) - 1) << (a - cx0)) & ~unsigned(t.settled[row] >> (cx0 - t.x0) & 0xFF);
+    if (!pending) continue;
     // The run of the row the same way, then its pixels against the planes still mixed.
     std::uint32_t run_mixed = 0;
     bool outside = false;
@@ -141,21 +208,12 @@ std::size_t ConvexVolume::count_cell(const VisibleFrame& frame, int band, int c,
     if (!run_mixed) {
       int* delta = t.delta + row * (kTile + 1) - t.x0;
       ++delta[a], --delta[b + 1];
+      t.settled[row] |= std::uint64_t(pending) << (cx0 - t.x0);
       continue;
     }
-    for (int px = a; px <= b; ++px) {
-      const int i = row * t.w + px - t.x0;
-      if (t.face[i] == kNoFace) continue;
-      ++tested;
-      bool inside = true;
-      for (std::uint32_t m = run_mixed; m && inside; m &= m - 1) {
-        const int k = std::countr_zero(m);
-        inside = beyond_plane(planes[k], keys[k], frame, px, py, t.key[i]) ==
-                 bool(inside_beyond >> k & 1);
-      }
-      t.count[i] += inside;
-    }
+    tested += count_run(frame, row, c, pending, run_mixed, t);
   }
+  settled_cell();
   return tested;
 }
 

@@ -30,6 +30,17 @@ struct ConvexVolume {
   /// tested one by one.
   std::size_t count_cell(const VisibleFrame& frame, int band, int c, int xa, int xb, int ya, int yb,
                          CountingTile& t) const;
+
+ private:
+  /// Two pixels' depth keys, and their comparisons (all bits set: true).
+  using Lanes = double __attribute__((vector_size(16)));
+  using LaneMask = std::int64_t __attribute__((vector_size(16)));
+  static constexpr int kLaneVectors = 4;
+  /// Adds 1 to the count of every pixel of tile row \p row in cell column \p c, among the
+  /// \p pending ones (bit j: the cell's column j), whose visible point lies in the volume,
+  /// testing the planes \p mixed there, and settles them (CountingTile::settled).
+  std::size_t count_run(const VisibleFrame& frame, int row, int c, unsigned pending,
+                        std::uint32_t mixed, CountingTile& t) const;
 };
 
 /// \brief One edge of a volume's outline on screen, in pixel units (column x's centre at x),

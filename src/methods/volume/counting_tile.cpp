@@ -53,6 +53,8 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
     std::copy_n(frame.surfaces.face.begin() + std::ptrdiff_t(frame.surfaces.index(x0, y0 + r)), w,
                 face + r * w);
     std::fill_n(count + r * w, w, frame.eye_count);
+    std::uint64_t& settled_row = settled[r];
+    settled_row = w < kTile ? ~std::uint64_t(0) << w : 0;
     for (int cell = 0; cell * kBlock < w; ++cell) {
       KeyRange& keys = run_keys[r][cell];
       keys = {};
@@ -63,6 +65,9 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
         // A run of one face: its key is linear along the run, so the ends bound it.
         const std::uint32_t f = face[r * w + c];
         for (next = c + 1; next < end && face[r * w + next] == f;) ++next;
+        if (f == kNoFace || !frame.lit_side[f]) {
+          settled_row |= ((std::uint64_t(2) << (next - 1 - c)) - 1) << c;
+        }
         if (f == kNoFace) {
           std::fill(key + r * w + c, key + r * w + next, kNaN);
           continue;
