@@ -32,7 +32,10 @@ class ShadowFrustum {
   /// once the planes of all its faces and of the shadow polygons of all its contour edges
   /// were cut in (a light-facing face and a contour edge bound it; cut refuses a face turned
   /// away). It stays a bound only if some cut found no room or no plane.
-  void make_exact() { exact_ = !everywhere_ && !lost_; }
+  void make_exact() {
+    exact_ = !everywhere_ && !lost_;
+    if (exact_) plane_count_ = cuts_;
+  }
   /// The planes of an exact region as cut, inward normals, not moved out: the volume is
   /// the points on their positive side. Empty when the region is only a bound.
   std::span<const Plane> volume_planes() const {
