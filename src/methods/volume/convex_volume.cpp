@@ -8,19 +8,18 @@
 namespace shadowkit {
 namespace {
 
-struct Point2 {
-  double x, y;
-};
+using raster::FixedPoint;
 
-// The convex hull of \p p, counter-clockwise (Andrew's monotone chain); \p p is reordered.
-std::vector<Point2> convex_hull(std::vector<Point2>& p) {
+// The convex hull of \p p (Andrew's monotone chain), positively oriented as ScreenPolygon's
+// corners, without repeated or collinear corners; \p p is reordered. Exact: fixed point.
+std::size_t convex_hull(std::span<FixedPoint> p, std::vector<FixedPoint>& hull) {
   std::sort(p.begin(), p.end(),
-            [](Point2 a, Point2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  const auto turn = [](Point2 o, Point2 a, Point2 b) {
+            [](FixedPoint a, FixedPoint b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  const auto turn = [](FixedPoint o, FixedPoint a, FixedPoint b) {
     return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
   };
-  if (p.size() < 3) return p;
-  std::vector<Point2> hull(2 * p.size());
+  if (p.empty()) return 0;
+  hull.resize(2 * p.size() + 1);
   std::size_t n = 0;
   for (std::size_t i = 0; i < p.size(); ++i) {
     while (n >= 2 && turn(hull[n - 2], hull[n - 1], p[i]) <= 0) --n;
@@ -30,8 +29,7 @@ std::vector<Point2> convex_hull(std::vector<Point2>& p) {
     while (n >= lower && turn(hull[n - 2], hull[n - 1], p[i]) <= 0) --n;
     hull[n++] = p[i];
   }
-  hull.resize(n - 1);
-  return hull;
+  return n > 1 ? n - 1 : n;  // the last corner repeats the first
 }
 
 }  // namespace
@@ -76,25 +74,49 @@ ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons,
     index_[k] = std::int32_t(volumes_.size());
     volumes_.push_back(v);
   }
-  // Each volume's outline: the hull of its polygons' corners on screen.
-  std::vector<std::vector<Point2>> corners(volumes_.size());
-  for (const raster::ScreenPolygon& s : screen) {
-    const std::int32_t v = index_[polygons[s.face].sub_object];
+  // Each volume's outline: the hull of its polygons' corners on screen. Screen polygons
+  // follow polygon order, so each volume's lie together.
+  polygons_of_.assign(volumes_.size(), {0, 0});
+  std::vector<std::uint32_t> corner_start(volumes_.size() + 1, 0);
+  for (std::size_t i = 0; i < screen.size(); ++i) {
+    const std::int32_t v = index_[polygons[screen[i].face].sub_object];
     if (v < 0) continue;
-    for (int i = 0; i < s.count; ++i) {
-      const raster::FixedPoint q = s.corners[std::size_t(i)].p;
-      constexpr double kSub = double(raster::kSubpixel);
-      corners[std::size_t(v)].push_back(
-          {(double(q.x) - kSub / 2) / kSub, (double(q.y) - kSub / 2) / kSub});
-    }
+    auto& [first, last] = polygons_of_[std::size_t(v)];
+    if (first == last) first = std::uint32_t(i);
+    last = std::uint32_t(i + 1);
+    corner_start[std::size_t(v) + 1] += std::uint32_t(screen[i].count);
   }
-  outline_start_.push_back(0);
-  for (std::vector<Point2>& c : corners) {
-    const std::vector<Point2> hull = convex_hull(c);
-    for (std::size_t i = 0; i < hull.size(); ++i) {
-      Point2 a = hull[i], b = hull[(i + 1) % hull.size()];
-      if (a.y > b.y) std::swap(a, b);
-      outline_.push_back({a.x, a.y, b.x, b.y, b.y > a.y ? (b.x - a.x) / (b.y - a.y) : 0});
+  for (std::size_t v = 0; v < volumes_.size(); ++v) corner_start[v + 1] += corner_start[v];
+  std::vector<FixedPoint> corners(corner_start.back()), hull;
+  outline_start_.assign(1, 0);
+  hulls_.resize(volumes_.size());
+  for (std::size_t v = 0; v < volumes_.size(); ++v) {
+    const auto [first, last] = polygons_of_[v];
+    raster::ScreenPolygon& out = hulls_[v];
+    out.face = first < last ? screen[first].face : 0;
+    out.min_x = out.min_y = std::numeric_limits<int>::max();
+    out.max_x = out.max_y = std::numeric_limits<int>::min();
+    std::size_t n = corner_start[v];
+    for (std::uint32_t i = first; i < last; ++i) {
+      const raster::ScreenPolygon& s = screen[i];
+      for (int c = 0; c < s.count; ++c) corners[n++] = s.corners[std::size_t(c)].p;
+      out.min_x = std::min(out.min_x, s.min_x), out.max_x = std::max(out.max_x, s.max_x);
+      out.min_y = std::min(out.min_y, s.min_y), out.max_y = std::max(out.max_y, s.max_y);
+    }
+    const std::size_t count =
+        convex_hull({corners.data() + corner_start[v], n - corner_start[v]}, hull);
+    // Binned whole when its corners fit (the bias does not matter to the bins).
+    out.count = count >= 3 && count <= std::size_t(raster::kMaxPolygonCorners) ? int(count) : 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (out.count > 0) out.corners[i] = {hull[i], 0};
+      constexpr double kSub = double(raster::kSubpixel);
+      const auto pixels = [](FixedPoint q) {
+        return std::pair{(double(q.x) - kSub / 2) / kSub, (double(q.y) - kSub / 2) / kSub};
+      };
+      auto [ax, ay] = pixels(hull[i]);
+      auto [bx, by] = pixels(hull[(i + 1) % count]);
+      if (ay > by) std::swap(ax, bx), std::swap(ay, by);
+      outline_.push_back({ax, ay, bx, by, by > ay ? (bx - ax) / (by - ay) : 0});
     }
     outline_start_.push_back(outline_.size());
   }

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "../../raster/convex_polygon.h"
@@ -74,12 +75,24 @@ class ConvexVolumes {
     const std::size_t v = std::size_t(index_[k]);
     return {outline_.data() + outline_start_[v], outline_start_[v + 1] - outline_start_[v]};
   }
+  /// The same hull as one ScreenPolygon, to bin the volume by (its face: the index of one of
+  /// the sub-object's polygons; no fill-rule bias), or none (count 0) where it has more
+  /// corners than a ScreenPolygon holds.
+  const raster::ScreenPolygon& hull(std::uint32_t k) const {
+    return hulls_[std::size_t(index_[k])];
+  }
+  /// Sub-object \p k's screen polygons: [first, last) in the list the volumes were made from.
+  std::pair<std::uint32_t, std::uint32_t> screen_polygons(std::uint32_t k) const {
+    return polygons_of_[std::size_t(index_[k])];
+  }
 
  private:
   std::vector<std::int32_t> index_;
   std::vector<ConvexVolume> volumes_;
   std::vector<std::size_t> outline_start_;
   std::vector<OutlineEdge> outline_;
+  std::vector<raster::ScreenPolygon> hulls_;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> polygons_of_;
 };
 
 }  // namespace shadowkit

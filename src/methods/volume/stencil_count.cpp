@@ -160,6 +160,7 @@ class TileCounter {
     const KeyPlane& key = keys_[s.face];
     int ya = std::max(t.y0, s.min_y), yb = std::min(t.y0 + t.h - 1, s.max_y);
     const int xa = std::max(t.x0, s.min_x), xb = std::min(t.x0 + t.w - 1, s.max_x);
+    if (xa > xb || ya > yb) return 0;
     // Hi-Z over the whole tile first: a polygon wholly behind (depth-pass) or in front of
     // (depth-fail) every visible point adds nothing.
     const Crossing whole = classify_rectangle(key, xa, xb, ya, yb, t.all_keys);
@@ -327,10 +328,22 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   const std::vector<ScreenPolygon> screen = setup_shadow_polygons(polygons, view);
   const VisibleFrame frame(scene, light, parts, surfaces, eye_count);
   const std::vector<KeyPlane> keys = polygon_keys(polygons, frame.rays);
-  const PolygonBins bins(screen, view.width, view.height);
   const TileCounter counter(polygons, keys, frame);
   const std::vector<char> cullable = receiver_cullable(frusta, polygons, cam.position);
   const ConvexVolumes volumes(polygons, frusta, cullable, frame.rays, screen);
+  // Convex volumes are binned by their outlines, one item each, the other polygons one by
+  // one; items of one sub-object stay together.
+  std::vector<ScreenPolygon> items;
+  items.reserve(screen.size());
+  for (const ScreenPolygon& s : screen) {
+    const std::uint32_t k = polygons[s.face].sub_object;
+    if (!volumes.of(k) || volumes.hull(k).count == 0) items.push_back(s);
+  }
+  for (std::size_t k = 0; k < frusta.size(); ++k) {
+    if (volumes.of(std::uint32_t(k)) && volumes.hull(std::uint32_t(k)).count > 0)
+      items.push_back(volumes.hull(std::uint32_t(k)));
+  }
+  const PolygonBins bins(items, view.width, view.height);
   std::atomic<std::size_t> fill = 0, negative = 0, culled = 0, shadowed = 0;
 
   tbb::parallel_for(0, bins.tile_count(), [&](int tile) {
@@ -347,10 +360,10 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
     for (std::uint32_t b = bins.start[tile], end; b < bins.start[tile + 1]; b = end) {
       // Polygons come grouped by sub-object: Crow's receiver test once per sub-object and
       // tile, then per cell.
-      const std::uint32_t k = polygons[screen[bins.items[b]].face].sub_object;
+      const std::uint32_t k = polygons[items[bins.items[b]].face].sub_object;
       group.clear();
       for (end = b; end < bins.start[tile + 1]; ++end) {
-        const ScreenPolygon& s = screen[bins.items[end]];
+        const ScreenPolygon& s = items[bins.items[end]];
         if (polygons[s.face].sub_object != k) break;
         group.push_back(&s);
       }
@@ -362,11 +375,17 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
       // A tile showing the sub-object itself counts its polygons: where the raster gives one
       // of its faces a pixel just past an edge, the point on the face's plane may lie in its
       // own volume, which its polygons, with their edge faces, place as the exact test does.
-      if (const ConvexVolume* volume = volumes.of(k); volume && !t.shows(k)) {
+      const ConvexVolume* volume = volumes.of(k);
+      if (volume && !t.shows(k)) {
         tile_fill += counter.count_volume(*volume, volumes.outline(k), group, receivers, t);
-      } else {
-        for (const ScreenPolygon* s : group) tile_fill += counter.count_polygon(*s, receivers, t);
+        continue;
       }
+      if (volume && volumes.hull(k).count > 0) {  // binned by its outline: all its polygons
+        group.clear();
+        const auto [first, last] = volumes.screen_polygons(k);
+        for (std::uint32_t i = first; i < last; ++i) group.push_back(&screen[i]);
+      }
+      for (const ScreenPolygon* s : group) tile_fill += counter.count_polygon(*s, receivers, t);
     }
     fill += tile_fill;
     culled += tile_culled;
