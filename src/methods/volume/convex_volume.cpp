@@ -3,7 +3,12 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace shadowkit {
 namespace {
@@ -122,6 +127,22 @@ ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons,
   }
 }
 
+unsigned ConvexVolume::lane_bits(const LaneMask* m) {
+#if defined(__SSE2__)
+  unsigned out = 0;
+  for (int v = 0; v < kLaneVectors; ++v) {
+    out |= unsigned(_mm_movemask_pd(_mm_castsi128_pd(__m128i(m[v])))) << (2 * v);
+  }
+  return out;
+#else
+  unsigned out = 0;
+  for (int v = 0; v < kLaneVectors; ++v) {
+    out |= unsigned(m[v][0] & 1) << (2 * v) | unsigned(m[v][1] & 1) << (2 * v + 1);
+  }
+  return out;
+#endif
+}
+
 std::size_t ConvexVolume::count_run(const VisibleFrame& frame, int row, int c, unsigned pending,
                                     std::uint32_t mixed, CountingTile& t) const {
   // The cell's run of the row at once, two pixels a vector: per plane, the pixels certainly
@@ -129,39 +150,39 @@ std::size_t ConvexVolume::count_run(const VisibleFrame& frame, int row, int c, u
   static_assert(kBlock == 2 * kLaneVectors);
   const int py = t.y0 + row, x0 = t.x0 + c * kBlock, first = row * t.w - t.x0 + x0;
   const int width = std::min(kBlock, t.x0 + t.w - x0);
-  Lanes visible[kLaneVectors];
-  for (int j = 0; j < kBlock; ++j) {
-    visible[j / 2][j % 2] = j < width ? t.key[first + j] : std::numeric_limits<double>::quiet_NaN();
+  // The visible keys, and their negatives for the planes the volume lies in front of: there
+  // the volume's side is where the negated key exceeds the negated visible one.
+  Lanes visible[2][kLaneVectors];
+  if (width == kBlock) {
+    std::memcpy(visible[1], t.key + first, sizeof visible[1]);
+  } else {
+    for (int j = 0; j < kBlock; ++j) {
+      visible[1][j / 2][j % 2] =
+          j < width ? t.key[first + j] : std::numeric_limits<double>::quiet_NaN();
+    }
   }
+  for (int v = 0; v < kLaneVectors; ++v) visible[0][v] = -visible[1][v];
   LaneMask inside[kLaneVectors], outside[kLaneVectors] = {};
   for (LaneMask& m : inside) m = ~LaneMask{};
   for (std::uint32_t m = mixed; m; m &= m - 1) {
     const int k = std::countr_zero(m);
     const KeyPlane& key = keys[k];
-    const double at = key.at(x0, py);
-    Lanes lane_key = Lanes{at, at + key.a};
-    const Lanes step = Lanes{2 * key.a, 2 * key.a};
     const bool beyond = inside_beyond >> k & 1;
+    const double sign = beyond ? 1 : -1, at = sign * key.at(x0, py), a = sign * key.a;
+    Lanes lane_key = Lanes{at, at + a};
+    const Lanes step = Lanes{2 * a, 2 * a};
+    const Lanes* seen = visible[beyond];
     for (int v = 0; v < kLaneVectors; ++v, lane_key += step) {
-      const LaneMask over = lane_key - key.slack > visible[v];
-      const LaneMask under = lane_key + key.slack < visible[v];
-      inside[v] &= beyond ? over : under;
-      outside[v] |= beyond ? under : over;
+      inside[v] &= lane_key - key.slack > seen[v];
+      outside[v] |= lane_key + key.slack < seen[v];
     }
   }
-  const auto bits = [](const LaneMask* m) {
-    unsigned out = 0;
-    for (int v = 0; v < kLaneVectors; ++v) {
-      out |= unsigned(m[v][0] & 1) << (2 * v) | unsigned(m[v][1] & 1) << (2 * v + 1);
-    }
-    return out;
-  };
   LaneMask shown[kLaneVectors];
-  for (int v = 0; v < kLaneVectors; ++v) shown[v] = visible[v] == visible[v];  // not background
-  const unsigned tested = bits(shown) & pending;
-  unsigned in = bits(inside) & tested;
+  for (int v = 0; v < kLaneVectors; ++v) shown[v] = visible[1][v] == visible[1][v];
+  const unsigned tested = lane_bits(shown) & pending;  // not background
+  unsigned in = lane_bits(inside) & tested;
   // Pixels near a plane: the exact test.
-  for (unsigned near = tested & ~in & ~bits(outside); near; near &= near - 1) {
+  for (unsigned near = tested & ~in & ~lane_bits(outside); near; near &= near - 1) {
     const int j = std::countr_zero(near);
     bool in_volume = true;
     for (std::uint32_t m = mixed; m && in_volume; m &= m - 1) {
@@ -171,7 +192,7 @@ std::size_t ConvexVolume::count_run(const VisibleFrame& frame, int row, int c, u
     }
     in |= unsigned(in_volume) << j;
   }
-  for (int j = 0; j < width; ++j) t.count[first + j] += int(in >> j & 1);
+  for (unsigned m = in; m; m &= m - 1) ++t.count[first + std::countr_zero(m)];
   t.settled[row] |= std::uint64_t(in) << (x0 - t.x0);
   return std::size_t(std::popcount(tested));
 }

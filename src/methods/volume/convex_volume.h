@@ -37,6 +37,8 @@ struct ConvexVolume {
   using Lanes = double __attribute__((vector_size(16)));
   using LaneMask = std::int64_t __attribute__((vector_size(16)));
   static constexpr int kLaneVectors = 4;
+  /// Bit j: lane j of \p m (kLaneVectors vectors) is true.
+  static unsigned lane_bits(const LaneMask* m);
   /// Adds 1 to the count of every pixel of tile row \p row in cell column \p c, among the
   /// \p pending ones (bit j: the cell's column j), whose visible point lies in the volume,
   /// testing the planes \p mixed there, and settles them (CountingTile::settled).
