@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace shadowkit {
 namespace {
 
@@ -96,6 +100,7 @@ ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Rea
       }
     }
   }
+  sync_lanes();
 }
 
 void ShadowFrustum::cut(std::span<const Vec3> corners, const Plane& plane) {
@@ -125,6 +130,15 @@ void ShadowFrustum::cut(std::span<const Vec3> corners, const Plane& plane) {
   // Cuts go first: they are the tighter. Without room, the box plane in the way goes.
   if (plane_count_ < kMaxPlanes) planes_[plane_count_++] = planes_[cuts_];
   planes_[cuts_++] = inward;
+  sync_lanes();
+}
+
+void ShadowFrustum::sync_lanes() {
+  for (int k = 0; k < kMaxPlanes; ++k) {
+    const Plane p = k < plane_count_ ? planes_[std::size_t(k)] : Plane{};
+    nx_[std::size_t(k)] = p.normal.x, ny_[std::size_t(k)] = p.normal.y;
+    nz_[std::size_t(k)] = p.normal.z, nd_[std::size_t(k)] = p.d;
+  }
 }
 
 bool ShadowFrustum::misses(const Bounds3& r) const {
@@ -134,6 +148,23 @@ bool ShadowFrustum::misses(const Bounds3& r) const {
       r.lo.z > h.hi.z) {
     return true;
   }
+#if defined(__SSE2__)
+  // Two planes at a time: the box corner farthest along each normal, per component the
+  // larger of n lo and n hi.
+  const __m128d lx = _mm_set1_pd(r.lo.x), ly = _mm_set1_pd(r.lo.y), lz = _mm_set1_pd(r.lo.z);
+  const __m128d hx = _mm_set1_pd(r.hi.x), hy = _mm_set1_pd(r.hi.y), hz = _mm_set1_pd(r.hi.z);
+  for (int k = 0; k < plane_count_; k += 2) {
+    const __m128d x = _mm_load_pd(&nx_[std::size_t(k)]), y = _mm_load_pd(&ny_[std::size_t(k)]);
+    const __m128d z = _mm_load_pd(&nz_[std::size_t(k)]);
+    const __m128d far =
+        _mm_add_pd(_mm_add_pd(_mm_add_pd(_mm_max_pd(_mm_mul_pd(x, lx), _mm_mul_pd(x, hx)),
+                                         _mm_max_pd(_mm_mul_pd(y, ly), _mm_mul_pd(y, hy))),
+                              _mm_max_pd(_mm_mul_pd(z, lz), _mm_mul_pd(z, hz))),
+                   _mm_load_pd(&nd_[std::size_t(k)]));
+    if (_mm_movemask_pd(_mm_cmplt_pd(far, _mm_setzero_pd()))) return true;
+  }
+  return false;
+#else
   for (int k = 0; k < plane_count_; ++k) {
     const Vec3 n = planes_[k].normal;
     const Vec3 farthest{n.x > 0 ? r.hi.x : r.lo.x, n.y > 0 ? r.hi.y : r.lo.y,
@@ -141,6 +172,7 @@ bool ShadowFrustum::misses(const Bounds3& r) const {
     if (planes_[k].distance(farthest) < 0) return true;
   }
   return false;
+#endif
 }
 
 }  // namespace shadowkit

@@ -35,6 +35,7 @@ class ShadowFrustum {
   void make_exact() {
     exact_ = !everywhere_ && !lost_;
     if (exact_) plane_count_ = cuts_;
+    sync_lanes();
   }
   /// The planes of an exact region as cut, inward normals, not moved out: the volume is
   /// the points on their positive side. Empty when the region is only a bound.
@@ -58,6 +59,9 @@ class ShadowFrustum {
   int plane_count_ = 0, cuts_ = 0;
   std::array<Vec3, 16> hull_{};  ///< the box's corners and the same pushed to the reach
   Bounds3 hull_box_;
+  /// planes_ by component, padded to an even count with a plane that misses nothing.
+  alignas(16) std::array<double, kMaxPlanes> nx_{}, ny_{}, nz_{}, nd_{};
+  void sync_lanes();
 };
 
 }  // namespace shadowkit
