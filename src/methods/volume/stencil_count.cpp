@@ -316,6 +316,23 @@ std::vector<char> receiver_cullable(const std::vector<ShadowFrustum>& frusta,
   return cullable;
 }
 
+// Orders \p items by how near the light their sub-objects lie, nearest first, keeping each
+// sub-object's together. The bins keep this order in every tile, and a near caster's volume
+// holds more of what lies behind it: the pixels it settles (CountingTile::settled) spare
+// the volumes that come after it most of their tests.
+void order_from_light(std::vector<ScreenPolygon>& items, const std::vector<ShadowPolygon>& polygons,
+                      const SubObjects& parts, const Light& light) {
+  std::vector<double> near(parts.size());
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    const Vec3 c = parts.bounds[k].center();
+    near[k] =
+        light.type == Light::Type::point ? length(c - light.position) : dot(c, light.direction);
+  }
+  std::stable_sort(items.begin(), items.end(), [&](const ScreenPolygon& a, const ScreenPolygon& b) {
+    return near[polygons[a.face].sub_object] < near[polygons[b.face].sub_object];
+  });
+}
+
 }  // namespace
 
 StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, int eye_count,
@@ -343,6 +360,7 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
     if (volumes.of(std::uint32_t(k)) && volumes.hull(std::uint32_t(k)).count > 0)
       items.push_back(volumes.hull(std::uint32_t(k)));
   }
+  order_from_light(items, polygons, parts, light);
   const PolygonBins bins(items, view.width, view.height);
   std::atomic<std::size_t> fill = 0, negative = 0, culled = 0, shadowed = 0;
 
