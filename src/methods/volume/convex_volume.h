@@ -24,11 +24,12 @@ struct ConvexVolume {
   std::array<KeyPlane, ShadowFrustum::kMaxPlanes> keys{};
   std::uint32_t inside_beyond = 0;  ///< bit i: the volume lies beyond plane i
 
-  /// Adds 1 to the count of every pixel of cell (\p band, \p c) whose visible point lies in
-  /// the volume, testing pixels only within columns [xa, xb] and rows [ya, yb] (where its
-  /// polygons reach) unless the depth keys settle the whole cell. The cell must not show the
-  /// sub-object's own faces, whose points lie on the volume's boundary. Returns the pixels
-  /// tested one by one.
+  /// Adds 1 to the count of every pixel of cell (\p band, \p c), not settled yet
+  /// (CountingTile::settled), whose visible point lies in the volume, and settles it; a cell
+  /// left with every pixel settled is shadowed (CountingTile::shadowed). Tests pixels only within
+  /// columns [xa, xb] and rows [ya, yb] (where its outline reaches) unless the depth keys settle
+  /// the whole cell. The cell must not show the sub-object's own faces, whose points lie on the
+  /// volume's boundary. Returns the pixels tested one by one.
   std::size_t count_cell(const VisibleFrame& frame, int band, int c, int xa, int xb, int ya, int yb,
                          CountingTile& t) const;
 

@@ -200,8 +200,9 @@ class TileCounter {
     return tested;
   }
 
-  // Counts a convex volume whole over the tile, in the cells its polygons \p group reach
-  // within their bounds; returns the pixels tested one by one.
+  // Counts a convex volume whole over the tile, in the cells within the bounds of its items
+  // \p group (its outline, or its polygons where the outline has too many corners) and,
+  // band by band, within its \p outline; returns the pixels tested one by one.
   std::size_t count_volume(const ConvexVolume& volume, std::span<const OutlineEdge> outline,
                            std::span<const ScreenPolygon* const> group, ReceiverTest& receivers,
                            CountingTile& t) const {

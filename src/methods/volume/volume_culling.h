@@ -31,7 +31,8 @@ class ShadowFrustum {
   /// Declares the region the exact volume of a closed convex sub-object (SubObjects::convex)
   /// once the planes of all its faces and of the shadow polygons of all its contour edges
   /// were cut in (a light-facing face and a contour edge bound it; cut refuses a face turned
-  /// away). It stays a bound only if some cut found no room or no plane.
+  /// away). It stays a bound only if some cut found no room or no plane. An exact region
+  /// keeps only its cuts: the box's planes hold the volume anyway.
   void make_exact() {
     exact_ = !everywhere_ && !lost_;
     if (exact_) plane_count_ = cuts_;
