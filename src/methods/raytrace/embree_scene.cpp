@@ -29,8 +29,9 @@ EmbreeScene::EmbreeScene(const Scene& scene) {
   rtcSetDeviceMemoryMonitorFunction(device_, track_memory, &bytes);
 
   scene_ = rtcNewScene(device_);
-  // Robust mode avoids the optimisations that can let a ray slip through a shared edge.
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
+  // Robust mode avoids the optimisations that can let a ray slip through a shared edge; a
+  // shadow ray's context may carry a filter (RaytraceMethod: faces through the light).
+  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
 
   const TriangleList& list = scene.triangles();

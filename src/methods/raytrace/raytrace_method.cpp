@@ -50,6 +50,26 @@ class ShadowPacket {
   bool any_ = false;
 };
 
+// An intersection context that knows which triangles' planes pass through the light.
+struct ShadowRayContext {
+  RTCIntersectContext context;  // first, so that Embree's pointer to it is one to this
+  const char* through_light = nullptr;
+};
+
+// By the contract a shadow ray's segment meets a plane through the light only at the light,
+// or, for a point in that plane, has condition 1 fail before any ray: such a face never
+// blocks. In float, a ray that runs to a light in a face's plane at a grazing angle can
+// still hit the face just short of the light (speckled shadow on walls under a ceiling
+// holding the light), so those hits are dropped.
+void skip_faces_through_light(const RTCFilterFunctionNArguments* args) {
+  const auto* context = reinterpret_cast<const ShadowRayContext*>(args->context);
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] != 0 && context->through_light[RTCHitN_primID(args->hit, args->N, i)]) {
+      args->valid[i] = 0;
+    }
+  }
+}
+
 }  // namespace
 
 double face_offset(const Mesh& mesh, std::size_t face, Vec3 origin) {
@@ -92,6 +112,13 @@ void RaytraceMethod::build(const Scene& scene, std::size_t light, const Context&
     const float offset = std::max(face_offset_[f], std::numeric_limits<float>::min());
     lit_side_offset_[f] = faces_light(plane, eye, light_) ? side * offset : 0.0f;
   }
+  const std::vector<std::uint32_t>& triangle_face = scene.triangles().triangle_face;
+  through_light_.resize(triangle_face.size());
+  any_through_light_ = false;
+  for (std::size_t t = 0; t < triangle_face.size(); ++t) {
+    through_light_[t] = light_side(scene.face_plane(triangle_face[t]), light_) == 0;
+    any_through_light_ = any_through_light_ || through_light_[t];
+  }
 }
 
 void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
@@ -105,7 +132,7 @@ void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfa
   tbb::combinable<std::size_t> ray_count;
 
   // Returns the number of shadow rays cast.
-  auto shade_row = [&](ShadowPacket& packet, RTCIntersectContext& context, int y, int x0,
+  auto shade_row = [&](ShadowPacket& packet, ShadowRayContext& context, int y, int x0,
                        int lanes) -> std::size_t {
     packet.clear();
     for (int k = 0; k < lanes; ++k) {
@@ -122,7 +149,7 @@ void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfa
       const Vec3 o = p + scene.face_plane(surfaces.face[i]).normal * offset;
       packet.set(k, o, point_light ? light_position - o : -light_.direction, tfar);
     }
-    if (!packet.trace(embree_->handle(), &context)) return 0;
+    if (!packet.trace(embree_->handle(), &context.context)) return 0;
     std::size_t rays = 0;
     for (int k = 0; k < lanes; ++k) {
       if (!packet.valid(k)) continue;
@@ -134,9 +161,13 @@ void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfa
 
   tbb::parallel_for(0, tiles_x * tiles_y, [&](int tile) {
     const int x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    ShadowRayContext context;
+    rtcInitIntersectContext(&context.context);
+    context.context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    if (any_through_light_) {
+      context.context.filter = skip_faces_through_light;
+      context.through_light = through_light_.data();
+    }
     ShadowPacket packet;
     const int lanes = std::min(kTile, surfaces.width - x0);
     std::size_t rays = 0;

@@ -28,6 +28,10 @@ class RaytraceMethod final : public ShadowMethod {
   /// Per face for the current light: the offset signed toward the side the camera and the
   /// light share, or 0 when they are on opposite sides (contract condition 1).
   std::vector<float> lit_side_offset_;
+  /// Per triangle for the current light: its face's plane passes exactly through the light
+  /// (or, for a directional light, along it), so it lies between no point and the light.
+  std::vector<char> through_light_;
+  bool any_through_light_ = false;
   Light light_;
   double rays_ = 0;
 };

@@ -78,6 +78,26 @@ TEST(Raytrace, LightInAFacesPlaneShadowsThatFace) {
   EXPECT_EQ(shade(scene).at(20, 20), kMaskShadow);
 }
 
+// A light exactly in the ceiling's plane, inside the room: by the contract nothing lies
+// between it and the walls, whose shadow rays run up to it along the ceiling at grazing
+// angles (in float they hit the ceiling just short of the light without the filter).
+TEST(Raytrace, ACeilingThroughTheLightShadowsNothingUnderIt) {
+  const Scene scene = testing::make_scene(testing::camera({0, 1.5, 2.5}, {0, 2.9, -3}, 160, 120),
+                                          {testing::point_light({0.3, 3, -0.2})},
+                                          {testing::box({-3, 0, -3}, {3, 3, 3})});
+  const ShadowMask mask = shade(scene);
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  int walls = 0, ceiling = 0;
+  for (std::size_t i = 0; i < mask.size(); ++i) {
+    ASSERT_TRUE(vsb.covered(i));
+    const bool on_ceiling = vsb.point(i).y > 3 - 1e-6;  // condition 1 fails there
+    EXPECT_EQ(mask.pixels[i], on_ceiling ? kMaskShadow : kMaskLit) << vsb.point(i).y;
+    ++(on_ceiling ? ceiling : walls);
+  }
+  EXPECT_GT(walls, 5000);
+  EXPECT_GT(ceiling, 1000);
+}
+
 TEST(Raytrace, ClosedBoxShadowsTheGroundAndItsOwnFarSide) {
   const Scene scene = testing::make_scene(
       testing::camera({4, 5, 6}, {0, 0.5, 0}, 120, 90), {testing::point_light({0, 6, 0})},
