@@ -1,3 +1,5 @@
+#include "convex_volume.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -104,6 +106,33 @@ TEST(ConvexVolume, DirectionalLightGivesTheSameShadowAsRaytrace) {
       cube_scene({0, 9, 6}, testing::directional_light(normalize(Vec3{0.5, -1, 0.25})));
   EXPECT_EQ(count(scene).convex_volumes, 1);
   EXPECT_LT(testing::worst_interior_mismatch(scene, "volume"), 0.05);
+}
+
+TEST(ConvexVolume, OverlappingVolumesSettleTheirPixelsAsRaytrace) {
+  // Cubes in a row away from the light: each lies in the shadow of the one before, and their
+  // volumes overlap on the ground; whichever settles a pixel first, the mask is the same.
+  const Scene scene = cube_scene({6, 9, 8}, testing::point_light({-6, 7, 0}),
+                                 {testing::box({2, 0.5, -0.6}, {3, 1.5, 0.4}),
+                                  testing::box({4.5, 0.2, -0.3}, {5.3, 1.0, 0.5})});
+  const Counted c = count(scene);
+  EXPECT_EQ(c.convex_volumes, 3);
+  EXPECT_GT(c.shadowed_cells, 4);
+  EXPECT_LT(testing::worst_interior_mismatch(scene, "volume"), 0.05);
+}
+
+TEST(OutlineColumns, HoldEveryColumnTheOutlineCoversWidenedByAPixel) {
+  // The triangle (10, 0), (30, 20), (0, 20), edges from their upper ends down.
+  const std::vector<OutlineEdge> outline{
+      {10, 0, 30, 20, 1}, {10, 0, 0, 20, -0.5}, {0, 20, 30, 20, 0}};
+  int xa = 0, xb = 100;
+  ASSERT_TRUE(outline_columns(outline, 10, 10, xa, xb));
+  // Rows 9 to 11: x from 4.5 to 21.
+  EXPECT_EQ(xa, 3);
+  EXPECT_EQ(xb, 22);
+  xa = 0, xb = 100;
+  EXPECT_FALSE(outline_columns(outline, 30, 40, xa, xb));  // below it
+  xa = 25, xb = 100;
+  EXPECT_FALSE(outline_columns(outline, 0, 2, xa, xb));  // right of it near the top
 }
 
 }  // namespace
