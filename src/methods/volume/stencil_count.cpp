@@ -19,22 +19,23 @@ namespace {
 
 using raster::ScreenPolygon;
 
-// Shadow polygons as convex screen polygons, face = polygon index. Order does not matter:
-// counts add up.
-std::vector<ScreenPolygon> setup_shadow_polygons(const std::vector<ShadowPolygon>& polygons,
-                                                 const RasterProjection& view) {
+// Shadow polygons as convex screen polygons, face = polygon index, into \p buffers.screen.
+// Order does not matter: counts add up.
+void setup_shadow_polygons(const std::vector<ShadowPolygon>& polygons, const RasterProjection& view,
+                           StencilBuffers& buffers) {
   constexpr std::size_t kChunk = 1024;
-  std::vector<std::vector<ScreenPolygon>> chunks((polygons.size() + kChunk - 1) / kChunk);
+  auto& chunks = buffers.chunks;
+  chunks.resize((polygons.size() + kChunk - 1) / kChunk);
   tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
+    chunks[c].clear();
     for (std::size_t i = c * kChunk; i < std::min(polygons.size(), (c + 1) * kChunk); ++i) {
       const ShadowPolygon& p = polygons[i];
       raster::setup_convex_polygon({p.corners.data(), std::size_t(p.corner_count)},
                                    std::uint32_t(i), view, chunks[c]);
     }
   });
-  std::vector<ScreenPolygon> all;
-  for (const auto& c : chunks) all.insert(all.end(), c.begin(), c.end());
-  return all;
+  buffers.screen.clear();
+  for (const auto& c : chunks) buffers.screen.insert(buffers.screen.end(), c.begin(), c.end());
 }
 
 std::vector<KeyPlane> polygon_keys(const std::vector<ShadowPolygon>& polygons,
@@ -339,11 +340,13 @@ void order_from_light(std::vector<ScreenPolygon>& items, const std::vector<Shado
 StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, int eye_count,
                                    const Scene& scene, const Light& light, const SubObjects& parts,
                                    const std::vector<ShadowFrustum>& frusta,
-                                   const VisibleSurfaceBuffer& surfaces, ShadowMask& mask) {
+                                   const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
+                                   StencilBuffers& buffers) {
   const Camera& cam = scene.camera;
   const RasterProjection view =
       RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position));
-  const std::vector<ScreenPolygon> screen = setup_shadow_polygons(polygons, view);
+  setup_shadow_polygons(polygons, view, buffers);
+  const std::vector<ScreenPolygon>& screen = buffers.screen;
   const VisibleFrame frame(scene, light, parts, surfaces, eye_count);
   const std::vector<KeyPlane> keys = polygon_keys(polygons, frame.rays);
   const TileCounter counter(polygons, keys, frame);
@@ -351,8 +354,8 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   const ConvexVolumes volumes(polygons, frusta, cullable, frame.rays, screen);
   // Convex volumes are binned by their outlines, one item each, the other polygons one by
   // one; items of one sub-object stay together.
-  std::vector<ScreenPolygon> items;
-  items.reserve(screen.size());
+  std::vector<ScreenPolygon>& items = buffers.items;
+  items.clear();
   for (const ScreenPolygon& s : screen) {
     const std::uint32_t k = polygons[s.face].sub_object;
     if (!volumes.of(k) || volumes.hull(k).count == 0) items.push_back(s);

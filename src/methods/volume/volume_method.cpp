@@ -191,8 +191,8 @@ void VolumeMethod::cut_frusta(const Scene& scene, const std::vector<char>& compl
 
 void VolumeMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
                          const Context& /*ctx*/) {
-  const StencilStats stats =
-      count_shadow_polygons(polygons_, eye_count_, scene, light_, parts_, frusta_, surfaces, mask);
+  const StencilStats stats = count_shadow_polygons(polygons_, eye_count_, scene, light_, parts_,
+                                                   frusta_, surfaces, mask, stencil_buffers_);
   fill_ = double(stats.fill);
   negative_counts_ = double(stats.negative);
   receiver_culled_ = double(stats.receiver_culled);
@@ -201,7 +201,13 @@ void VolumeMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surface
 }
 
 std::size_t VolumeMethod::memory_bytes() const {
-  return polygons_.capacity() * sizeof(ShadowPolygon) + frusta_.capacity() * sizeof(ShadowFrustum) +
+  std::size_t buffers = (stencil_buffers_.screen.capacity() + stencil_buffers_.items.capacity()) *
+                        sizeof(raster::ScreenPolygon);
+  for (const auto& chunk : stencil_buffers_.chunks) {
+    buffers += chunk.capacity() * sizeof(raster::ScreenPolygon);
+  }
+  return buffers + polygons_.capacity() * sizeof(ShadowPolygon) +
+         frusta_.capacity() * sizeof(ShadowFrustum) +
          parts_.of_face.capacity() * sizeof(std::uint32_t) +
          parts_.bounds.capacity() * sizeof(Bounds3);
 }

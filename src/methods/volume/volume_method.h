@@ -4,6 +4,7 @@
 
 #include "shadow_polygon.h"
 #include "shadowkit/methods/shadow_method.h"
+#include "stencil_count.h"
 #include "sub_objects.h"
 #include "volume_culling.h"
 
@@ -36,6 +37,7 @@ class VolumeMethod final : public ShadowMethod {
   std::vector<ShadowFrustum> frusta_;    ///< per sub-object, for the current light
   std::vector<ShadowPolygon> polygons_;  ///< grouped by sub-object
   int eye_count_ = 0;  ///< per-face volumes holding the eye, over depth-pass objects
+  StencilBuffers stencil_buffers_;
   double contour_edges_ = 0, contour_loops_ = 0, open_loops_ = 0;
   double depth_fail_objects_ = 0, culled_sub_objects_ = 0;
   double fill_ = 0, negative_counts_ = 0, receiver_culled_ = 0, convex_volumes_ = 0,
