@@ -84,6 +84,8 @@ class ConvexVolumes {
   const raster::ScreenPolygon& hull(std::uint32_t k) const {
     return hulls_[std::size_t(index_[k])];
   }
+  /// Sub-object \p k's volume is binned by its hull, one item for all its polygons.
+  bool binned_by_hull(std::uint32_t k) const { return of(k) && hull(k).count > 0; }
   /// Sub-object \p k's screen polygons: [first, last) in the list the volumes were made from.
   std::pair<std::uint32_t, std::uint32_t> screen_polygons(std::uint32_t k) const {
     return polygons_of_[std::size_t(index_[k])];

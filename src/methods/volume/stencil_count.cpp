@@ -358,11 +358,10 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   items.clear();
   for (const ScreenPolygon& s : screen) {
     const std::uint32_t k = polygons[s.face].sub_object;
-    if (!volumes.of(k) || volumes.hull(k).count == 0) items.push_back(s);
+    if (!volumes.binned_by_hull(k)) items.push_back(s);
   }
-  for (std::size_t k = 0; k < frusta.size(); ++k) {
-    if (volumes.of(std::uint32_t(k)) && volumes.hull(std::uint32_t(k)).count > 0)
-      items.push_back(volumes.hull(std::uint32_t(k)));
+  for (std::uint32_t k = 0; k < frusta.size(); ++k) {
+    if (volumes.binned_by_hull(k)) items.push_back(volumes.hull(k));
   }
   order_from_light(items, polygons, parts, light);
   const PolygonBins bins(items, view.width, view.height);
@@ -407,7 +406,7 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
             tile_fill += counter.count_volume(*volume, volumes.outline(k), group, receivers, t);
             continue;
           }
-          if (volume && volumes.hull(k).count > 0) {  // binned by its outline: all its polygons
+          if (volumes.binned_by_hull(k)) {  // one item for all its polygons
             group.clear();
             const auto [first, last] = volumes.screen_polygons(k);
             for (std::uint32_t i = first; i < last; ++i) group.push_back(&screen[i]);

@@ -28,6 +28,12 @@ struct StencilBuffers {
   std::vector<std::vector<raster::ScreenPolygon>> chunks;  ///< set up in parallel
   std::vector<raster::ScreenPolygon> screen;               ///< per shadow polygon, in order
   std::vector<raster::ScreenPolygon> items;                ///< what is binned
+
+  std::size_t memory_bytes() const {
+    std::size_t polygons = screen.capacity() + items.capacity();
+    for (const auto& chunk : chunks) polygons += chunk.capacity();
+    return polygons * sizeof(raster::ScreenPolygon);
+  }
 };
 
 /// Rasterizes \p polygons over the camera view with the shared scan converter and, per

@@ -201,12 +201,7 @@ void VolumeMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surface
 }
 
 std::size_t VolumeMethod::memory_bytes() const {
-  std::size_t buffers = (stencil_buffers_.screen.capacity() + stencil_buffers_.items.capacity()) *
-                        sizeof(raster::ScreenPolygon);
-  for (const auto& chunk : stencil_buffers_.chunks) {
-    buffers += chunk.capacity() * sizeof(raster::ScreenPolygon);
-  }
-  return buffers + polygons_.capacity() * sizeof(ShadowPolygon) +
+  return stencil_buffers_.memory_bytes() + polygons_.capacity() * sizeof(ShadowPolygon) +
          frusta_.capacity() * sizeof(ShadowFrustum) +
          parts_.of_face.capacity() * sizeof(std::uint32_t) +
          parts_.bounds.capacity() * sizeof(Bounds3);
