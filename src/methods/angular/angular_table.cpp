@@ -9,7 +9,6 @@
 #include <cstring>
 #include <limits>
 #include <numbers>
-#include <numeric>
 #include <optional>
 #include <tuple>
 
@@ -32,11 +31,19 @@ struct ObjectLoops {
   std::vector<double> theta;  // per vertex on an RE
   std::vector<RidgeEdge> ridges;
   std::vector<RidgeEdgeLoop> loops;
+  std::vector<double> loop_phi;           // per loop, the least phi of its vertices
   std::vector<std::uint32_t> hidden_id;   // per face, into AngularTable::hidden_
   std::vector<char> convex;               // per occluding face
   std::vector<std::uint32_t> axis_faces;  // occluding faces the light's X axis pierces at X < 0
   double theta_lo = kInf, theta_hi = -theta_lo;
   bool wraps = false;  // an RE passes behind the light's back (theta = +-pi)
+};
+
+// One task of the slicing: an RE loop of an object, or a walk from the light's X axis in an
+// occluding face (loop = ~face), and the least phi that orders it.
+struct LoopWork {
+  double phi = 0;
+  std::uint32_t object = 0, loop = 0;
 };
 
 // Face \p f turns the same way at every corner about its normal.
@@ -107,8 +114,17 @@ void ridge_thetas(const Mesh& mesh, const LightFrame& frame, ObjectLoops& o) {
 void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& frame,
                 ObjectLoops& o) {
   o.ridges = find_ridge_edges(mesh, sheets);
-  tbb::parallel_invoke([&] { o.loops = chain_ridge_edge_loops(o.ridges); },
-                       [&] { ridge_thetas(mesh, frame, o); });
+  tbb::parallel_invoke(
+      [&] {
+        o.loops = chain_ridge_edge_loops(o.ridges);
+        o.loop_phi.assign(o.loops.size(), kInf);
+        for (std::size_t l = 0; l < o.loops.size(); ++l) {
+          for (const std::uint32_t e : o.loops[l].edges) {
+            o.loop_phi[l] = std::min(o.loop_phi[l], frame.phi_local(o.local[o.ridges[e].from]));
+          }
+        }
+      },
+      [&] { ridge_thetas(mesh, frame, o); });
   for (const RidgeEdge& re : o.ridges) {
     double a = o.theta[re.from], b = o.theta[re.to];
     if (a > b) std::swap(a, b);
@@ -353,31 +369,23 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     for (const RidgeEdgeLoop& loop : o.loops) table.loop_stats_.open_loops += !loop.closed;
   }
   std::vector<ThetaSlice> slices(table.theta_.resolution);
-  for (int k = 0; k < table.theta_.resolution; ++k) {
+  tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
     slices[k] = theta_slice(table.theta_, frame.point_light(), k);
-  }
-  // Steps 1.5-1.6: one loop at a time, the loops of all objects in parallel.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> work;  // (object, loop or ~axis face)
-  for (std::uint32_t o = 0; o < objects.size(); ++o) {
-    for (std::uint32_t l = 0; l < objects[o].loops.size(); ++l) work.emplace_back(o, l);
-    for (const std::uint32_t f : objects[o].axis_faces) work.emplace_back(o, ~f);
-  }
-  // Loops in order of their least phi, so that each entry's pairs arrive nearly sorted (step
-  // 1.7): a walk starts where an RE rises through the slice, on the loop's side of smaller
-  // phi (its far sheet lies towards larger phi).
-  std::vector<double> phi(work.size(), -kInf);
-  tbb::parallel_for(std::size_t(0), work.size(), [&](std::size_t i) {
-    const auto [o, l] = work[i];
-    if (l >= objects[o].loops.size()) return;
-    phi[i] = kInf;
-    for (const std::uint32_t e : objects[o].loops[l].edges) {
-      phi[i] = std::min(phi[i], frame.phi_local(objects[o].local[objects[o].ridges[e].from]));
-    }
   });
-  std::vector<std::uint32_t> order(work.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(),
-            [&](std::uint32_t a, std::uint32_t b) { return phi[a] < phi[b]; });
+  // Steps 1.5-1.6: one loop at a time, the loops of all objects in parallel, in order of
+  // their least phi, so that each entry's pairs arrive nearly sorted (step 1.7): a walk
+  // starts where an RE rises through the slice, on the loop's side of smaller phi (its far
+  // sheet lies towards larger phi). The walks from the light's axis come first.
+  std::vector<LoopWork> work;
+  for (std::uint32_t o = 0; o < objects.size(); ++o) {
+    for (std::uint32_t l = 0; l < objects[o].loops.size(); ++l) {
+      work.push_back({objects[o].loop_phi[l], o, l});
+    }
+    for (const std::uint32_t f : objects[o].axis_faces) work.push_back({-kInf, o, ~f});
+  }
+  std::sort(work.begin(), work.end(), [](const LoopWork& a, const LoopWork& b) {
+    return std::tie(a.phi, a.object, a.loop) < std::tie(b.phi, b.object, b.loop);
+  });
   // Fixed chunks of that order, each into its own list: the lists in chunk order keep the
   // loops' order in every entry whichever thread sliced them.
   const std::size_t per_chunk = (work.size() + kChunks - 1) / kChunks;
@@ -388,7 +396,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   tbb::parallel_for(std::size_t(0), kChunks, [&](std::size_t c) {
     SliceScratch& local = scratch.local();
     for (std::size_t i = c * per_chunk; i < std::min(work.size(), (c + 1) * per_chunk); ++i) {
-      const auto [o, l] = work[order[i]];
+      const std::uint32_t o = work[i].object, l = work[i].loop;
       const ObjectLoops& loops = objects[o];
       const SlicedMesh m{scene.objects[o].mesh, sheets[o],    loops.local,
                          loops.theta,           loops.convex, loops.hidden_id};

@@ -1,5 +1,7 @@
 #include "scan_line_run.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -78,8 +80,9 @@ bool ScanLineRun::phi_increasing(double c) const {
 
 ThetaBoundaries::ThetaBoundaries(const LightFrame& frame, const ThetaQuantization& q)
     : q_(q), point_light_(frame.point_light()) {
-  planes_.reserve(std::size_t(q.resolution) + 3);
-  for (int k = -1; k <= q.resolution + 1; ++k) planes_.push_back(frame.theta_plane(q.lower(k)));
+  planes_.resize(std::size_t(q.resolution) + 3);
+  tbb::parallel_for(-1, q.resolution + 2,
+                    [&](int k) { planes_[std::size_t(k + 1)] = frame.theta_plane(q.lower(k)); });
 }
 
 int ThetaBoundaries::locate(Vec3 v, int guess) const {
