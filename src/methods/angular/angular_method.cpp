@@ -35,6 +35,7 @@ void AngularMethod::build(const Scene& scene, std::size_t light, const Context& 
   frame_.emplace(light_, scene.camera, (box.lo + box.hi) * 0.5, light);
   // Sec. 7, step 1: the RE loops of every object sliced entry by entry.
   const std::vector<FarSheets> sheets = occluding_sheets(scene, light_);
+  table_.recycle(table_buffers_);
   table_ = AngularTable::build(scene, *frame_, sheets, table_options_, &table_buffers_);
   boundaries_ = ThetaBoundaries(*frame_, table_.theta());
   depth_tolerance_ = 1e-7 * std::max(box.diagonal(), 1e-12);

@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "loop_slicer.h"
+#include "parallel_each.h"
 #include "view_theta.h"
 
 namespace shadowkit {
@@ -24,6 +25,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // The RE loops are sliced in this many chunks, each a task with its own list of pairs:
 // enough for both cores to balance on small scenes too, few enough lists to merge.
 constexpr std::size_t kChunks = 16;
+// Per-object loops split no finer than this many vertices or faces.
+constexpr std::size_t kGrain = 512;
 
 // One object's RE loops in the light's frame.
 struct ObjectLoops {
@@ -61,12 +64,12 @@ bool convex_face(const Mesh& mesh, std::uint32_t f) {
 // Every object's vertices in the light's frame, in parallel.
 void place_vertices(const Scene& scene, const LightFrame& frame,
                     std::vector<ObjectLoops>& objects) {
-  for (std::size_t o = 0; o < objects.size(); ++o) {
+  tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
     const Mesh& mesh = scene.objects[o].mesh;
     objects[o].local.resize(mesh.vertices.size());
-    tbb::parallel_for(std::size_t(0), mesh.vertices.size(),
-                      [&](std::size_t v) { objects[o].local[v] = frame.local(mesh.vertices[v]); });
-  }
+    parallel_each(mesh.vertices.size(), kGrain,
+                  [&](std::size_t v) { objects[o].local[v] = frame.local(mesh.vertices[v]); });
+  });
 }
 
 // The occluding faces' planes (the depth of Sec. 5) from \p first on, in parallel over one
@@ -82,7 +85,7 @@ void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& shee
   }
   std::vector<char> pierced(frame.point_light() ? mesh.face_count() : 0, 0);
   loops.convex.assign(mesh.face_count(), 0);
-  tbb::parallel_for(std::uint32_t(0), std::uint32_t(mesh.face_count()), [&](std::uint32_t f) {
+  parallel_each(std::uint32_t(mesh.face_count()), std::uint32_t(kGrain), [&](std::uint32_t f) {
     if (!sheets.occludes(f)) return;
     const std::uint32_t face = object.first_face + f;
     hidden[loops.hidden_id[f]] = {frame.plane(scene.face_plane(face)), double(sheets.side[f]),
@@ -102,7 +105,7 @@ void ridge_thetas(const Mesh& mesh, const LightFrame& frame, ObjectLoops& o) {
   std::vector<char> on_ridge(mesh.vertices.size(), 0);
   for (const RidgeEdge& re : o.ridges) on_ridge[re.from] = on_ridge[re.to] = 1;
   o.theta.assign(mesh.vertices.size(), 0);
-  tbb::parallel_for(std::size_t(0), o.theta.size(), [&](std::size_t v) {
+  parallel_each(o.theta.size(), kGrain, [&](std::size_t v) {
     if (!on_ridge[v]) return;
     const Vec3 p = o.local[v];
     o.theta[v] = frame.point_light() ? std::atan2(p.y, p.z) : p.y;
@@ -294,9 +297,9 @@ Occluders place_occluders(const Scene& scene, const std::vector<FarSheets>& shee
   }
   Occluders out;
   out.hidden.resize(first_hidden.back());
-  for (std::size_t o = 0; o < objects.size(); ++o) {
+  tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
     place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], out.hidden);
-  }
+  });
   std::tie(out.corner_start, out.corners) = hidden_corners(scene, objects, sheets);
   return out;
 }
@@ -368,10 +371,6 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     table.loop_stats_.loops += double(o.loops.size());
     for (const RidgeEdgeLoop& loop : o.loops) table.loop_stats_.open_loops += !loop.closed;
   }
-  std::vector<ThetaSlice> slices(table.theta_.resolution);
-  tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
-    slices[k] = theta_slice(table.theta_, frame.point_light(), k);
-  });
   // Steps 1.5-1.6: one loop at a time, the loops of all objects in parallel, in order of
   // their least phi, so that each entry's pairs arrive nearly sorted (step 1.7): a walk
   // starts where an RE rises through the slice, on the loop's side of smaller phi (its far
@@ -383,9 +382,18 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     }
     for (const std::uint32_t f : objects[o].axis_faces) work.push_back({-kInf, o, ~f});
   }
-  std::sort(work.begin(), work.end(), [](const LoopWork& a, const LoopWork& b) {
-    return std::tie(a.phi, a.object, a.loop) < std::tie(b.phi, b.object, b.loop);
-  });
+  std::vector<ThetaSlice> slices(table.theta_.resolution);
+  tbb::parallel_invoke(
+      [&] {
+        std::sort(work.begin(), work.end(), [](const LoopWork& a, const LoopWork& b) {
+          return std::tie(a.phi, a.object, a.loop) < std::tie(b.phi, b.object, b.loop);
+        });
+      },
+      [&] {
+        tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
+          slices[k] = theta_slice(table.theta_, frame.point_light(), k);
+        });
+      });
   // Fixed chunks of that order, each into its own list: the lists in chunk order keep the
   // loops' order in every entry whichever thread sliced them.
   const std::size_t per_chunk = (work.size() + kChunks - 1) / kChunks;
@@ -420,7 +428,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
     kept[k] = table.sort_entry(k, forms, frame.point_light(), sort_scratch.local());
   });
-  storage.unsorted = table.compact(kept);
+  storage.unsorted = table.compact(kept, std::move(storage.kept));
   return table;
 }
 
@@ -505,14 +513,15 @@ std::uint32_t AngularTable::sort_entry(int k, std::span<const DepthForm> forms, 
   return std::uint32_t(kept);
 }
 
-std::vector<AngularPair> AngularTable::compact(const std::vector<std::uint32_t>& kept) {
+std::vector<AngularPair> AngularTable::compact(const std::vector<std::uint32_t>& kept,
+                                               std::vector<AngularPair> pairs) {
   std::vector<std::uint32_t> start(kept.size() + 1, 0);
   covered_start_.assign(kept.size() + 1, 0);
   for (std::size_t k = 0; k < kept.size(); ++k) {
     start[k + 1] = start[k] + kept[k];
     covered_start_[k + 1] = covered_start_[k] + (start_[k + 1] - start_[k] - kept[k]);
   }
-  std::vector<AngularPair> pairs(start.back());
+  pairs.resize(start.back());
   covered_.resize(covered_start_.back());
   tbb::parallel_for(std::size_t(0), kept.size(), [&](std::size_t k) {
     std::copy_n(pairs_.begin() + start_[k], kept[k], pairs.begin() + start[k]);

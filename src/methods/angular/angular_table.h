@@ -71,9 +71,10 @@ struct EntryPair {
 struct AngularTableBuffers {
   std::vector<std::vector<EntryPair>> lists;  ///< per chunk of RE loops, its pairs
   std::vector<AngularPair> unsorted;          ///< every pair before saturation and compaction
+  std::vector<AngularPair> kept;  ///< the previous table's pairs (AngularTable::recycle)
 
   std::size_t memory_bytes() const {
-    std::size_t bytes = unsorted.capacity() * sizeof(AngularPair);
+    std::size_t bytes = (unsorted.capacity() + kept.capacity()) * sizeof(AngularPair);
     for (const auto& list : lists) bytes += list.capacity() * sizeof(EntryPair);
     return bytes;
   }
@@ -89,6 +90,14 @@ class AngularTable {
                             const std::vector<FarSheets>& sheets,
                             const AngularTableOptions& options,
                             AngularTableBuffers* buffers = nullptr);
+
+  /// Empties the table; its pairs' storage goes to \p buffers for the next build (whose
+  /// kept pairs, of about the same number, then need neither a fresh allocation nor its
+  /// zero fill).
+  void recycle(AngularTableBuffers& buffers) {
+    buffers.kept = std::move(pairs_);
+    *this = AngularTable();
+  }
 
   const ThetaQuantization& theta() const { return theta_; }
   std::span<const AngularPair> entry(int k) const {
@@ -153,8 +162,10 @@ class AngularTable {
   // pairs kept at its front.
   std::uint32_t sort_entry(int k, std::span<const DepthForm> forms, bool point_light,
                            SortScratch& scratch);
-  // Keeps the first kept[k] pairs of every entry k; returns the storage they were in.
-  std::vector<AngularPair> compact(const std::vector<std::uint32_t>& kept);
+  // Keeps the first kept[k] pairs of every entry k, in \p storage; returns the storage they
+  // were in.
+  std::vector<AngularPair> compact(const std::vector<std::uint32_t>& kept,
+                                   std::vector<AngularPair> storage);
 
   ThetaQuantization theta_;
   std::vector<std::uint32_t> start_;  ///< R + 1 offsets into pairs_
