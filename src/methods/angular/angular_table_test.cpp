@@ -228,11 +228,10 @@ TEST(Pairing, EqualAdjacentPeaksPairWithEachOther) {
   const std::vector<RidgeEdgeLoop> loops = chain_ridge_edge_loops(ridges);
   ASSERT_EQ(loops.size(), 1u);
 
-  ThetaSlice peak;
-  peak.theta = frame.local({-2, 2, -1}).y;
-  peak.point_light = false;
-  ASSERT_EQ(frame.local({-1, 2, -1}).y, peak.theta);  // equal adjacent peaks, exactly
-  ASSERT_EQ(frame.local({1, 2, -1}).y, peak.theta);
+  const double peak_theta = frame.local({-2, 2, -1}).y;
+  const ThetaSlice peak = ThetaSlice::at(peak_theta, false);
+  ASSERT_EQ(frame.local({-1, 2, -1}).y, peak_theta);  // equal adjacent peaks, exactly
+  ASSERT_EQ(frame.local({1, 2, -1}).y, peak_theta);
   const ThetaQuantization one_entry{-1e3, 2e3, 1, false};
   const std::vector<char> convex(mesh.face_count(), 0);  // the U's front and back are not
   const SlicedMesh sliced{mesh, sheets, local, theta, convex, hidden_id};

@@ -10,21 +10,27 @@
 
 namespace shadowkit {
 
-/// \brief The constant-theta plane at the centre of one table entry.
+/// \brief The constant-theta plane at the centre of one table entry. Its tests are linear
+/// forms whose coefficients hold the light's kind, so that the walks, which evaluate them
+/// at every edge they cross, never branch on it.
 struct ThetaSlice {
   std::uint32_t entry = 0;
-  double theta = 0, cos = 1, sin = 0;
   bool point_light = true;
+  double side_y = 1, side_z = 0, side_0 = 0;  ///< side(v) = v.y side_y - v.z side_z + side_0
+  double rho_y = 0, rho_z = 1, rho_0 = 0;     ///< rho(v) = v.y rho_y + v.z rho_z + rho_0
 
+  /// The slice at \p theta: for a point light the half-plane through the light's X axis at
+  /// angle theta (eq. 2), for a directional light the plane Y = theta.
+  static ThetaSlice at(double theta, bool point_light, std::uint32_t entry = 0);
   /// Signed distance-like value whose sign tells the side of the plane (shared by every
   /// edge test of the entry, so that neighbours agree on which edges the plane crosses).
-  double side(Vec3 v) const { return point_light ? v.y * cos - v.z * sin : v.y - theta; }
+  double side(Vec3 v) const { return v.y * side_y - v.z * side_z + side_0; }
   /// Distance from the light's X axis inside the half-plane at theta; negative in the
   /// half-plane at theta + pi. Always 1 for a directional light.
-  double rho(Vec3 v) const { return point_light ? v.y * sin + v.z * cos : 1; }
-  /// phi as AngularPoint keeps it (tan(phi) for a point light) of a point on the plane,
-  /// given its rho.
-  double phi(Vec3 v, double rho_v) const { return point_light ? v.x / rho_v : v.x; }
+  double rho(Vec3 v) const { return v.y * rho_y + v.z * rho_z + rho_0; }
+  /// phi as AngularPoint keeps it (tan(phi) for a point light, X for a directional one) of
+  /// a point on the plane, given its rho.
+  static double phi(Vec3 v, double rho_v) { return v.x / rho_v; }
 };
 
 /// \brief A point where a slice crosses the far sheet's boundary or a face's edge.
