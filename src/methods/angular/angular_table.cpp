@@ -185,7 +185,23 @@ struct DepthForm {
   }
 };
 
-namespace {
+// The directions of theta at every entry's centre and bounds, each computed once per build
+// for the slices and saturation: (sin, cos) of theta for a point light, (theta, 1) for a
+// directional light.
+class EntryRays {
+ public:
+  EntryRays(const ThetaQuantization& q, bool point_light) : rays_(2 * q.resolution + 1) {
+    tbb::parallel_for(0, int(rays_.size()), [&](int i) {
+      const double theta = i % 2 ? q.centre(i / 2) : q.lower(i / 2);
+      rays_[i] = point_light ? std::pair{std::sin(theta), std::cos(theta)} : std::pair{theta, 1.0};
+    });
+  }
+  std::pair<double, double> lower(int k) const { return rays_[2 * std::size_t(k)]; }
+  std::pair<double, double> centre(int k) const { return rays_[2 * std::size_t(k) + 1]; }
+
+ private:
+  std::vector<std::pair<double, double>> rays_;
+};
 
 // Sec. 10 within one entry, its pairs offered in order of phi_begin: a pair adds nothing
 // when one of the last two kept pairs holds its phi range and lies nearer the light at both
@@ -197,14 +213,11 @@ namespace {
 // ground's, behind everything.
 class Saturation {
  public:
-  Saturation(const ThetaQuantization& q, std::span<const DepthForm> forms, int k, bool point_light)
-      : forms_(forms), point_light_(point_light) {
-    const double thetas[3] = {q.centre(k), q.lower(k), q.lower(k + 1)};  // most fail at once
-    for (int i = 0; i < 3; ++i) {
-      rays_[i] = point_light ? std::pair{std::sin(thetas[i]), std::cos(thetas[i])}
-                             : std::pair{thetas[i], 1.0};
-    }
-  }
+  // \p rays: entry k's rays as EntryRays holds them.
+  Saturation(std::span<const DepthForm> forms, const EntryRays& rays, int k, bool point_light)
+      : forms_(forms),
+        point_light_(point_light),
+        rays_{rays.centre(k), rays.lower(k), rays.lower(k + 1)} {}  // most fail at the centre
 
   bool covers(const AngularPair& q) {
     if (!std::isfinite(q.phi_begin) || !std::isfinite(q.phi_end)) return false;
@@ -248,6 +261,8 @@ class Saturation {
   std::size_t kept_ = 0;
   Kept recent_[2];
 };
+
+namespace {
 
 // Copies all 32 bytes of a pair, padding included: a copy of its 28 bytes of fields reads
 // the last 16 at offset 12, across the two 16-byte stores that wrote a pair just before,
@@ -382,6 +397,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     }
     for (const std::uint32_t f : objects[o].axis_faces) work.push_back({-kInf, o, ~f});
   }
+  const EntryRays rays(table.theta_, frame.point_light());
   std::vector<ThetaSlice> slices(table.theta_.resolution);
   tbb::parallel_invoke(
       [&] {
@@ -391,7 +407,8 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
       },
       [&] {
         tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
-          slices[k] = theta_slice(table.theta_, frame.point_light(), k);
+          slices[k] = ThetaSlice::at(table.theta_.centre(k), rays.centre(k), frame.point_light(),
+                                     std::uint32_t(k));
         });
       });
   // Fixed chunks of that order, each into its own list: the lists in chunk order keep the
@@ -426,7 +443,9 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   });
   tbb::enumerable_thread_specific<SortScratch> sort_scratch;
   tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
-    kept[k] = table.sort_entry(k, forms, frame.point_light(), sort_scratch.local());
+    std::optional<Saturation> saturation;
+    if (!forms.empty()) saturation.emplace(forms, rays, k, frame.point_light());
+    kept[k] = table.sort_entry(k, saturation ? &*saturation : nullptr, sort_scratch.local());
   });
   storage.unsorted = table.compact(kept, std::move(storage.kept));
   return table;
@@ -458,8 +477,7 @@ void AngularTable::fill_entries(std::span<const std::vector<EntryPair>> lists) {
   });
 }
 
-std::uint32_t AngularTable::sort_entry(int k, std::span<const DepthForm> forms, bool point_light,
-                                       SortScratch& scratch) {
+std::uint32_t AngularTable::sort_entry(int k, Saturation* saturation, SortScratch& scratch) {
   const std::span<AngularPair> entry(pairs_.data() + start_[k], pairs_.data() + start_[k + 1]);
   if (entry.empty()) return 0;
   // Step 1.7: sort by phi_begin. The pairs arrive nearly sorted (loops in order of phi), so
@@ -482,8 +500,6 @@ std::uint32_t AngularTable::sort_entry(int k, std::span<const DepthForm> forms, 
   // same extent. Wide pairs go first, so that the reach of the narrow ones skips well; the
   // narrow ones move down in place past the dropped and the wide.
   const double wide = (extent_end - entry.front().phi_begin) / 16;
-  std::optional<Saturation> saturation;
-  if (!forms.empty()) saturation.emplace(theta_, forms, k, point_light);
   std::vector<AngularPair>& wide_pairs = scratch.pairs;
   std::vector<std::uint32_t>& covered = scratch.covered;
   wide_pairs.clear();

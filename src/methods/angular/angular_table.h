@@ -53,6 +53,7 @@ struct ThetaQuantization {
 };
 
 struct DepthForm;  // an occluding face's depth along a slice's rays, while the table is built
+class Saturation;  // Sec. 10's test within one entry, while the table is built
 
 /// \brief What the table is built from and how.
 struct AngularTableOptions {
@@ -158,10 +159,9 @@ class AngularTable {
     std::vector<AngularPair> pairs;      // the entry's kept wide pairs in order
     std::vector<std::uint32_t> covered;  // the hidden faces of the pairs saturation drops
   };
-  // Sorts entry k and, given the occluding faces' depth forms, saturates it; returns the
-  // pairs kept at its front.
-  std::uint32_t sort_entry(int k, std::span<const DepthForm> forms, bool point_light,
-                           SortScratch& scratch);
+  // Sorts entry k and, given its saturation test, saturates it; returns the pairs kept at
+  // its front.
+  std::uint32_t sort_entry(int k, Saturation* saturation, SortScratch& scratch);
   // Keeps the first kept[k] pairs of every entry k, in \p storage; returns the storage they
   // were in.
   std::vector<AngularPair> compact(const std::vector<std::uint32_t>& kept,

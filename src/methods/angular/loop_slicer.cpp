@@ -183,23 +183,20 @@ void slice_ridge_edge(const SlicedMesh& m, const RidgeEdge& re, double lo, doubl
 
 }  // namespace
 
-ThetaSlice ThetaSlice::at(double theta, bool point_light, std::uint32_t entry) {
+ThetaSlice ThetaSlice::at(double theta, std::pair<double, double> sin_cos, bool point_light,
+                          std::uint32_t entry) {
   ThetaSlice s;
   s.entry = entry;
   s.point_light = point_light;
   if (point_light) {
-    s.side_y = s.rho_z = std::cos(theta);
-    s.side_z = s.rho_y = std::sin(theta);
+    s.side_z = s.rho_y = sin_cos.first;
+    s.side_y = s.rho_z = sin_cos.second;
   } else {
     s.side_0 = -theta;
     s.rho_0 = 1;
     s.rho_z = 0;
   }
   return s;
-}
-
-ThetaSlice theta_slice(const ThetaQuantization& q, bool point_light, int k) {
-  return ThetaSlice::at(q.centre(k), point_light, std::uint32_t(k));
 }
 
 void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const RidgeEdgeLoop& loop,

@@ -1,8 +1,10 @@
 #pragma once
 // Slicing RE loops at constant theta (discretized-shadow-volume paper, Sec. 7, steps
 // 1.3-1.6; RE-loops paper, Secs. 3.2-3.3).
+#include <cmath>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "angular_table.h"
@@ -21,7 +23,12 @@ struct ThetaSlice {
 
   /// The slice at \p theta: for a point light the half-plane through the light's X axis at
   /// angle theta (eq. 2), for a directional light the plane Y = theta.
-  static ThetaSlice at(double theta, bool point_light, std::uint32_t entry = 0);
+  static ThetaSlice at(double theta, bool point_light, std::uint32_t entry = 0) {
+    return at(theta, {std::sin(theta), std::cos(theta)}, point_light, entry);
+  }
+  /// The same, given theta's (sin, cos) (unused for a directional light).
+  static ThetaSlice at(double theta, std::pair<double, double> sin_cos, bool point_light,
+                       std::uint32_t entry);
   /// Signed distance-like value whose sign tells the side of the plane (shared by every
   /// edge test of the entry, so that neighbours agree on which edges the plane crosses).
   double side(Vec3 v) const { return v.y * side_y - v.z * side_z + side_0; }
@@ -54,9 +61,6 @@ struct SliceScratch {
   std::vector<Crossing> cuts;
   std::vector<WalkStep> path;
 };
-
-/// The slice of entry \p k.
-ThetaSlice theta_slice(const ThetaQuantization& q, bool point_light, int k);
 
 /// \brief One mesh, seen from the light, while its RE loops are sliced.
 struct SlicedMesh {
