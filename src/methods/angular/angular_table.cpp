@@ -1,5 +1,6 @@
 #include "angular_table.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
@@ -442,11 +443,15 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     forms[i] = DepthForm::of(table.hidden_[i].plane, frame.point_light());
   });
   tbb::enumerable_thread_specific<SortScratch> sort_scratch;
-  tbb::parallel_for(0, table.theta_.resolution, [&](int k) {
-    std::optional<Saturation> saturation;
-    if (!forms.empty()) saturation.emplace(forms, rays, k, frame.point_light());
-    kept[k] = table.sort_entry(k, saturation ? &*saturation : nullptr, sort_scratch.local());
-  });
+  tbb::parallel_for(tbb::blocked_range<int>(0, table.theta_.resolution),
+                    [&](const tbb::blocked_range<int>& entries) {
+                      SortScratch& local = sort_scratch.local();
+                      for (int k = entries.begin(); k < entries.end(); ++k) {
+                        std::optional<Saturation> saturation;
+                        if (!forms.empty()) saturation.emplace(forms, rays, k, frame.point_light());
+                        kept[k] = table.sort_entry(k, saturation ? &*saturation : nullptr, local);
+                      }
+                    });
   storage.unsorted = table.compact(kept, std::move(storage.kept));
   return table;
 }
