@@ -113,22 +113,23 @@ void ridge_thetas(const Mesh& mesh, const LightFrame& frame, ObjectLoops& o) {
   });
 }
 
+// The ridge edges chained into loops, and each loop's least phi, which orders the slicing.
+void chain_loops(const LightFrame& frame, ObjectLoops& o) {
+  o.loops = chain_ridge_edge_loops(o.ridges);
+  o.loop_phi.assign(o.loops.size(), kInf);
+  for (std::size_t l = 0; l < o.loops.size(); ++l) {
+    for (const std::uint32_t e : o.loops[l].edges) {
+      o.loop_phi[l] = std::min(o.loop_phi[l], frame.phi_local(o.local[o.ridges[e].from]));
+    }
+  }
+}
+
 // Sec. 7, steps 1.1-1.3: ridge edges, their loops (chained while eq. 2 is computed) and
 // their theta range.
 void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& frame,
                 ObjectLoops& o) {
   o.ridges = find_ridge_edges(mesh, sheets);
-  tbb::parallel_invoke(
-      [&] {
-        o.loops = chain_ridge_edge_loops(o.ridges);
-        o.loop_phi.assign(o.loops.size(), kInf);
-        for (std::size_t l = 0; l < o.loops.size(); ++l) {
-          for (const std::uint32_t e : o.loops[l].edges) {
-            o.loop_phi[l] = std::min(o.loop_phi[l], frame.phi_local(o.local[o.ridges[e].from]));
-          }
-        }
-      },
-      [&] { ridge_thetas(mesh, frame, o); });
+  tbb::parallel_invoke([&] { chain_loops(frame, o); }, [&] { ridge_thetas(mesh, frame, o); });
   for (const RidgeEdge& re : o.ridges) {
     double a = o.theta[re.from], b = o.theta[re.to];
     if (a > b) std::swap(a, b);
@@ -273,26 +274,6 @@ void copy_whole(const AngularPair& from, AngularPair& to) {
   std::memcpy(static_cast<void*>(&to), &from, sizeof(AngularPair));
 }
 
-// The occluding faces' corners in the light frame, in hidden-id order (objects, then their
-// occluding faces, as place_hidden_faces assigns the ids): start offsets and corners.
-std::pair<std::vector<std::uint32_t>, std::vector<Vec3>> hidden_corners(
-    const Scene& scene, const std::vector<ObjectLoops>& objects,
-    const std::vector<FarSheets>& sheets) {
-  std::vector<std::uint32_t> start{0};
-  std::vector<Vec3> corners;
-  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
-    const Mesh& mesh = scene.objects[o].mesh;
-    for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
-      if (!sheets[o].occludes(f)) continue;
-      for (std::uint32_t k = 0; k < mesh.face_size(f); ++k) {
-        corners.push_back(objects[o].local[mesh.face_vertex(f, k)]);
-      }
-      start.push_back(std::uint32_t(corners.size()));
-    }
-  }
-  return {std::move(start), std::move(corners)};
-}
-
 // The occluding faces in hidden-id order: their planes (the depth of Sec. 5) and corners.
 struct Occluders {
   std::vector<HiddenFace> hidden;
@@ -300,23 +281,44 @@ struct Occluders {
   std::vector<Vec3> corners;
 };
 
+// Object o's occluding faces' corners in the light frame, from hidden id \p id and corner
+// \p corner on (ids go by object, then by face, as place_hidden_faces assigns them).
+void place_corners(const Mesh& mesh, const FarSheets& sheets, const ObjectLoops& loops,
+                   std::uint32_t id, std::uint32_t corner, Occluders& out) {
+  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
+    if (!sheets.occludes(f)) continue;
+    for (std::uint32_t k = 0; k < mesh.face_size(f); ++k) {
+      out.corners[corner++] = loops.local[mesh.face_vertex(f, k)];
+    }
+    out.corner_start[++id] = corner;
+  }
+}
+
 // Also numbers each object's occluding faces, and marks their convexity and the axis faces.
 Occluders place_occluders(const Scene& scene, const std::vector<FarSheets>& sheets,
                           const LightFrame& frame, std::vector<ObjectLoops>& objects) {
-  std::vector<std::uint32_t> first_hidden(objects.size() + 1, 0);
+  // Per object, its first hidden id and first corner.
+  std::vector<std::uint32_t> first_hidden(objects.size() + 1, 0), first_corner = first_hidden;
   for (std::size_t o = 0; o < objects.size(); ++o) {
-    std::uint32_t n = 0;
-    for (std::uint32_t f = 0; f < scene.objects[o].mesh.face_count(); ++f) {
-      n += sheets[o].occludes(f);
+    const Mesh& mesh = scene.objects[o].mesh;
+    std::uint32_t faces = 0, corners = 0;
+    for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
+      if (!sheets[o].occludes(f)) continue;
+      ++faces;
+      corners += mesh.face_size(f);
     }
-    first_hidden[o + 1] = first_hidden[o] + n;
+    first_hidden[o + 1] = first_hidden[o] + faces;
+    first_corner[o + 1] = first_corner[o] + corners;
   }
   Occluders out;
   out.hidden.resize(first_hidden.back());
+  out.corner_start.assign(first_hidden.back() + 1, 0);
+  out.corners.resize(first_corner.back());
   tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
     place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], out.hidden);
+    place_corners(scene.objects[o].mesh, sheets[o], objects[o], first_hidden[o], first_corner[o],
+                  out);
   });
-  std::tie(out.corner_start, out.corners) = hidden_corners(scene, objects, sheets);
   return out;
 }
 

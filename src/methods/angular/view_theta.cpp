@@ -1,5 +1,8 @@
 #include "view_theta.h"
 
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -69,15 +72,20 @@ double scan_line_theta(const Scene& scene, const LightFrame& frame) {
   const ViewFrustum frustum = view_of(scene);
   const Camera& camera = scene.camera;
   const double row_step = camera.pixel_grid().step;  // one scan line at unit depth
-  std::vector<double> steps;
-  for (const SceneObject& object : scene.objects) {
-    for (const Vec3 p : object.mesh.vertices) {
+  // Per thread, in parallel over objects: the quartile does not depend on their order.
+  tbb::enumerable_thread_specific<std::vector<double>> thread_steps;
+  tbb::parallel_for(std::size_t(0), scene.objects.size(), [&](std::size_t o) {
+    std::vector<double>& steps = thread_steps.local();
+    for (const Vec3 p : scene.objects[o].mesh.vertices) {
       if (!frustum.holds(p)) continue;
       const Vec3 v = frame.local(p);
       const double rho = frame.point_light() ? std::hypot(v.y, v.z) : 1.0;
       if (rho > 0) steps.push_back(dot(p - camera.position, camera.forward()) * row_step / rho);
     }
-  }
+  });
+  std::vector<double> steps;
+  for (const std::vector<double>& some : thread_steps)
+    steps.insert(steps.end(), some.begin(), some.end());
   if (steps.empty()) return 0;
   const auto quartile = steps.begin() + steps.size() / 4;
   std::nth_element(steps.begin(), quartile, steps.end());
