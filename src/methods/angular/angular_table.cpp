@@ -26,8 +26,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // The RE loops are sliced in this many chunks, each a task with its own list of pairs:
 // enough for both cores to balance on small scenes too, few enough lists to merge.
 constexpr std::size_t kChunks = 16;
-// Per-object loops split no finer than this many vertices or faces.
-constexpr std::size_t kGrain = 512;
 
 // One object's RE loops in the light's frame.
 struct ObjectLoops {
@@ -68,7 +66,7 @@ void place_vertices(const Scene& scene, const LightFrame& frame,
   tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
     const Mesh& mesh = scene.objects[o].mesh;
     objects[o].local.resize(mesh.vertices.size());
-    parallel_each(mesh.vertices.size(), kGrain,
+    parallel_each(mesh.vertices.size(),
                   [&](std::size_t v) { objects[o].local[v] = frame.local(mesh.vertices[v]); });
   });
 }
@@ -86,7 +84,7 @@ void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& shee
   }
   std::vector<char> pierced(frame.point_light() ? mesh.face_count() : 0, 0);
   loops.convex.assign(mesh.face_count(), 0);
-  parallel_each(std::uint32_t(mesh.face_count()), std::uint32_t(kGrain), [&](std::uint32_t f) {
+  parallel_each(std::uint32_t(mesh.face_count()), [&](std::uint32_t f) {
     if (!sheets.occludes(f)) return;
     const std::uint32_t face = object.first_face + f;
     hidden[loops.hidden_id[f]] = {frame.plane(scene.face_plane(face)), double(sheets.side[f]),
@@ -106,7 +104,7 @@ void ridge_thetas(const Mesh& mesh, const LightFrame& frame, ObjectLoops& o) {
   std::vector<char> on_ridge(mesh.vertices.size(), 0);
   for (const RidgeEdge& re : o.ridges) on_ridge[re.from] = on_ridge[re.to] = 1;
   o.theta.assign(mesh.vertices.size(), 0);
-  parallel_each(o.theta.size(), kGrain, [&](std::size_t v) {
+  parallel_each(o.theta.size(), [&](std::size_t v) {
     if (!on_ridge[v]) return;
     const Vec3 p = o.local[v];
     o.theta[v] = frame.point_light() ? std::atan2(p.y, p.z) : p.y;

@@ -5,12 +5,13 @@
 
 namespace shadowkit {
 
-/// Calls \p body(i) for every i in [0, \p n), split into blocks of at least \p grain
-/// indices: the per-object loops of a scene of thousands of small objects run inline in the
-/// task of their object instead of spawning tasks of a few faces each.
+/// Calls \p body(i) for every i in [0, \p n), split into blocks of at least 512 indices:
+/// the per-object loops of a scene of thousands of small objects run inline in the task of
+/// their object instead of spawning tasks of a few faces each.
 template <class Index, class Body>
-void parallel_each(Index n, Index grain, const Body& body) {
-  tbb::parallel_for(tbb::blocked_range<Index>(Index(0), n, grain),
+void parallel_each(Index n, const Body& body) {
+  constexpr Index kGrain = 512;
+  tbb::parallel_for(tbb::blocked_range<Index>(Index(0), n, kGrain),
                     [&](const tbb::blocked_range<Index>& r) {
                       for (Index i = r.begin(); i != r.end(); ++i) body(i);
                     });

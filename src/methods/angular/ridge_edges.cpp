@@ -61,7 +61,7 @@ bool one_solid(const Mesh& mesh) {
 std::vector<RidgeEdge> find_ridge_edges(const Mesh& mesh, const FarSheets& sheets) {
   // Per face corner: its edge bounds the face's far sheet (in parallel over faces).
   std::vector<char> bounding(mesh.corner_edge.size(), 0);
-  parallel_each(std::uint32_t(mesh.face_count()), std::uint32_t(512), [&](std::uint32_t f) {
+  parallel_each(std::uint32_t(mesh.face_count()), [&](std::uint32_t f) {
     if (!sheets.occludes(f)) return;
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
       bounding[c] = sheet_neighbour(mesh, sheets, f, mesh.corner_edge[c]) < 0;

@@ -84,8 +84,9 @@ double scan_line_theta(const Scene& scene, const LightFrame& frame) {
     }
   });
   std::vector<double> steps;
-  for (const std::vector<double>& some : thread_steps)
+  for (const std::vector<double>& some : thread_steps) {
     steps.insert(steps.end(), some.begin(), some.end());
+  }
   if (steps.empty()) return 0;
   const auto quartile = steps.begin() + steps.size() / 4;
   std::nth_element(steps.begin(), quartile, steps.end());
