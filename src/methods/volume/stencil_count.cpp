@@ -335,6 +335,61 @@ void order_from_light(std::vector<ScreenPolygon>& items, const std::vector<Shado
   });
 }
 
+// One tile's counting: its binned items, which come grouped by sub-object, one sub-object
+// at a time.
+struct TilePass {
+  const std::vector<ShadowPolygon>& polygons;
+  const std::vector<ShadowFrustum>& frusta;
+  const std::vector<char>& cullable;
+  const ConvexVolumes& volumes;
+  const TileCounter& counter;
+  std::span<const ScreenPolygon> screen;  ///< per shadow polygon
+  std::span<const ScreenPolygon> items;   ///< what was binned
+
+  // Counts the items \p binned (indices into items) over tile t; adds the pixels tested one
+  // by one to \p fill and the sub-objects Crow's receiver test culls to \p culled.
+  void count(std::span<const std::uint32_t> binned, CountingTile& t, std::size_t& fill,
+             std::size_t& culled) const {
+    thread_local std::vector<const ScreenPolygon*> group;
+    for (std::size_t b = 0, end; b < binned.size(); b = end) {
+      const std::uint32_t k = polygons[items[binned[b]].face].sub_object;
+      group.clear();
+      for (end = b; end < binned.size(); ++end) {
+        const ScreenPolygon& s = items[binned[end]];
+        if (polygons[s.face].sub_object != k) break;
+        group.push_back(&s);
+      }
+      if (cullable[k] && frusta[k].misses(t.receivers)) {
+        ++culled;
+        continue;
+      }
+      fill += count_sub_object(k, group, t);
+    }
+  }
+
+ private:
+  // Sub-object k's items \p group over tile t, with Crow's receiver test once for the tile,
+  // then per cell; returns the pixels tested one by one.
+  std::size_t count_sub_object(std::uint32_t k, std::vector<const ScreenPolygon*>& group,
+                               CountingTile& t) const {
+    ReceiverTest receivers(frusta[k], cullable[k], t);
+    // A tile showing the sub-object itself counts its polygons: where the raster gives one
+    // of its faces a pixel just past an edge, the point on the face's plane may lie in its
+    // own volume, which its polygons, with their edge faces, place as the exact test does.
+    const ConvexVolume* volume = volumes.of(k);
+    if (volume && !t.shows(k))
+      return counter.count_volume(*volume, volumes.outline(k), group, receivers, t);
+    if (volumes.binned_by_hull(k)) {  // one item for all its polygons
+      group.clear();
+      const auto [first, last] = volumes.screen_polygons(k);
+      for (std::uint32_t i = first; i < last; ++i) group.push_back(&screen[i]);
+    }
+    std::size_t tested = 0;
+    for (const ScreenPolygon* s : group) tested += counter.count_polygon(*s, receivers, t);
+    return tested;
+  }
+};
+
 }  // namespace
 
 StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, int eye_count,
@@ -367,6 +422,7 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   const PolygonBins bins(items, view.width, view.height);
   std::atomic<std::size_t> fill = 0, negative = 0, culled = 0, shadowed = 0;
 
+  const TilePass pass{polygons, frusta, cullable, volumes, counter, screen, items};
   // One task per tile: the cost is in the tiles of the cube cluster, a few contiguous rows,
   // and larger chunks left one core with the last of them in some runs (shade time 26-29 ms
   // or 34-35 ms on `cubes:2000` run to run).
@@ -382,37 +438,8 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
         }
         if (!t.load(frame, x0, y0, w, h)) return;
         std::size_t tile_fill = 0, tile_culled = 0;
-        thread_local std::vector<const ScreenPolygon*> group;
-        for (std::uint32_t b = bins.start[tile], end; b < bins.start[tile + 1]; b = end) {
-          // Polygons come grouped by sub-object: Crow's receiver test once per sub-object and
-          // tile, then per cell.
-          const std::uint32_t k = polygons[items[bins.items[b]].face].sub_object;
-          group.clear();
-          for (end = b; end < bins.start[tile + 1]; ++end) {
-            const ScreenPolygon& s = items[bins.items[end]];
-            if (polygons[s.face].sub_object != k) break;
-            group.push_back(&s);
-          }
-          if (cullable[k] && frusta[k].misses(t.receivers)) {
-            ++tile_culled;
-            continue;
-          }
-          ReceiverTest receivers(frusta[k], cullable[k], t);
-          // A tile showing the sub-object itself counts its polygons: where the raster gives one
-          // of its faces a pixel just past an edge, the point on the face's plane may lie in its
-          // own volume, which its polygons, with their edge faces, place as the exact test does.
-          const ConvexVolume* volume = volumes.of(k);
-          if (volume && !t.shows(k)) {
-            tile_fill += counter.count_volume(*volume, volumes.outline(k), group, receivers, t);
-            continue;
-          }
-          if (volumes.binned_by_hull(k)) {  // one item for all its polygons
-            group.clear();
-            const auto [first, last] = volumes.screen_polygons(k);
-            for (std::uint32_t i = first; i < last; ++i) group.push_back(&screen[i]);
-          }
-          for (const ScreenPolygon* s : group) tile_fill += counter.count_polygon(*s, receivers, t);
-        }
+        pass.count({bins.items.data() + bins.start[tile], bins.items.data() + bins.start[tile + 1]},
+                   t, tile_fill, tile_culled);
         fill += tile_fill;
         culled += tile_culled;
         shadowed += std::size_t(std::popcount(t.shadowed));
