@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -264,14 +263,6 @@ class Saturation {
 
 namespace {
 
-// Copies all 32 bytes of a pair, padding included: a copy of its 28 bytes of fields reads
-// the last 16 at offset 12, across the two 16-byte stores that wrote a pair just before,
-// which the store buffer cannot forward (a stall per pair in the insertion sort).
-void copy_whole(const AngularPair& from, AngularPair& to) {
-  static_assert(sizeof(AngularPair) == 32);
-  std::memcpy(static_cast<void*>(&to), &from, sizeof(AngularPair));
-}
-
 // The occluding faces in hidden-id order: their planes (the depth of Sec. 5) and corners.
 struct Occluders {
   std::vector<HiddenFace> hidden;
@@ -485,33 +476,20 @@ void AngularTable::fill_entries(std::span<const std::vector<EntryPair>> lists) {
 std::uint32_t AngularTable::sort_entry(int k, Saturation* saturation, SortScratch& scratch) {
   const std::span<AngularPair> entry(pairs_.data() + start_[k], pairs_.data() + start_[k + 1]);
   if (entry.empty()) return 0;
-  // Step 1.7: sort by phi_begin. The pairs arrive nearly sorted (loops in order of phi), so
-  // an insertion sort.
-  const auto before = [](const AngularPair& a, const AngularPair& b) {
-    return a.phi_begin < b.phi_begin;  // stable: ties keep the lists' fixed order
-  };
-  double extent_end = entry.front().phi_end;
-  for (auto it = entry.begin() + 1; it < entry.end(); ++it) {
-    AngularPair pair;
-    copy_whole(*it, pair);
-    extent_end = std::max(extent_end, pair.phi_end);
-    auto hole = it;
-    for (; hole != entry.begin() && before(pair, *(hole - 1)); --hole) {
-      copy_whole(*(hole - 1), *hole);
-    }
-    copy_whole(pair, *hole);
-  }
+  const std::span<const AngularPair> sorted = scratch.sort(entry);  // step 1.7
+  double extent_end = -kInf;
+  for (const AngularPair& pair : sorted) extent_end = std::max(extent_end, pair.phi_end);
   // Sec. 10 drops only pairs within a kept one, and never the first: the kept pairs have the
-  // same extent. Wide pairs go first, so that the reach of the narrow ones skips well; the
-  // narrow ones move down in place past the dropped and the wide.
-  const double wide = (extent_end - entry.front().phi_begin) / 16;
+  // same extent. Wide pairs go first, so that the reach of the narrow ones skips well: the
+  // narrow ones are written from the entry's start, then moved past the wide.
+  const double wide = (extent_end - sorted.front().phi_begin) / 16;
   std::vector<AngularPair>& wide_pairs = scratch.pairs;
   std::vector<std::uint32_t>& covered = scratch.covered;
   wide_pairs.clear();
   covered.clear();
   std::size_t narrow = 0;
   double reach = -kInf;
-  for (const AngularPair& pair : entry) {
+  for (const AngularPair& pair : sorted) {
     if (saturation && saturation->covers(pair)) {
       covered.push_back(pair.hidden);
       continue;

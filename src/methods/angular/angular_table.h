@@ -7,20 +7,13 @@
 #include <utility>
 #include <vector>
 
+#include "angular_pair.h"
 #include "light_frame.h"
+#include "phi_begin_sort.h"
 #include "ridge_edges.h"
 #include "shadowkit/core/context.h"
 
 namespace shadowkit {
-
-/// \brief Two (phi, r) points of one table entry where shadow begins and ends (Sec. 3). With
-/// hidden edges inserted in duplicate (Sec. 5) every pair is the cut of one hidden face by
-/// the entry's constant-theta plane, so its depth at any phi inside it is that face's plane.
-struct AngularPair {
-  double phi_begin = 0, phi_end = 0;
-  double reach = 0;          ///< the largest phi_end of this and the earlier pairs of its entry
-  std::uint32_t hidden = 0;  ///< index into AngularTable::hidden()
-};
 
 /// \brief An occluding face in light-frame coordinates: the depth of its pairs (Sec. 5).
 struct HiddenFace {
@@ -156,6 +149,7 @@ class AngularTable {
  private:
   void fill_entries(std::span<const std::vector<EntryPair>> lists);
   struct SortScratch {
+    PhiBeginSort sort;
     std::vector<AngularPair> pairs;      // the entry's kept wide pairs in order
     std::vector<std::uint32_t> covered;  // the hidden faces of the pairs saturation drops
   };
