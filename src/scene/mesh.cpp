@@ -120,6 +120,18 @@ Plane plane_of(std::span<const Vec3> p, std::span<const std::uint32_t> loop, Vec
   return {n, -dot(n, centroid)};
 }
 
+// The polygon turns the same way about \p normal at every corner.
+bool turns_one_way(std::span<const Vec3> positions, std::span<const std::uint32_t> loop,
+                   Vec3 normal) {
+  const std::size_t n = loop.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec3 a = positions[loop[k]], b = positions[loop[(k + 1) % n]];
+    const Vec3 c = positions[loop[(k + 2) % n]];
+    if (dot(cross(b - a, c - b), normal) < 0) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 PolygonSoup welded_soup(const PolygonSoup& soup) {
@@ -165,6 +177,7 @@ Mesh Mesh::build(const PolygonSoup& soup, const std::string& name, const Context
     mesh.face_start.push_back(std::uint32_t(mesh.face_vertices.size()));
     mesh.planes.push_back(plane);
     mesh.areas.push_back(area);
+    mesh.convex.push_back(turns_one_way(mesh.vertices, loop, plane.normal));
   };
   for (std::size_t f = 0; f < soup.face_count(); ++f) {
     std::vector<std::uint32_t> loop;

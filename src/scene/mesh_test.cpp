@@ -150,6 +150,16 @@ TEST(Mesh, NonConvexPolygonKeepsItsShape) {
   ASSERT_EQ(m.face_count(), 1u);
   EXPECT_EQ(m.face_size(0), 6u);
   EXPECT_DOUBLE_EQ(m.areas[0], 3.0);
+  EXPECT_EQ(m.convex, std::vector<char>{0});
+}
+
+TEST(Mesh, ConvexFacesAreMarkedWhicheverWayTheyTurn) {
+  EXPECT_EQ(Mesh::build(box({0, 0, 0}, {1, 2, 3}), "box", {}).convex, std::vector<char>(6, 1));
+  // A pentagon with a straight corner, and the same walked the other way.
+  const PolygonSoup pentagon = polygon({{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}});
+  EXPECT_EQ(Mesh::build(pentagon, "pentagon", {}).convex, std::vector<char>{1});
+  const PolygonSoup reversed = polygon({{0, 1, 0}, {2, 1, 0}, {2, 0, 0}, {1, 0, 0}, {0, 0, 0}});
+  EXPECT_EQ(Mesh::build(reversed, "reversed", {}).convex, std::vector<char>{1});
 }
 
 }  // namespace

@@ -59,6 +59,9 @@ class Mesh {
   std::vector<std::uint32_t> face_vertices;
   std::vector<Plane> planes;  ///< per face; normal follows the vertex order
   std::vector<double> areas;  ///< per face
+  /// Per face: 1 when it turns the same way about its normal at every corner, so that a
+  /// plane cuts it in one segment at most.
+  std::vector<char> convex;
 
   std::vector<MeshEdge> edges;
   std::vector<EdgeUse> edge_uses;

@@ -34,7 +34,6 @@ struct ObjectLoops {
   std::vector<RidgeEdgeLoop> loops;
   std::vector<double> loop_phi;           // per loop, the least phi of its vertices
   std::vector<std::uint32_t> hidden_id;   // per face, into AngularTable::hidden_
-  std::vector<char> convex;               // per occluding face
   std::vector<std::uint32_t> axis_faces;  // occluding faces the light's X axis pierces at X < 0
   double theta_lo = kInf, theta_hi = -theta_lo;
   bool wraps = false;  // an RE passes behind the light's back (theta = +-pi)
@@ -46,18 +45,6 @@ struct LoopWork {
   double phi = 0;
   std::uint32_t object = 0, loop = 0;
 };
-
-// Face \p f turns the same way at every corner about its normal.
-bool convex_face(const Mesh& mesh, std::uint32_t f) {
-  const std::uint32_t n = mesh.face_size(f);
-  for (std::uint32_t k = 0; k < n; ++k) {
-    const Vec3 a = mesh.vertices[mesh.face_vertex(f, k)];
-    const Vec3 b = mesh.vertices[mesh.face_vertex(f, (k + 1) % n)];
-    const Vec3 c = mesh.vertices[mesh.face_vertex(f, (k + 2) % n)];
-    if (dot(cross(b - a, c - b), mesh.planes[f].normal) < 0) return false;
-  }
-  return true;
-}
 
 // Every object's vertices in the light's frame, in parallel.
 void place_vertices(const Scene& scene, const LightFrame& frame,
@@ -82,15 +69,13 @@ void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& shee
     if (sheets.occludes(f)) loops.hidden_id[f] = first++;
   }
   std::vector<char> pierced(frame.point_light() ? mesh.face_count() : 0, 0);
-  loops.convex.assign(mesh.face_count(), 0);
   parallel_each(std::uint32_t(mesh.face_count()), [&](std::uint32_t f) {
     if (!sheets.occludes(f)) return;
     const std::uint32_t face = object.first_face + f;
     hidden[loops.hidden_id[f]] = {frame.plane(scene.face_plane(face)), double(sheets.side[f]),
                                   face};
     if (pierced.empty()) return;
-    loops.convex[f] = convex_face(mesh, f);
-    const SlicedMesh m{mesh, sheets, loops.local, {}, loops.convex, loops.hidden_id};
+    const SlicedMesh m{mesh, sheets, loops.local, {}, loops.hidden_id};
     pierced[f] = axis_piercing(m, f) < 0;
   });
   for (std::uint32_t f = 0; f < pierced.size(); ++f) {
@@ -283,7 +268,7 @@ void place_corners(const Mesh& mesh, const FarSheets& sheets, const ObjectLoops&
   }
 }
 
-// Also numbers each object's occluding faces, and marks their convexity and the axis faces.
+// Also numbers each object's occluding faces and marks the axis faces.
 Occluders place_occluders(const Scene& scene, const std::vector<FarSheets>& sheets,
                           const LightFrame& frame, std::vector<ObjectLoops>& objects) {
   // Per object, its first hidden id and first corner.
@@ -415,8 +400,8 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     for (std::size_t i = c * per_chunk; i < std::min(work.size(), (c + 1) * per_chunk); ++i) {
       const std::uint32_t o = work[i].object, l = work[i].loop;
       const ObjectLoops& loops = objects[o];
-      const SlicedMesh m{scene.objects[o].mesh, sheets[o],    loops.local,
-                         loops.theta,           loops.convex, loops.hidden_id};
+      const SlicedMesh m{scene.objects[o].mesh, sheets[o], loops.local, loops.theta,
+                         loops.hidden_id};
       if (l < loops.loops.size()) {
         slice_loop(m, loops.ridges, loops.loops[l], table.theta_, slices, local, lists[c]);
       } else {

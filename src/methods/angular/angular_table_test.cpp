@@ -233,8 +233,7 @@ TEST(Pairing, EqualAdjacentPeaksPairWithEachOther) {
   ASSERT_EQ(frame.local({-1, 2, -1}).y, peak_theta);  // equal adjacent peaks, exactly
   ASSERT_EQ(frame.local({1, 2, -1}).y, peak_theta);
   const ThetaQuantization one_entry{-1e3, 2e3, 1, false};
-  const std::vector<char> convex(mesh.face_count(), 0);  // the U's front and back are not
-  const SlicedMesh sliced{mesh, sheets, local, theta, convex, hidden_id};
+  const SlicedMesh sliced{mesh, sheets, local, theta, hidden_id};
   SliceScratch scratch;
   std::vector<EntryPair> out;
   slice_loop(sliced, ridges, loops[0], one_entry, {&peak, 1}, scratch, out);

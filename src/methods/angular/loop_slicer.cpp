@@ -122,7 +122,7 @@ void emit(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, double a, d
 // \p next is that crossing.
 bool along_path(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f,
                 const std::vector<WalkStep>& path, std::size_t step, Crossing& next) {
-  if (step >= path.size() || path[step].face != f || !m.convex[f]) return false;
+  if (step >= path.size() || path[step].face != f || !m.mesh.convex[f]) return false;
   const std::uint32_t exit = path[step].exit;
   const EdgeSides edge(m, s, m.mesh.edges[exit]);
   if (!edge.crossed()) return false;

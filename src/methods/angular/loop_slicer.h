@@ -68,7 +68,6 @@ struct SlicedMesh {
   const FarSheets& sheets;
   std::span<const Vec3> local;               ///< light-frame vertices
   std::span<const double> theta;             ///< per vertex on an RE: its theta (eq. 2)
-  std::span<const char> convex;              ///< per face: convex, so a slice cuts it once
   std::span<const std::uint32_t> hidden_id;  ///< per face: its AngularTable::hidden() index
 };
 
