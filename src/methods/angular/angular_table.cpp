@@ -57,6 +57,14 @@ void place_vertices(const Scene& scene, const LightFrame& frame,
   });
 }
 
+// Some vertices lie on each side of the light's X axis in Y and in F, and some at X <= 0: a
+// point light's axis may then pierce a face at X < 0 (Sec. 11.2), which is rare.
+bool straddles_negative_axis(std::span<const Vec3> local) {
+  Vec3 lo{kInf, kInf, kInf}, hi = -lo;
+  for (const Vec3& v : local) lo = min(lo, v), hi = max(hi, v);
+  return lo.x <= 0 && lo.y <= 0 && hi.y >= 0 && lo.z <= 0 && hi.z >= 0;
+}
+
 // The occluding faces' planes (the depth of Sec. 5) from \p first on, in parallel over one
 // object's faces.
 void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& sheets,
@@ -68,7 +76,8 @@ void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& shee
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
     if (sheets.occludes(f)) loops.hidden_id[f] = first++;
   }
-  std::vector<char> pierced(frame.point_light() ? mesh.face_count() : 0, 0);
+  const bool may_pierce = frame.point_light() && straddles_negative_axis(loops.local);
+  std::vector<char> pierced(may_pierce ? mesh.face_count() : 0, 0);
   parallel_each(std::uint32_t(mesh.face_count()), [&](std::uint32_t f) {
     if (!sheets.occludes(f)) return;
     const std::uint32_t face = object.first_face + f;
