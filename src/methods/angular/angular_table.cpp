@@ -115,12 +115,17 @@ void chain_loops(const LightFrame& frame, ObjectLoops& o) {
   }
 }
 
-// Sec. 7, steps 1.1-1.3: ridge edges, their loops (chained while eq. 2 is computed) and
-// their theta range.
+// Sec. 7, steps 1.1-1.3: ridge edges, their loops (on a large object chained while eq. 2 is
+// computed) and their theta range.
 void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& frame,
                 ObjectLoops& o) {
   o.ridges = find_ridge_edges(mesh, sheets);
-  tbb::parallel_invoke([&] { chain_loops(frame, o); }, [&] { ridge_thetas(mesh, frame, o); });
+  if (o.ridges.size() <= kParallelGrain) {
+    chain_loops(frame, o);
+    ridge_thetas(mesh, frame, o);
+  } else {
+    tbb::parallel_invoke([&] { chain_loops(frame, o); }, [&] { ridge_thetas(mesh, frame, o); });
+  }
   for (const RidgeEdge& re : o.ridges) {
     double a = o.theta[re.from], b = o.theta[re.to];
     if (a > b) std::swap(a, b);
