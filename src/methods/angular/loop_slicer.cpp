@@ -135,9 +135,10 @@ bool along_path(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f,
 // duplicate), until the RE crossing where the shadow ends. While the walk crosses the convex
 // faces of the previous entry's walk from the same start, their exit edges still cross the
 // slice and are the only other crossings: they are taken from \p scratch's path.
-void walk(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, Crossing at,
+void walk(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, const Crossing& start,
           SliceScratch& scratch, std::vector<EntryPair>& out) {
   std::vector<WalkStep>& path = scratch.path;
+  Crossing at = start;
   for (std::size_t step = 0; step < m.mesh.face_count(); ++step) {
     Crossing next;
     if (!along_path(m, s, f, path, step, next)) {
