@@ -315,7 +315,7 @@ Occluders place_occluders(const Scene& scene, const std::vector<FarSheets>& shee
 std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow_from(
     int k, double phi) const {
   if (k < 0) return {};
-  const std::span<const AngularPair> narrow = entry(k).subspan(wide_[k]);
+  const std::span<const AngularPair> narrow = this->narrow(k);
   const auto first = std::partition_point(narrow.begin(), narrow.end(),
                                           [phi](const AngularPair& p) { return p.reach < phi; });
   const std::size_t skipped = std::size_t(first - narrow.begin());
@@ -479,8 +479,8 @@ std::uint32_t AngularTable::sort_entry(int k, Saturation* saturation, SortScratc
   double extent_end = -kInf;
   for (const AngularPair& pair : sorted) extent_end = std::max(extent_end, pair.phi_end);
   // Sec. 10 drops only pairs within a kept one, and never the first: the kept pairs have the
-  // same extent. Wide pairs go first, so that the reach of the narrow ones skips well: the
-  // narrow ones are written from the entry's start, then moved past the wide.
+  // same extent. The wide pairs go after the narrow ones, out of their reach, which then
+  // skips well.
   const double wide = (extent_end - sorted.front().phi_begin) / 16;
   std::vector<AngularPair>& wide_pairs = scratch.pairs;
   std::vector<std::uint32_t>& covered = scratch.covered;
@@ -501,9 +501,7 @@ std::uint32_t AngularTable::sort_entry(int k, Saturation* saturation, SortScratc
     entry[narrow] = pair;
     entry[narrow++].reach = reach = std::max(reach, pair.phi_end);
   }
-  std::copy_backward(entry.begin(), entry.begin() + narrow,
-                     entry.begin() + narrow + wide_pairs.size());
-  std::copy(wide_pairs.begin(), wide_pairs.end(), entry.begin());
+  std::copy(wide_pairs.begin(), wide_pairs.end(), entry.begin() + narrow);
   wide_[k] = std::uint32_t(wide_pairs.size());
   // The covered pairs' faces go in the slots after the kept pairs, for compact.
   const std::size_t kept = narrow + wide_pairs.size();

@@ -101,7 +101,11 @@ class AngularTable {
   /// The wide pairs of entry \p k (none for k = -1, outside the table), longer than a
   /// sixteenth of the entry's extent (such as a ground plane's): scanned whole by every query.
   std::span<const AngularPair> wide(int k) const {
-    return k < 0 ? std::span<const AngularPair>{} : entry(k).first(wide_[k]);
+    return k < 0 ? std::span<const AngularPair>{} : entry(k).last(wide_[k]);
+  }
+  /// The other pairs of entry \p k, sorted by phi_begin.
+  std::span<const AngularPair> narrow(int k) const {
+    return k < 0 ? std::span<const AngularPair>{} : entry(k).first(entry(k).size() - wide_[k]);
   }
   /// The narrow pairs of entry \p k, sorted by phi_begin, from the first whose reach gets to
   /// \p phi: the ones before it all end before phi (a binary search instead of the paper's
@@ -163,7 +167,7 @@ class AngularTable {
 
   ThetaQuantization theta_;
   std::vector<std::uint32_t> start_;  ///< R + 1 offsets into pairs_
-  std::vector<std::uint32_t> wide_;   ///< per entry: its first wide_[k] pairs are wide
+  std::vector<std::uint32_t> wide_;   ///< per entry: its last wide_[k] pairs are wide
   std::vector<AngularPair> pairs_;
   std::vector<HiddenFace> hidden_;
   std::vector<std::uint32_t> corner_start_;   ///< per hidden face, into corners_

@@ -380,7 +380,7 @@ TEST(AngularTable, TheTableDoesNotDependOnTheNumberOfThreads) {
   expect_same_table(one, two);
   for (int k = 0; k < one.theta().resolution; ++k) {
     // Step 1.7: the narrow pairs sorted by phi_begin, each reach the running maximum end.
-    const auto narrow = one.entry(k).subspan(one.wide(k).size());
+    const auto narrow = one.narrow(k);
     for (std::size_t i = 1; i < narrow.size(); ++i) {
       EXPECT_LE(narrow[i - 1].phi_begin, narrow[i].phi_begin);
       EXPECT_EQ(narrow[i].reach, std::max(narrow[i - 1].reach, narrow[i].phi_end));
