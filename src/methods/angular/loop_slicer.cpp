@@ -16,8 +16,9 @@ struct EdgeSides {
   Vec3 a, b;
   double ga = 0, gb = 0;
 
+  EdgeSides(Vec3 v0, Vec3 v1, const ThetaSlice& s) : a(v0), b(v1), ga(s.side(a)), gb(s.side(b)) {}
   EdgeSides(const SlicedMesh& m, const ThetaSlice& s, const MeshEdge& edge)
-      : a(m.local[edge.v0]), b(m.local[edge.v1]), ga(s.side(a)), gb(s.side(b)) {}
+      : EdgeSides(m.local[edge.v0], m.local[edge.v1], s) {}
   bool crossed() const { return (ga >= 0) != (gb >= 0); }
   // Computed from the edge's lower vertex id, so that both faces of an edge get the same
   // bits and neighbouring pairs meet without a crack.
@@ -155,6 +156,52 @@ void walk(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, const Cross
   }
 }
 
+// The walks from \p re at entries \p k, k + 1, ... up to \p last that repeat the path of
+// the walk before them step for step: each of its faces convex and left by the same edge,
+// no step clipped at the light's axis, and the last one ending on an RE. Their pairs are
+// those walk would give, from the path's edges loaded once for the run. Returns the first
+// entry not done, which slice_ridge_edge takes over.
+int repeat_walk(const SlicedMesh& m, const RidgeEdge& re, int k, int last,
+                const ThetaQuantization& q, std::span<const ThetaSlice> slices,
+                SliceScratch& scratch, std::vector<EntryPair>& out) {
+  const std::vector<WalkStep>& path = scratch.path;
+  if (path.empty() || path.back().beyond >= 0) return k;
+  std::vector<PathEdge>& edges = scratch.path_edges;
+  edges.clear();
+  for (const WalkStep& step : path) {
+    if (!m.mesh.convex[step.face]) return k;
+    const MeshEdge& exit = m.mesh.edges[step.exit];
+    edges.push_back({m.local[exit.v0], m.local[exit.v1], step.exit, m.hidden_id[step.face]});
+  }
+  const MeshEdge& edge = m.mesh.edges[re.edge];
+  const Vec3 a = m.local[edge.v0], b = m.local[edge.v1];
+  const bool from_v0 = re.from == edge.v0;
+  std::vector<double>& phi = scratch.phi;
+  phi.resize(edges.size() + 1);
+  for (; k <= last; ++k) {
+    const int entry = q.entry(k);
+    if (entry < 0) return k;
+    const ThetaSlice& s = slices[entry];
+    const EdgeSides start(a, b, s);
+    if (!((from_v0 ? start.ga : start.gb) < 0 && start.crossed())) return k;
+    const Crossing at = start.crossing(s, re.edge);
+    if (at.rho <= 0) return k;
+    phi[0] = at.phi;
+    for (std::size_t j = 0; j < edges.size(); ++j) {
+      const EdgeSides exit(edges[j].a, edges[j].b, s);
+      if (!exit.crossed()) return k;
+      const Crossing next = exit.crossing(s, edges[j].edge);
+      if (next.rho < 0) return k;  // clipped at the axis
+      phi[j + 1] = next.phi;
+    }
+    for (std::size_t j = 0; j < edges.size(); ++j) {
+      out.push_back(
+          {s.entry, edges[j].hidden, std::min(phi[j], phi[j + 1]), std::max(phi[j], phi[j + 1])});
+    }
+  }
+  return k;
+}
+
 // Slices ridge edge \p re over the entries whose centre its unwrapped theta interval
 // [lo, hi] may hold.
 void slice_ridge_edge(const SlicedMesh& m, const RidgeEdge& re, double lo, double hi,
@@ -179,6 +226,7 @@ void slice_ridge_edge(const SlicedMesh& m, const RidgeEdge& re, double lo, doubl
     const Crossing at = sides.crossing(s, re.edge);
     if (at.rho <= 0) continue;  // in the half-plane at theta + pi: another entry's
     walk(m, s, re.face, at, scratch, out);
+    k = repeat_walk(m, re, k + 1, k1, q, slices, scratch, out) - 1;
   }
 }
 

@@ -55,11 +55,19 @@ struct WalkStep {
   std::int64_t beyond = -1;
 };
 
+/// \brief A walk step's exit edge, its ends in the light frame, and the hidden face it leaves.
+struct PathEdge {
+  Vec3 a, b;
+  std::uint32_t edge = 0, hidden = 0;
+};
+
 /// \brief Reused buffers of one thread's slicing: a face's cut, and the last walk from the RE
 /// being sliced (consecutive entries mostly cross the same faces by the same edges).
 struct SliceScratch {
   std::vector<Crossing> cuts;
   std::vector<WalkStep> path;
+  std::vector<PathEdge> path_edges;  ///< the path's exits, loaded once to repeat it
+  std::vector<double> phi;           ///< a repeated walk's crossings
 };
 
 /// \brief One mesh, seen from the light, while its RE loops are sliced.
