@@ -39,6 +39,17 @@ Crossing edge_crossing(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t e
   return EdgeSides(m, s, m.mesh.edges[e]).crossing(s, e);
 }
 
+// Where ridge edge \p re, whose ends \p sides holds, goes up through slice \p s into the
+// half-plane at its theta: a walk's start. False when it does not (the half-plane at
+// theta + pi is another entry's).
+bool walk_start(const RidgeEdge& re, const MeshEdge& edge, const EdgeSides& sides,
+                const ThetaSlice& s, Crossing& at) {
+  const bool from_below = (re.from == edge.v0 ? sides.ga : sides.gb) < 0;
+  if (!(from_below && sides.crossed())) return false;
+  at = sides.crossing(s, re.edge);
+  return at.rho > 0;
+}
+
 // The crossings of face f's edges by the slice, ordered along the cut line.
 void face_cuts(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f,
                std::vector<Crossing>& cuts) {
@@ -175,17 +186,14 @@ int repeat_walk(const SlicedMesh& m, const RidgeEdge& re, int k, int last,
   }
   const MeshEdge& edge = m.mesh.edges[re.edge];
   const Vec3 a = m.local[edge.v0], b = m.local[edge.v1];
-  const bool from_v0 = re.from == edge.v0;
   std::vector<double>& phi = scratch.phi;
   phi.resize(edges.size() + 1);
   for (; k <= last; ++k) {
     const int entry = q.entry(k);
     if (entry < 0) return k;
     const ThetaSlice& s = slices[entry];
-    const EdgeSides start(a, b, s);
-    if (!((from_v0 ? start.ga : start.gb) < 0 && start.crossed())) return k;
-    const Crossing at = start.crossing(s, re.edge);
-    if (at.rho <= 0) return k;
+    Crossing at;
+    if (!walk_start(re, edge, EdgeSides(a, b, s), s, at)) return k;
     phi[0] = at.phi;
     for (std::size_t j = 0; j < edges.size(); ++j) {
       const EdgeSides exit(edges[j].a, edges[j].b, s);
@@ -220,12 +228,10 @@ void slice_ridge_edge(const SlicedMesh& m, const RidgeEdge& re, double lo, doubl
     const int entry = q.entry(k);
     if (entry < 0) continue;
     const ThetaSlice& s = slices[entry];
-    const EdgeSides sides(m, s, edge);
-    const bool from_below = (re.from == edge.v0 ? sides.ga : sides.gb) < 0;
-    if (!(from_below && sides.crossed())) continue;  // up
-    const Crossing at = sides.crossing(s, re.edge);
-    if (at.rho <= 0) continue;  // in the half-plane at theta + pi: another entry's
+    Crossing at;
+    if (!walk_start(re, edge, EdgeSides(m, s, edge), s, at)) continue;
     walk(m, s, re.face, at, scratch, out);
+    // The entries after it that repeat its path; the loop goes on from the first that does not.
     k = repeat_walk(m, re, k + 1, k1, q, slices, scratch, out) - 1;
   }
 }
