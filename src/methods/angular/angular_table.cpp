@@ -315,11 +315,11 @@ Occluders place_occluders(const Scene& scene, const std::vector<FarSheets>& shee
 std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow_from(
     int k, double phi) const {
   if (k < 0) return {};
-  const std::span<const AngularPair> narrow = this->narrow(k);
-  const auto first = std::partition_point(narrow.begin(), narrow.end(),
+  const std::span<const AngularPair> pairs = narrow(k);
+  const auto first = std::partition_point(pairs.begin(), pairs.end(),
                                           [phi](const AngularPair& p) { return p.reach < phi; });
-  const std::size_t skipped = std::size_t(first - narrow.begin());
-  return {skipped ? &narrow[skipped - 1] : nullptr, narrow.subspan(skipped)};
+  const std::size_t skipped = std::size_t(first - pairs.begin());
+  return {skipped ? &pairs[skipped - 1] : nullptr, pairs.subspan(skipped)};
 }
 
 bool AngularTable::blocks(std::uint32_t i, Vec3 p, bool point_light, double tolerance) const {

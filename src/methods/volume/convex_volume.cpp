@@ -93,6 +93,10 @@ ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons,
   }
   for (std::size_t v = 0; v < volumes_.size(); ++v) corner_start[v + 1] += corner_start[v];
   std::vector<FixedPoint> corners(corner_start.back()), hull;
+  const auto pixels = [](FixedPoint q) {  // a subpixel point in pixel units
+    constexpr double kSub = double(raster::kSubpixel);
+    return std::pair{(double(q.x) - kSub / 2) / kSub, (double(q.y) - kSub / 2) / kSub};
+  };
   outline_start_.assign(1, 0);
   hulls_.resize(volumes_.size());
   for (std::size_t v = 0; v < volumes_.size(); ++v) {
@@ -114,10 +118,6 @@ ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons,
     out.count = count >= 3 && count <= std::size_t(raster::kMaxPolygonCorners) ? int(count) : 0;
     for (std::size_t i = 0; i < count; ++i) {
       if (out.count > 0) out.corners[i] = {hull[i], 0};
-      constexpr double kSub = double(raster::kSubpixel);
-      const auto pixels = [](FixedPoint q) {
-        return std::pair{(double(q.x) - kSub / 2) / kSub, (double(q.y) - kSub / 2) / kSub};
-      };
       auto [ax, ay] = pixels(hull[i]);
       auto [bx, by] = pixels(hull[(i + 1) % count]);
       if (ay > by) std::swap(ax, bx), std::swap(ay, by);
