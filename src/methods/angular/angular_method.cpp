@@ -32,7 +32,7 @@ AngularMethod::AngularMethod(const MethodOptions& options) {
 void AngularMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
   light_ = scene.lights[light];
   const Bounds3& box = scene.bounds();
-  frame_.emplace(light_, scene.camera, (box.lo + box.hi) * 0.5, light);
+  frame_.emplace(light_, scene.camera, (box.lo + box.hi) * 0.5);
   // Sec. 7, step 1: the RE loops of every object sliced entry by entry.
   const std::vector<FarSheets> sheets = occluding_sheets(scene, light_);
   table_.recycle(table_buffers_);

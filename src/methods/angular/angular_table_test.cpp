@@ -14,7 +14,6 @@
 #include "angular_method.h"
 #include "loop_slicer.h"
 #include "occluders.h"
-#include "shadowkit/core/error.h"
 #include "shadowkit/scene/scene_file.h"
 
 namespace shadowkit {
@@ -27,7 +26,7 @@ Camera straight_camera() {
 }
 
 TEST(LightFrame, AnglesFollowEquationsOneToThree) {
-  const LightFrame frame(Light::point({1, 2, 3}), straight_camera(), {}, 0);
+  const LightFrame frame(Light::point({1, 2, 3}), straight_camera(), {});
   const AngularPoint ahead = frame.angular({1, 2, 1});
   EXPECT_DOUBLE_EQ(ahead.r, 2);
   EXPECT_DOUBLE_EQ(ahead.theta, 0);
@@ -41,11 +40,35 @@ TEST(LightFrame, AnglesFollowEquationsOneToThree) {
   EXPECT_GT(frame.angular({1, 3, 5}).theta, std::numbers::pi / 2);
 }
 
-TEST(LightFrame, ADirectionalLightAlongTheScanLinesIsRejectedLoudly) {
-  EXPECT_THROW(LightFrame(Light::directional({1, 0, 0}), straight_camera(), {}, 2), InputError);
-  const LightFrame frame(Light::directional({0, -1, -1}), straight_camera(), {}, 0);
+// The sign of the frame's orientation: -1 for a left-handed one.
+double handedness(const LightFrame& frame) {
+  const Vec3 x = frame.local_direction({1, 0, 0}), y = frame.local_direction({0, 1, 0});
+  return dot(cross(x, y), frame.local_direction({0, 0, 1}));
+}
+
+// A directional light's theta-planes hold its rays and the camera's right axis (Sec. 3: lines
+// along it keep theta). Along that axis, and along -right, the light lies in every plane
+// holding the axis: its theta-planes also hold the forward axis, and up crosses them.
+TEST(LightFrame, ADirectionalLightsThetaPlanesHoldItsRays) {
+  const LightFrame frame(Light::directional({0, -1, -1}), straight_camera(), {});
   EXPECT_NEAR(frame.angular({5, 1, 1}).theta, frame.angular({-3, 1, 1}).theta, 1e-15);
   EXPECT_NEAR(frame.angular({0, 0, 0}).theta, frame.angular(Vec3{0, -1, -1} * 4.0).theta, 1e-15);
+  EXPECT_NEAR(handedness(frame), -1, 1e-15);  // as the point light's (right, up, forward)
+  const Vec3 p{0.3, -0.7, 2};
+  for (const Vec3 d : {Vec3{1, 0, 0}, Vec3{-1, 0, 0}}) {
+    const LightFrame along(Light::directional(d), straight_camera(), {});
+    const AngularPoint a = along.angular(p);
+    EXPECT_NEAR(along.angular(p + d * 5.0).theta, a.theta, 1e-15);
+    EXPECT_NEAR(along.angular(p + d * 5.0).r, a.r + 5, 1e-14);
+    EXPECT_NEAR(along.angular(p + Vec3{0, 0, -3}).theta, a.theta, 1e-15);  // forward
+    EXPECT_NEAR(std::abs(along.angular(p + Vec3{0, 1, 0}).theta - a.theta), 1, 1e-15);
+    EXPECT_NEAR(handedness(along), -1, 1e-15);
+  }
+  // Within a tiny angle of the axis the theta-planes hold both again.
+  const Vec3 near = normalize(Vec3{1, 1e-7, 0});
+  const LightFrame beside(Light::directional(near), straight_camera(), {});
+  EXPECT_NEAR(beside.angular(p + near * 5.0).theta, beside.angular(p).theta, 1e-14);
+  EXPECT_NEAR(beside.angular(p + Vec3{7, 0, 0}).theta, beside.angular(p).theta, 1e-14);
 }
 
 // A square frame (a closed solid with a hole, Figs. 13 and 25) over the ground: the light
@@ -85,20 +108,20 @@ PolygonSoup square_frame(double inner, double outer, double y0, double y1) {
 
 // The table of light 0 of \p scene at resolution \p r.
 AngularTable table_of(const Scene& scene, int r) {
-  const LightFrame frame(scene.lights[0], scene.camera, {}, 0);
+  const LightFrame frame(scene.lights[0], scene.camera, {});
   return AngularTable::build(scene, frame, occluding_sheets(scene, scene.lights[0]), {r, false});
 }
 
 // The entry whose slice holds world point \p p.
 int entry_at(const Scene& scene, const AngularTable& table, Vec3 p) {
-  const LightFrame frame(scene.lights[0], scene.camera, {}, 0);
+  const LightFrame frame(scene.lights[0], scene.camera, {});
   const ThetaQuantization& q = table.theta();
   return q.entry(q.index(frame.angular(p).theta));
 }
 
 // tan(phi) of world point \p p (the point light's phi as pairs keep it).
 double phi_at(const Scene& scene, Vec3 p) {
-  return LightFrame(scene.lights[0], scene.camera, {}, 0).angular(p).phi;
+  return LightFrame(scene.lights[0], scene.camera, {}).angular(p).phi;
 }
 
 std::uint32_t face_of(const AngularTable& table, const AngularPair& pair) {
@@ -199,7 +222,7 @@ TEST(Pairing, AHoleLikeNotchIsOneSpanWithTheFarSheetsDepth) {
   EXPECT_EQ(pairs[2].phi_begin, pairs[1].phi_end);
   EXPECT_NEAR(pairs[2].phi_end, phi_at(scene, {2, 2, 0}), 1e-4);
   const HiddenFace& bottom = table.hidden(pairs[1].hidden);
-  const LightFrame frame(scene.lights[0], scene.camera, {}, 0);
+  const LightFrame frame(scene.lights[0], scene.camera, {});
   EXPECT_FALSE(bottom.behind(frame.local({0, 0.5, 0}), 1e-9));  // the notch floor
   EXPECT_TRUE(bottom.behind(frame.local({0, -1, 0}), 1e-9));    // the ground under it
 }
@@ -216,7 +239,7 @@ TEST(Pairing, EqualAdjacentPeaksPairWithEachOther) {
   const Light light = Light::directional(normalize(Vec3{0, -1, -0.5}));
   const Scene scene = testing::make_scene(front_camera(), {light}, {prism(u)});
   const Mesh& mesh = scene.objects[0].mesh;
-  const LightFrame frame(light, scene.camera, {}, 0);
+  const LightFrame frame(light, scene.camera, {});
   const FarSheets sheets = far_sheets(mesh, light, true);
   std::vector<Vec3> local;
   std::vector<double> theta;
@@ -331,7 +354,7 @@ TEST(AngularTable, AFaceBlocksExactlyThePointsBehindItsOwnOutline) {
     const Scene scene =
         testing::make_scene(testing::camera({1, 6, 6}, {1, 0, 1}, 160, 120), {c.light},
                             {testing::horizontal_quad(-8, 8, -8, 8, 0), l_shape});
-    const LightFrame frame(c.light, scene.camera, scene.bounds().center(), 0);
+    const LightFrame frame(c.light, scene.camera, scene.bounds().center());
     const AngularTable table =
         AngularTable::build(scene, frame, occluding_sheets(scene, c.light), {});
     const std::uint32_t l_face = hidden_of(table, 1);
@@ -368,7 +391,7 @@ void expect_same_table(const AngularTable& a, const AngularTable& b) {
 // entry gets its pairs in the same order, and the same table, however many threads slice.
 TEST(AngularTable, TheTableDoesNotDependOnTheNumberOfThreads) {
   const Scene scene = load_scene("cubes:300", {});  // 301 loops, 19 per chunk
-  const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center(), 0);
+  const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center());
   const auto build = [&](int threads) {
     return tbb::task_arena(threads).execute([&] {
       return AngularTable::build(scene, frame, occluding_sheets(scene, scene.lights[0]), {});
@@ -392,7 +415,7 @@ TEST(AngularTable, TheTableDoesNotDependOnTheNumberOfThreads) {
 // faces and the covered ones are the faces of the unsaturated entry's pairs.
 TEST(AngularTable, SaturationKeepsTheFacesOfThePairsItDrops) {
   const Scene scene = load_scene("cubes:300", {});
-  const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center(), 0);
+  const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center());
   const auto sheets = occluding_sheets(scene, scene.lights[0]);
   const AngularTable saturated = AngularTable::build(scene, frame, sheets, {0, true});
   const AngularTable all = AngularTable::build(scene, frame, sheets, {0, false});
@@ -417,7 +440,7 @@ TEST(AngularTable, SaturationKeepsTheFacesOfThePairsItDrops) {
 // Buffers left by a larger table (longer lists, more pairs) change nothing in the next one.
 TEST(AngularTable, BuffersOfAnEarlierBuildLeaveTheTableAsItWas) {
   const auto build = [](const Scene& scene, AngularTableBuffers* buffers) {
-    const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center(), 0);
+    const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center());
     return AngularTable::build(scene, frame, occluding_sheets(scene, scene.lights[0]), {}, buffers);
   };
   const Scene large = load_scene("cubes:300", {}), small = load_scene("tetra:4", {});

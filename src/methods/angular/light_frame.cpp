@@ -2,12 +2,9 @@
 
 #include <cmath>
 
-#include "shadowkit/core/error.h"
-
 namespace shadowkit {
 
-LightFrame::LightFrame(const Light& light, const Camera& camera, Vec3 scene_center,
-                       std::size_t index)
+LightFrame::LightFrame(const Light& light, const Camera& camera, Vec3 scene_center)
     : point_(light.type == Light::Type::point) {
   const Vec3 right = camera.right();
   if (point_) {
@@ -17,18 +14,18 @@ LightFrame::LightFrame(const Light& light, const Camera& camera, Vec3 scene_cent
     axis_[2] = camera.forward();
     return;
   }
-  // Parallel projection: theta-planes hold the right axis and the direction of travel.
-  const Vec3 normal = cross(right, light.direction);
-  if (length(normal) < 1e-9) {
-    throw InputError("light " + std::to_string(index),
-                     "angular: a directional light travelling along the camera's right axis "
-                     "has no constant-theta planes along the scan lines (not supported)");
-  }
+  // Parallel projection: theta-planes hold the direction of travel and the right axis, so
+  // that lines along the right axis keep theta (Sec. 3). A light travelling along that axis
+  // lies in every plane holding it; its theta-planes are the ones that also hold the forward
+  // axis, parallel to the centre scan line's plane. Either way a scan line keeps theta on
+  // faces parallel to the right axis (which such a light grazes) and crosses theta-planes on
+  // the others, where eq. 7's run lengths end.
+  Vec3 normal = cross(right, light.direction);
+  if (length(normal) < 1e-9) normal = cross(camera.forward(), light.direction);
   origin_ = scene_center;
   axis_[1] = normalize(normal);
   axis_[2] = light.direction;
-  axis_[0] = cross(axis_[1], axis_[2]);
-  if (dot(axis_[0], right) < 0) axis_[0] = -axis_[0];
+  axis_[0] = cross(axis_[2], axis_[1]);  // left-handed, as the point light's frame
 }
 
 AngularPoint LightFrame::angular_local(Vec3 v) const {

@@ -34,13 +34,12 @@ struct FrameAffine {
 /// the constant-theta half-plane; within one theta it orders points as eq. 3 does),
 /// r = |p - light| (eq. 1).
 /// Directional light: the parallel projection. theta-planes are the planes holding the
-/// camera's right axis and the light direction d; local coordinates (phi, theta, r) are
-/// orthonormal with r along d.
+/// camera's right axis and the light direction d, or, when d runs along that axis (within
+/// 1e-9 rad), d and the camera's forward axis; local coordinates (phi, theta, r) are
+/// orthonormal, left-handed, with r along d and the origin at \p scene_center.
 class LightFrame {
  public:
-  /// InputError naming light \p index when a directional light travels along the camera's
-  /// right axis (no plane holds both, so scan lines cannot be constant-theta lines).
-  LightFrame(const Light& light, const Camera& camera, Vec3 scene_center, std::size_t index);
+  LightFrame(const Light& light, const Camera& camera, Vec3 scene_center);
 
   bool point_light() const { return point_; }
   /// Light-frame coordinates of a world point.

@@ -45,7 +45,7 @@ std::vector<EntryPair> in_entry(const std::vector<EntryPair>& out, std::uint32_t
 void expect_entries_as_sliced_alone(const std::string& spec) {
   const Scene scene = load_scene(spec, {});
   for (std::size_t light = 0; light < scene.lights.size(); ++light) {
-    const LightFrame frame(scene.lights[light], scene.camera, scene.bounds().center(), light);
+    const LightFrame frame(scene.lights[light], scene.camera, scene.bounds().center());
     const std::vector<FarSheets> sheets = occluding_sheets(scene, scene.lights[light]);
     for (std::size_t o = 0; o < scene.objects.size(); ++o) {
       const Mesh& mesh = scene.objects[o].mesh;

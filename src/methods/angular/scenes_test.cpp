@@ -3,6 +3,8 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "../../testing/method_testing.h"
 #include "../../testing/test_scenes.h"
@@ -129,6 +131,40 @@ TEST(AngularScenes, TinyHugeAndGrazingCasesAgreeWithTheReference) {
           Light::directional(normalize(Vec3{0.5, 0, -1}))}) {
       const Scene scene = scaled_box_scene(s, light);
       EXPECT_LE(worst_interior_mismatch(scene), 0.2) << "scale " << s;
+    }
+  }
+}
+
+// A directional light travelling along the camera's right axis or along -right (a sun on
+// the horizon in the east or the west, seen by a camera looking north) lies in every plane
+// holding that axis: its theta-planes also hold the forward axis (light_frame.cpp). Turned
+// off the axis by a tiny angle, toward the camera's down or forward axis, it gets the usual
+// theta-planes through the axis and the light, whichever way it leaves the axis.
+TEST(AngularScenes, ALightAlongTheCamerasRightAxisAgreesWithTheReference) {
+  std::vector<Scene> scenes;
+  for (const char* name : {"tetra:3", "coil", "cubes:125", "table"}) {
+    scenes.push_back(reduced(load_scene(name, {})));
+  }
+  scenes.push_back(
+      reduced(load_scene_file(std::string(SHADOWKIT_SOURCE_DIR) + "/examples/default.json", {})));
+  for (const Scene& original : scenes) {
+    const Camera& cam = original.camera;
+    std::vector<Vec3> directions;
+    for (const double sign : {1.0, -1.0}) {
+      const Vec3 axis = cam.right() * sign;
+      directions.push_back(axis);
+      for (const Vec3 toward : {-cam.true_up(), cam.forward()}) {
+        for (const double angle : {1e-7, 1e-4}) {
+          directions.push_back(axis * std::cos(angle) + toward * std::sin(angle));
+        }
+      }
+    }
+    for (const Vec3 d : directions) {
+      Scene scene = original;
+      // d is a unit vector already: renormalizing it could round it off the axis.
+      scene.lights = {Light{Light::Type::directional, {}, d}};
+      EXPECT_LE(worst_interior_mismatch(scene), 0.2)
+          << scene.name << " light " << d.x << " " << d.y << " " << d.z;
     }
   }
 }

@@ -23,7 +23,7 @@ TEST(ViewTheta, HoldsTheThetaOfEveryVisiblePoint) {
     const Scene scene = reduced(load_scene(name, {}));
     const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
     for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-      const LightFrame frame(scene.lights[l], scene.camera, scene.bounds().center(), l);
+      const LightFrame frame(scene.lights[l], scene.camera, scene.bounds().center());
       const ViewTheta view = view_theta(scene, frame);
       if (!view.bounded) continue;
       ++bounded;
@@ -53,7 +53,7 @@ TEST(ViewTheta, AnEyeInsideTheSceneBoxKeepsWhatLiesNearIt) {
               box.lo.z < eye.z && eye.z < box.hi.z);
   const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-    const LightFrame frame(scene.lights[l], scene.camera, scene.bounds().center(), l);
+    const LightFrame frame(scene.lights[l], scene.camera, scene.bounds().center());
     const ViewTheta view = view_theta(scene, frame);
     ASSERT_TRUE(view.bounded);
     for (std::size_t i = 0; i < vsb.face.size(); ++i) {
@@ -69,7 +69,7 @@ TEST(ViewTheta, AnEyeInsideTheSceneBoxKeepsWhatLiesNearIt) {
 // height and not the scene's extent beyond the view.
 TEST(ViewTheta, AutomaticResolutionFollowsTheScanLines) {
   Scene scene = load_scene("cubes:125", {});
-  const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center(), 0);
+  const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center());
   const ViewTheta view = view_theta(scene, frame);
   ASSERT_TRUE(view.bounded);
   const int full = automatic_resolution(scene, scan_line_theta(scene, frame), view.hi - view.lo);
