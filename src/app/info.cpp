@@ -17,14 +17,16 @@ nlohmann::json scene_info(const Scene& scene) {
   j["scene"] = scene.name;
   j["polygons"] = scene.face_count();
   j["triangles"] = scene.triangles().triangles.size();
-  j["camera"] = {{"position", vec_json(scene.camera.position)},
-                 {"look_at", vec_json(scene.camera.look_at)},
+  // Positions as the input gives them, not in the scene's working frame.
+  const WorldFrame& frame = scene.frame;
+  j["camera"] = {{"position", vec_json(frame.to_world(scene.camera.position))},
+                 {"look_at", vec_json(frame.to_world(scene.camera.look_at))},
                  {"width", scene.camera.width},
                  {"height", scene.camera.height}};
   for (const Light& l : scene.lights) {
     j["lights"].push_back(
         l.type == Light::Type::point
-            ? nlohmann::json{{"type", "point"}, {"position", vec_json(l.position)}}
+            ? nlohmann::json{{"type", "point"}, {"position", vec_json(frame.to_world(l.position))}}
             : nlohmann::json{{"type", "directional"}, {"direction", vec_json(l.direction)}});
   }
   std::size_t closed = 0, boundary = 0, nonmanifold = 0;
@@ -42,7 +44,8 @@ nlohmann::json scene_info(const Scene& scene) {
                             {"consistently_oriented", m.consistently_oriented()},
                             {"boundary_edges", m.boundary_edge_count()},
                             {"nonmanifold_edges", m.nonmanifold_edge_count()},
-                            {"nonplanar_polygons_split", m.split_face_count()}});
+                            {"nonplanar_polygons_split", m.split_face_count()},
+                            {"degenerate_polygons_dropped", m.dropped_face_count()}});
     if (o.subdivision) {
       j["objects"].back()["subdivision"] = {{"scheme", "catmull-clark"},
                                             {"control_faces", o.subdivision->control_face_count()},
@@ -53,7 +56,8 @@ nlohmann::json scene_info(const Scene& scene) {
   j["open_meshes"] = scene.objects.size() - closed;
   j["boundary_edges"] = boundary;
   j["nonmanifold_edges"] = nonmanifold;
-  j["bounds"] = {vec_json(scene.bounds().lo), vec_json(scene.bounds().hi)};
+  const Bounds3 bounds = scene.world_bounds();
+  j["bounds"] = {vec_json(bounds.lo), vec_json(bounds.hi)};
   return j;
 }
 

@@ -10,6 +10,17 @@ std::string type_name(const nlohmann::json& v) {
   return v.type_name();
 }
 
+// A value as a message shows it: scalars as written (long strings cut short), arrays and
+// objects by their size, so that a huge or deeply nested value cannot flood the message.
+std::string brief(const nlohmann::json& v) {
+  if (v.is_array()) return "an array of " + std::to_string(v.size()) + " values";
+  if (v.is_object()) return "an object with " + std::to_string(v.size()) + " keys";
+  if (v.is_string() && v.get_ref<const std::string&>().size() > 40) {
+    return nlohmann::json(v.get_ref<const std::string&>().substr(0, 40)).dump() + "...";
+  }
+  return v.dump();
+}
+
 }  // namespace
 
 JsonCursor JsonCursor::operator[](const std::string& key) const {
@@ -50,7 +61,7 @@ int JsonCursor::integer(int lo, int hi) const {
   const double x = number();
   if (x != std::floor(x) || x < lo || x > hi) {
     fail("expected a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
-         ", got " + value_.dump());
+         ", got " + brief(value_));
   }
   return int(x);
 }
@@ -62,7 +73,7 @@ std::string JsonCursor::string() const {
 
 Vec3 JsonCursor::vec3() const {
   if (!value_.is_array() || value_.size() != 3) {
-    fail("expected an array of three numbers, got " + value_.dump());
+    fail("expected an array of three numbers, got " + brief(value_));
   }
   return {(*this)[0].number(), (*this)[1].number(), (*this)[2].number()};
 }

@@ -214,6 +214,7 @@ Mesh Mesh::build(const PolygonSoup& soup, const std::string& name, const Context
                 " degenerate face(s) (fewer than 3 distinct vertices or zero area)");
   }
   mesh.split_faces_ = split;
+  mesh.dropped_faces_ = degenerate;
   mesh.build_adjacency();
   return mesh;
 }

@@ -1,27 +1,31 @@
 #include "shadowkit/scene/scene_file.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <numbers>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "io/json_text.h"
 #include "json_cursor.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/scene/generators.h"
+#include "shadowkit/scene/limits.h"
 #include "shadowkit/scene/mesh_io.h"
+#include "shadowkit/scene/scene_assembly.h"
 
 namespace shadowkit {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Embree stores coordinates in float and treats |x| >= 1.8e18 as invalid; far below that,
-// every stage has headroom in double.
-constexpr double kMaxCoordinate = 1e15;
-
 Vec3 position(const JsonCursor& c) {
   const Vec3 p = c.vec3();
-  if (max_abs_component(p) > kMaxCoordinate) c.fail("coordinates beyond +-1e15 are not supported");
+  if (max_abs_component(p) > limits::kCoordinate) {
+    c.fail("coordinates beyond +-1e15 are not supported");
+  }
   return p;
 }
 
@@ -30,18 +34,7 @@ nlohmann::json parse_json(const fs::path& path) {
   if (!in) throw InputError(path.string(), "cannot open scene file");
   std::stringstream text;
   text << in.rdbuf();
-  const std::string s = text.str();
-  try {
-    return nlohmann::json::parse(s);
-  } catch (const nlohmann::json::parse_error& e) {
-    // nlohmann reports a byte offset; users need the line.
-    const std::size_t end = std::min<std::size_t>(e.byte, s.size());
-    const auto line = 1 + std::count(s.begin(), s.begin() + std::ptrdiff_t(end), '\n');
-    std::string what = e.what();
-    const std::size_t colon = what.find(": ");
-    if (colon != std::string::npos) what = what.substr(colon + 2);
-    throw InputError(path.string() + ":" + std::to_string(line), "malformed JSON: " + what);
-  }
+  return parse_json_text(text.str(), path.string());
 }
 
 void warn_unknown(const JsonCursor& c, const std::vector<std::string>& known, const Context& ctx,
@@ -58,8 +51,13 @@ Camera read_camera(const JsonCursor& c, Camera camera, const Context& ctx,
   if (c.has("look_at")) camera.look_at = position(c["look_at"]);
   if (c.has("up")) camera.up = c["up"].vec3();
   if (c.has("fov_y_deg")) camera.fov_y_deg = c["fov_y_deg"].number();
-  if (c.has("width")) camera.width = c["width"].integer(1, 16384);
-  if (c.has("height")) camera.height = c["height"].integer(1, 16384);
+  if (c.has("width")) camera.width = c["width"].integer(1, limits::kImageSide);
+  if (c.has("height")) camera.height = c["height"].integer(1, limits::kImageSide);
+  if (std::int64_t{camera.width} * camera.height > limits::kPixels) {
+    c.fail(std::to_string(camera.width) + "x" + std::to_string(camera.height) + " makes " +
+           std::to_string(std::int64_t{camera.width} * camera.height) + " pixels; at most " +
+           std::to_string(limits::kPixels) + " are allowed");
+  }
   const Vec3 view = camera.look_at - camera.position;
   if (!(length(view) > 1e-12 * std::max(1.0, max_abs_component(camera.position)))) {
     c["look_at"].fail("equals camera.position: the view direction is undefined");
@@ -105,15 +103,6 @@ void apply_object_transform(const JsonCursor& c, std::vector<Vec3>& positions) {
   apply_transform(positions, scale, rotate, translate);
 }
 
-void check_coordinates(const JsonCursor& c, const std::vector<Vec3>& positions) {
-  for (const Vec3& p : positions) {
-    if (max_abs_component(p) > kMaxCoordinate || !is_finite(p)) {
-      c.fail(std::string(c.has("transform") ? "after its transform, " : "") +
-             "a vertex lies beyond +-1e15, which is not supported");
-    }
-  }
-}
-
 // Segments per patch edge of a Catmull-Clark object's tessellation, 0 for a polygon mesh.
 // With the default 8, the polygons of examples/subdivision.json stay within 0.3% of their
 // object's size of the limit surface; the gap shrinks as 1 / segments^2 on regular patches
@@ -127,20 +116,11 @@ int tessellation_segments(const JsonCursor& c) {
   if (scheme != "catmull-clark") {
     c["subdivision"].fail("unknown scheme '" + scheme + "' (expected \"catmull-clark\")");
   }
-  return c.has("tessellation") ? c["tessellation"].integer(1, 256) : 8;
+  return c.has("tessellation") ? c["tessellation"].integer(1, limits::kTessellation) : 8;
 }
 
-// The limit surface of the control mesh \p control and its tessellation, which every method
-// but voxel sees.
-SceneObject subdivision_object(const PolygonSoup& control, const std::string& label, int segments,
-                               const JsonCursor& c, const Context& ctx) {
-  const std::string where = c.where() + " (" + label + ")";
-  auto surface = SubdivisionSurface::build(control, where);
-  return {label, Mesh::build(surface->tessellate(segments), where, ctx), 0, std::move(surface)};
-}
-
-void read_objects(const JsonCursor& list, const fs::path& dir, Scene& scene, const Context& ctx,
-                  const std::string& file) {
+void read_objects(const JsonCursor& list, const fs::path& dir, SceneSource& scene,
+                  const Context& ctx, const std::string& file) {
   for (std::size_t i = 0; i < list.array_size(); ++i) {
     const JsonCursor c = list[i];
     if (!c.value().is_object()) c.fail("expected an object with \"mesh\" or \"generator\"");
@@ -148,7 +128,7 @@ void read_objects(const JsonCursor& list, const fs::path& dir, Scene& scene, con
     if (c.has("mesh")) {
       warn_unknown(c, {"mesh", "transform", "name", "subdivision", "tessellation"}, ctx, file);
       const fs::path mesh_path = dir / c["mesh"].string();
-      parts.push_back({mesh_path.stem().string(), read_mesh_file(mesh_path)});
+      parts.push_back({mesh_path.stem().string(), read_mesh_file(mesh_path, ctx).soup});
     } else if (c.has("generator")) {
       parts = generate_objects(c.value(), c.where());
     } else {
@@ -158,14 +138,23 @@ void read_objects(const JsonCursor& list, const fs::path& dir, Scene& scene, con
     const std::string name = c.has("name") ? c["name"].string() : "";
     for (GeneratedObject& part : parts) {
       apply_object_transform(c, part.soup.positions);
-      check_coordinates(c, part.soup.positions);
-      const std::string label = name.empty() ? part.name : name;
       scene.objects.push_back(
-          segments > 0
-              ? subdivision_object(part.soup, label, segments, c, ctx)
-              : SceneObject{label, Mesh::build(part.soup, file + ": " + label, ctx), 0, {}});
+          {name.empty() ? part.name : name, std::move(part.soup), segments, c.where()});
     }
   }
+}
+
+// A root "generator" key: a built-in scene whose camera, lights and objects the file's own
+// keys replace or extend.
+SceneSource generated_scene(const JsonCursor& root, const std::string& file) {
+  const std::string spec = root["generator"].string();
+  if (spec.find(':') != std::string::npos) return builtin_scene_source(spec, root["generator"].where());
+  // Its parameters are the file's keys but for the scene's own.
+  nlohmann::json params = nlohmann::json::object();
+  for (const auto& [key, value] : root.value().items()) {
+    if (key != "camera" && key != "lights" && key != "objects") params[key] = value;
+  }
+  return builtin_scene_source(params, file);
 }
 
 }  // namespace
@@ -177,18 +166,14 @@ Scene load_scene_file(const fs::path& path, const Context& ctx) {
   if (!json.is_object()) throw InputError(file, "a scene file holds one JSON object");
   if (!root.has("generator")) warn_unknown(root, {"camera", "lights", "objects"}, ctx, file);
 
-  Scene scene;
+  SceneSource scene;
   if (root.has("generator")) {
-    // The scene file's own keys are not the generator's parameters.
-    nlohmann::json params = json;
-    for (const char* key : {"camera", "lights", "objects"}) params.erase(key);
-    const std::string spec = root["generator"].string();
-    scene = spec.find(':') == std::string::npos ? make_builtin_scene(params, file, ctx)
-                                                : make_builtin_scene(spec, ctx);
+    scene = generated_scene(root, file);
   } else if (!root.has("camera")) {
     throw InputError(file + ": key 'camera'", "is missing");
   }
   scene.name = path.stem().string();
+  scene.where = file;
   if (root.has("camera")) scene.camera = read_camera(root["camera"], scene.camera, ctx, file);
   if (root.has("lights")) {
     const JsonCursor lights = root["lights"];
@@ -199,14 +184,64 @@ Scene load_scene_file(const fs::path& path, const Context& ctx) {
   }
   if (root.has("objects")) read_objects(root["objects"], path.parent_path(), scene, ctx, file);
   if (scene.lights.empty()) ctx.warning(file + ": the scene has no lights");
-  scene.finalize();
-  if (scene.face_count() == 0) ctx.warning(file + ": the scene has no faces");
-  return scene;
+  Scene assembled = assemble_scene(std::move(scene), ctx);
+  if (assembled.face_count() == 0) ctx.warning(file + ": the scene has no faces");
+  return assembled;
 }
+
+Scene load_mesh_as_scene(const fs::path& path, const Context& ctx) {
+  return mesh_scene(read_mesh_file(path, ctx), path, ctx);
+}
+
+Scene mesh_scene(MeshFile file, const fs::path& path, const Context& ctx) {
+  Bounds3 box;
+  for (const Vec3& p : file.soup.positions) box.add(p);
+  SceneSource scene;
+  scene.name = path.stem().string();
+  scene.where = path.string();
+  // From the front, right and above (+y up, as glTF, COLLADA and assimp place models), far
+  // enough for the bounding sphere to fit the 45-degree view with a margin.
+  const double radius = box.diagonal() > 0 ? 0.5 * box.diagonal() : 1.0;
+  const Vec3 toward_camera = normalize(Vec3{0.6, 0.45, 1});
+  scene.camera.look_at = box.center();
+  scene.camera.position = box.center() + toward_camera * (1.2 * radius / std::sin(std::numbers::pi / 8));
+  scene.camera.up = {0, 1, 0};
+  scene.camera.fov_y_deg = 45;
+  scene.lights.push_back(Light::directional({-0.4, -1, -0.6}));
+  const std::size_t polygons = file.soup.face_count();
+  scene.objects.push_back({scene.name, std::move(file.soup), 0, scene.where});
+  Scene assembled = assemble_scene(std::move(scene), ctx);
+  if (assembled.face_count() == 0) {
+    throw InputError(path.string(), "all " + std::to_string(polygons) +
+                                        " of its polygons are degenerate (no area)");
+  }
+  return assembled;
+}
+
+namespace {
+
+// A scene file is JSON: named .json, or opening with '{'. Any other file is a mesh, which
+// assimp recognises by its content when its name does not say.
+bool is_scene_file(const fs::path& path) {
+  if (is_mesh_file_name(path)) return false;
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".json") return true;
+  std::ifstream in(path, std::ios::binary);
+  char c = ' ';
+  while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
+  }
+  return !in || c == '{' || c == '\xEF';  // '\xEF': a UTF-8 byte order mark
+}
+
+}  // namespace
 
 Scene load_scene(const std::string& spec, const Context& ctx) {
   std::error_code ec;
-  if (fs::is_regular_file(spec, ec)) return load_scene_file(spec, ctx);
+  if (fs::is_regular_file(spec, ec)) {
+    return is_scene_file(spec) ? load_scene_file(spec, ctx) : load_mesh_as_scene(spec, ctx);
+  }
   const std::string name = spec.substr(0, spec.find(':'));
   const std::vector<std::string> builtins = builtin_scene_names();
   if (std::find(builtins.begin(), builtins.end(), name) != builtins.end()) {

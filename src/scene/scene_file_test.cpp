@@ -64,8 +64,8 @@ TEST_F(SceneFileTest, LoadsCameraLightsAndTransformedMeshes) {
   EXPECT_EQ(s.lights[0].type, Light::Type::directional);
   EXPECT_DOUBLE_EQ(s.lights[0].direction.y, -1);
   EXPECT_EQ(s.face_count(), 1u);
-  EXPECT_DOUBLE_EQ(s.bounds().hi.x, 10);
-  EXPECT_DOUBLE_EQ(s.bounds().lo.y, 1);
+  EXPECT_DOUBLE_EQ(s.world_bounds().hi.x, 10);
+  EXPECT_DOUBLE_EQ(s.world_bounds().lo.y, 1);
 }
 
 TEST_F(SceneFileTest, MissingFileNamesIt) {
@@ -131,7 +131,7 @@ TEST_F(SceneFileTest, OverflowingTransformIsRejected) {
   EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
                              R"({"type": "point", "position": [3, 10, 4]})",
                              R"({"mesh": "ground.obj", "transform": {"scale": 1e308}})")),
-              HasSubstr("key 'objects[0]': after its transform, a vertex lies beyond +-1e15"));
+              HasSubstr("key 'objects[0]': after any transform, a vertex lies beyond +-1e15"));
   EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
                              R"({"type": "point", "position": [3, 10, 4]})",
                              R"({"mesh": "ground.obj", "transform": {"scale": [1, 0, 1]}})")),
@@ -169,7 +169,8 @@ TEST_F(SceneFileTest, CatmullClarkObjectsAreTessellatedLimitSurfaces) {
   EXPECT_TRUE(cube.mesh.closed());
   // The transform moved the control points: the limit surface is the unit cube's, scaled
   // by 2 about the origin and raised by 1, so its centre sits at (1, 2, 1).
-  const Bounds3 box = cube.mesh.bounds();
+  const Bounds3 working = cube.mesh.bounds();
+  const Bounds3 box{s.frame.to_world(working.lo), s.frame.to_world(working.hi)};
   EXPECT_NEAR(box.center().x, 1, 1e-12);
   EXPECT_NEAR(box.center().y, 2, 1e-12);
   EXPECT_GT(box.lo.y, 1);

@@ -16,6 +16,17 @@ class InputError : public std::runtime_error {
       : std::runtime_error(where.empty() ? what : where + ": " + what) {}
 };
 
+/// The location of \p key inside the value located by \p where: "file: key 'objects[2]'" and
+/// "count" give "file: key 'objects[2].count'"; any other location gets ": key 'count'".
+inline std::string key_location(const std::string& where, const std::string& key) {
+  const std::string marker = ": key '";
+  if (where.size() > marker.size() && where.back() == '\'' &&
+      where.find(marker) != std::string::npos) {
+    return where.substr(0, where.size() - 1) + "." + key + "'";
+  }
+  return where + marker + key + "'";
+}
+
 [[noreturn]] inline void check_failed(const char* expr, const char* file, int line) {
   std::fprintf(stderr, "%s:%d: internal check failed: %s\n", file, line, expr);
   std::abort();

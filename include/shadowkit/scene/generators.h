@@ -7,6 +7,7 @@
 #include "shadowkit/core/context.h"
 #include "shadowkit/scene/mesh.h"
 #include "shadowkit/scene/scene.h"
+#include "shadowkit/scene/scene_assembly.h"
 
 namespace shadowkit {
 
@@ -26,10 +27,12 @@ std::vector<GeneratedObject> generate_objects(const nlohmann::json& params,
 /// Throws InputError if the name is unknown.
 Scene make_builtin_scene(const std::string& spec, const Context& ctx);
 
-/// The same from parameters such as {"generator": "cubes", "count": 2000}; \p where labels
-/// errors.
-Scene make_builtin_scene(const nlohmann::json& params, const std::string& where,
-                         const Context& ctx);
+/// What make_builtin_scene() assembles, for a scene file to change before assembling;
+/// \p where labels errors ("scene.json: key 'generator'").
+SceneSource builtin_scene_source(const std::string& spec, const std::string& where);
+
+/// The same from parameters such as {"generator": "cubes", "count": 2000}.
+SceneSource builtin_scene_source(const nlohmann::json& params, const std::string& where);
 
 /// Names of the built-in scenes, for help texts and error messages.
 std::vector<std::string> builtin_scene_names();

@@ -85,12 +85,15 @@ class Mesh {
   bool consistently_oriented() const { return consistently_oriented_; }
   /// Input polygons that were not planar and are kept as triangles instead.
   std::size_t split_face_count() const { return split_faces_; }
+  /// Input polygons dropped as degenerate (fewer than 3 distinct vertices, or no area).
+  std::size_t dropped_face_count() const { return dropped_faces_; }
 
  private:
   void build_adjacency();
   std::size_t boundary_edges_ = 0;
   std::size_t nonmanifold_edges_ = 0;
   std::size_t split_faces_ = 0;
+  std::size_t dropped_faces_ = 0;
   bool consistently_oriented_ = true;
 };
 

@@ -71,9 +71,28 @@ struct TriangleList {
   std::vector<std::uint32_t> triangle_face;  ///< global face id per triangle
 };
 
+/// \brief Where a scene's working coordinates sit in its world (the input's coordinates):
+/// world = origin + scale * working.
+///
+/// Scenes read from files and generators are centred on their geometry and scaled by a
+/// power of two (exact in floating point) to a size near 1, so that no method's result
+/// depends on where the scene sits or on its units: a site in millimetres a thousand
+/// kilometres from its origin is computed as precisely as a unit cube at the origin.
+struct WorldFrame {
+  Vec3 origin;
+  double scale = 1;
+
+  Vec3 to_world(Vec3 p) const { return origin + p * scale; }
+  Vec3 to_working(Vec3 p) const { return (p - origin) / scale; }
+  /// The frame centred on \p geometry with a power-of-two scale near its diagonal.
+  static WorldFrame around(const Bounds3& geometry);
+};
+
 /// \brief The whole scene. Build it with finalize() after filling camera, lights, objects.
+/// Every position in it is in working coordinates (WorldFrame).
 struct Scene {
   std::string name;
+  WorldFrame frame;
   Camera camera;
   std::vector<Light> lights;
   std::vector<SceneObject> objects;
@@ -88,6 +107,10 @@ struct Scene {
     return face - objects[face_object[face]].first_face;
   }
   const Bounds3& bounds() const { return bounds_; }
+  /// bounds() in world coordinates.
+  Bounds3 world_bounds() const {
+    return bounds_.empty() ? bounds_ : Bounds3{frame.to_world(bounds_.lo), frame.to_world(bounds_.hi)};
+  }
   const TriangleList& triangles() const { return triangles_; }
 
   std::vector<std::uint32_t> face_object;  ///< object index per global face id

@@ -7,8 +7,13 @@
 namespace shadowkit::svbsp {
 namespace {
 
+// Output is in world units: the scene's working frame is scaled by frame.scale.
+double world_area(const Scene& scene, double working_area) {
+  return working_area * scene.frame.scale * scene.frame.scale;
+}
+
 double polygon_area(const Scene& scene, std::uint32_t face) {
-  return scene.objects[scene.object_of_face(face)].mesh.areas[scene.local_face(face)];
+  return world_area(scene, scene.objects[scene.object_of_face(face)].mesh.areas[scene.local_face(face)]);
 }
 
 void write_header(std::ostream& out, const Scene& scene, const MultiLightFragments& result) {
@@ -34,7 +39,10 @@ void write_fragments_ply(const std::filesystem::path& path, const Scene& scene,
   out.precision(17);
   write_header(out, scene, result);
   for (const MaskedFragment& f : result.fragments) {
-    for (const Vec3& v : f.polygon.vertices) out << v.x << ' ' << v.y << ' ' << v.z << '\n';
+    for (const Vec3& working : f.polygon.vertices) {
+      const Vec3 v = scene.frame.to_world(working);
+      out << v.x << ' ' << v.y << ' ' << v.z << '\n';
+    }
   }
   std::size_t next = 0;
   for (const MaskedFragment& f : result.fragments) {
@@ -53,7 +61,7 @@ nlohmann::json fragment_areas_json(const Scene& scene, const MultiLightFragments
   std::vector<std::vector<double>> shadowed = lit;
   std::vector<std::size_t> count(scene.face_count());
   for (const MaskedFragment& f : result.fragments) {
-    const double a = area(f.polygon);
+    const double a = world_area(scene, area(f.polygon));
     ++count[f.polygon.face];
     for (std::size_t l = 0; l < lights; ++l) {
       ((f.lit_mask >> l) & 1 ? lit : shadowed)[f.polygon.face][l] += a;

@@ -179,9 +179,8 @@ std::vector<GeneratedObject> generate_objects(const nlohmann::json& params,
   reader.fail("generator", "unknown generator '" + name + "' (known: " + joined_names(true) + ")");
 }
 
-Scene make_builtin_scene(const std::string& spec, const Context& ctx) {
+SceneSource builtin_scene_source(const std::string& spec, const std::string& where) {
   using namespace generators;
-  const std::string where = "scene '" + spec + "'";
   const std::size_t colon = spec.find(':');
   const std::string name = spec.substr(0, colon);
   const SceneEntry* entry = find_scene(name);
@@ -197,13 +196,12 @@ Scene make_builtin_scene(const std::string& spec, const Context& ctx) {
     params[std::string(entry->spec_key)] =
         spec_value(*entry, std::string_view(spec).substr(colon + 1), where);
   }
-  Scene scene = make_builtin_scene(params, where, ctx);
-  scene.name = spec;
-  return scene;
+  SceneSource source = builtin_scene_source(params, where);
+  source.name = spec;
+  return source;
 }
 
-Scene make_builtin_scene(const nlohmann::json& params, const std::string& where,
-                         const Context& ctx) {
+SceneSource builtin_scene_source(const nlohmann::json& params, const std::string& where) {
   using namespace generators;
   const ParamReader reader(params, where);
   const auto name_it = params.find("generator");
@@ -217,16 +215,15 @@ Scene make_builtin_scene(const nlohmann::json& params, const std::string& where,
                 "unknown built-in scene '" + name + "' (known: " + joined_names(false) + ")");
   }
   SceneParts parts = entry->build(reader);
-
-  Scene scene;
-  scene.name = name;
-  scene.camera = parts.camera;
-  scene.lights = std::move(parts.lights);
-  for (const GeneratedObject& object : parts.objects) {
-    scene.objects.push_back({object.name, Mesh::build(object.soup, object.name, ctx), 0, {}});
+  SceneSource source{name, parts.camera, std::move(parts.lights), {}, where};
+  for (GeneratedObject& object : parts.objects) {
+    source.objects.push_back({object.name, std::move(object.soup), 0, where});
   }
-  scene.finalize();
-  return scene;
+  return source;
+}
+
+Scene make_builtin_scene(const std::string& spec, const Context& ctx) {
+  return assemble_scene(builtin_scene_source(spec, "scene '" + spec + "'"), ctx);
 }
 
 std::vector<std::string> builtin_scene_names() {

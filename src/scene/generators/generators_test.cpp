@@ -208,16 +208,19 @@ TEST(BuiltinScenes, SquareIsTheAnalyticCase) {
   const Scene scene = make_builtin_scene("square", rc.ctx);
   ASSERT_EQ(scene.face_count(), 2u);
   ASSERT_EQ(scene.lights.size(), 1u);
-  EXPECT_EQ(scene.lights[0].position, (Vec3{0, 4, 0}));
+  // In world coordinates, as the generator places them.
+  const WorldFrame& frame = scene.frame;
+  EXPECT_EQ(frame.to_world(scene.lights[0].position), (Vec3{0, 4, 0}));
   const SceneObject& square = scene.objects[0];
   ASSERT_EQ(square.name, "square");
   const Bounds3 b = square.mesh.bounds();
-  EXPECT_EQ(b.lo, (Vec3{-1, 1, -1}));
-  EXPECT_EQ(b.hi, (Vec3{1, 1, 1}));
+  EXPECT_EQ(frame.to_world(b.lo), (Vec3{-1, 1, -1}));
+  EXPECT_EQ(frame.to_world(b.hi), (Vec3{1, 1, 1}));
   const auto objects =
       generate_objects({{"generator", "square"}, {"height", 2}, {"light_height", 5}}, "t");
   EXPECT_EQ(objects[0].soup.positions[0].y, 2);
-  EXPECT_EQ(make_builtin_scene("square:1.5", rc.ctx).objects[0].mesh.vertices[0].y, 1.5);
+  const Scene raised = make_builtin_scene("square:1.5", rc.ctx);
+  EXPECT_EQ(raised.frame.to_world(raised.objects[0].mesh.vertices[0]).y, 1.5);
 }
 
 TEST(CubeField, CubesStayInsideTheFixedVolume) {
@@ -255,13 +258,14 @@ TEST(CubeField, CubesShrinkAsTheirNumberGrows) {
 
 TEST(CubeField, CubesComeBackToFront) {
   const auto objects = generate_objects({{"generator", "cubes"}, {"count", 1000}}, "t");
-  const Camera camera = make_builtin_scene("cubes:1", Context{}).camera;
+  const Scene scene = make_builtin_scene("cubes:1", Context{});
+  const Vec3 eye = scene.frame.to_world(scene.camera.position);
   const auto& p = objects[0].soup.positions;
   double previous = INFINITY;
   for (std::size_t cube = 0; cube < 1000; ++cube) {
     Vec3 center;
     for (std::size_t k = 0; k < 8; ++k) center += p[cube * 8 + k] / 8;
-    const double distance = length(center - camera.position);
+    const double distance = length(center - eye);
     // Jitter moves a centre by at most 0.06 √3 slot (slot = 1 here).
     EXPECT_LE(distance, previous + 2 * 0.06 * std::sqrt(3.0)) << cube;
     previous = distance;

@@ -27,14 +27,7 @@ ParamReader::ParamReader(const nlohmann::json& params, std::string where)
 }
 
 std::string ParamReader::key_where(std::string_view key) const {
-  // "file: key 'objects[2]'" + count -> "file: key 'objects[2].count'" (scene-format.md's
-  // "file: key 'a.b'"); any other label gets ": key 'count'" appended.
-  const std::string marker = ": key '";
-  if (where_.size() > marker.size() && where_.back() == '\'' &&
-      where_.find(marker) != std::string::npos) {
-    return where_.substr(0, where_.size() - 1) + "." + std::string(key) + "'";
-  }
-  return where_ + ": key '" + std::string(key) + "'";
+  return key_location(where_, std::string(key));
 }
 
 void ParamReader::fail(std::string_view key, const std::string& what) const {

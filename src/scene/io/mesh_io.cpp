@@ -1,5 +1,6 @@
 #include "shadowkit/scene/mesh_io.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdio>
@@ -36,30 +37,69 @@ std::string read_whole_file(const std::filesystem::path& path, const std::string
   return data;
 }
 
-}  // namespace
-
-PolygonSoup read_mesh_file(const std::filesystem::path& path) {
-  const std::string where = path.string();
+std::string lower_extension(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
 
-  using Reader = PolygonSoup (*)(std::string_view, const std::string&);
-  Reader reader = nullptr;
-  if (extension == ".obj") reader = &mesh_io::read_obj;
-  if (extension == ".ply") reader = &mesh_io::read_ply;
-  if (extension == ".off") reader = &mesh_io::read_off;
-  if (extension == ".stl") reader = &mesh_io::read_stl;
-  if (reader == nullptr) {
-    throw InputError(where, (extension.empty() ? std::string("the file name has no extension")
-                                               : "unknown mesh format '" + extension + "'") +
-                                "; expected .obj, .ply, .off or .stl");
+using Reader = MeshFile (*)(std::string_view, const std::string&, const Context&);
+
+// shadowkit's own readers, for their exact error positions, and tinygltf for glTF 2.0.
+struct OwnReader {
+  std::string_view extension;
+  Reader read;
+};
+constexpr OwnReader kOwnReaders[] = {
+    {".obj", &mesh_io::read_obj},   {".ply", &mesh_io::read_ply},  {".off", &mesh_io::read_off},
+    {".stl", &mesh_io::read_stl},   {".gltf", &mesh_io::read_gltf}, {".glb", &mesh_io::read_gltf},
+};
+
+Reader own_reader(const std::string& extension) {
+  for (const OwnReader& r : kOwnReaders) {
+    if (r.extension == extension) return r.read;
   }
+  return nullptr;
+}
 
+MeshFile read_any(const std::filesystem::path& path, const Context& ctx) {
+  const std::string where = path.string();
+  const Reader reader = own_reader(lower_extension(path));
+  // Any other format, and a file without an extension, is assimp's to recognise.
+  if (reader == nullptr) return mesh_io::read_with_assimp(where, ctx);
   const std::string data = read_whole_file(path, where);
   if (data.empty()) throw InputError(where, "holds no faces (the file is empty)");
-  PolygonSoup soup = reader(data, where);
-  if (soup.face_count() == 0) throw InputError(where, "holds no faces");
-  return soup;
+  return reader(data, where, ctx);
+}
+
+}  // namespace
+
+MeshFile read_mesh_file(const std::filesystem::path& path, const Context& ctx) {
+  MeshFile file = read_any(path, ctx);
+  if (file.soup.face_count() == 0) {
+    throw InputError(path.string(),
+                     file.skipped_primitives > 0
+                         ? "holds no faces, only " + std::to_string(file.skipped_primitives) +
+                               " points and lines, which cast no shadow"
+                         : std::string("holds no faces"));
+  }
+  return file;
+}
+
+std::vector<std::string> mesh_file_extensions() {
+  std::vector<std::string> extensions;
+  for (const OwnReader& r : kOwnReaders) extensions.emplace_back(r.extension);
+  for (const std::string& e : mesh_io::assimp_extensions()) {
+    if (std::find(extensions.begin(), extensions.end(), e) == extensions.end()) {
+      extensions.push_back(e);
+    }
+  }
+  return extensions;
+}
+
+bool is_mesh_file_name(const std::filesystem::path& path) {
+  const std::vector<std::string> known = mesh_file_extensions();
+  return std::find(known.begin(), known.end(), lower_extension(path)) != known.end();
 }
 
 }  // namespace shadowkit

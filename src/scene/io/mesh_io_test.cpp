@@ -12,7 +12,7 @@ using ::testing::ElementsAre;
 class MeshIoTest : public MeshFileTest {
  protected:
   PolygonSoup read(const std::string& name, std::string_view bytes) const {
-    return read_mesh_file(write(name, bytes));
+    return read_mesh_file(write(name, bytes), ctx_).soup;
   }
   // The shared-vertex formats must give the cube's exact positions and index lists.
   static void expect_indexed_cube(const PolygonSoup& soup) {
@@ -181,21 +181,21 @@ TEST_F(MeshIoTest, StlAsciiWithSeveralSolidsAndUppercaseKeywords) {
 TEST_F(MeshIoTest, ReadsTheExampleModels) {
   const std::filesystem::path models =
       std::filesystem::path(SHADOWKIT_SOURCE_DIR) / "examples" / "models";
-  const PolygonSoup pebble = read_mesh_file(models / "pebble.obj");
+  const PolygonSoup pebble = read_mesh_file(models / "pebble.obj", ctx_).soup;
   for (const char* name : {"pebble.ply", "pebble.off"}) {
-    const PolygonSoup soup = read_mesh_file(models / name);
+    const PolygonSoup soup = read_mesh_file(models / name, ctx_).soup;
     EXPECT_EQ(soup.positions, pebble.positions) << name;
     EXPECT_EQ(soup.indices, pebble.indices) << name;
     EXPECT_EQ(soup.face_start, pebble.face_start) << name;
   }
-  const PolygonSoup stl = read_mesh_file(models / "pebble.stl");
+  const PolygonSoup stl = read_mesh_file(models / "pebble.stl", ctx_).soup;
   std::size_t triangles = 0;
   for (std::size_t f = 0; f < pebble.face_count(); ++f) {
     triangles += pebble.face_start[f + 1] - pebble.face_start[f] - 2;
   }
   EXPECT_EQ(stl.face_count(), triangles);
-  EXPECT_GT(read_mesh_file(models / "torus-knot.obj").face_count(), 1000u);
-  EXPECT_GT(read_mesh_file(models / "open-sheet.obj").face_count(), 400u);
+  EXPECT_GT(read_mesh_file(models / "torus-knot.obj", ctx_).soup.face_count(), 1000u);
+  EXPECT_GT(read_mesh_file(models / "open-sheet.obj", ctx_).soup.face_count(), 400u);
 }
 
 }  // namespace

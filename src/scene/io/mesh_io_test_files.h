@@ -49,9 +49,9 @@ class MeshFileTest : public ::testing::Test {
   }
 
   /// The message read_mesh_file() throws for \p path; fails the test when it throws nothing.
-  static std::string error_of(const std::filesystem::path& path) {
+  std::string error_of(const std::filesystem::path& path) const {
     try {
-      read_mesh_file(path);
+      read_mesh_file(path, ctx_);
     } catch (const InputError& error) {
       return error.what();
     }
@@ -60,6 +60,9 @@ class MeshFileTest : public ::testing::Test {
   }
 
   std::filesystem::path dir_;
+  /// Warnings of the readers, in order.
+  std::vector<std::string> warnings_;
+  Context ctx_{.threads = 0, .warn = [this](const std::string& w) { warnings_.push_back(w); }};
 };
 
 /// Builds binary file contents value by value in either byte order.

@@ -42,7 +42,8 @@ void parse_counts(TextCursor& in, std::vector<std::string_view>& tokens, std::ui
 
 }  // namespace
 
-PolygonSoup read_off(std::string_view data, const std::string& path) {
+MeshFile read_off(std::string_view data, const std::string& path, const Context& /*ctx*/) {
+  refuse_utf16(data, path);
   TextCursor in(data, path, {.comment = '#'});
   if (!in.next_nonblank_line()) throw InputError(path, "holds no faces (the file has no content)");
 
@@ -67,7 +68,8 @@ PolygonSoup read_off(std::string_view data, const std::string& path) {
   std::uint64_t vertex_count = 0, face_count = 0;
   parse_counts(in, count_tokens, vertex_count, face_count);
 
-  PolygonSoup soup;
+  MeshFile file;
+  PolygonSoup& soup = file.soup;
   // Each vertex needs a line of at least six bytes, so the file's size bounds an honest count.
   soup.positions.reserve(std::min<std::uint64_t>(vertex_count, data.size() / 6));
   for (std::uint64_t v = 0; v < vertex_count; ++v) {
@@ -99,7 +101,8 @@ PolygonSoup read_off(std::string_view data, const std::string& path) {
     // Any values left on the line are the face's colour.
     if (!face.empty()) soup.add_face(face);
   }
-  return soup;
+  file.stored_polygons = soup.face_count();
+  return file;
 }
 
 }  // namespace shadowkit::mesh_io

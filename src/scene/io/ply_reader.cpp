@@ -1,5 +1,6 @@
-// PLY, ASCII or binary of either byte order. Only the vertex positions and the face index
-// lists are kept; every other element and property is skipped.
+// PLY, ASCII or binary of either byte order. Only the vertex positions, the face index lists
+// and triangle strips are kept; every other element and property is skipped, and so are
+// header lines PLY does not define (old Blender exporters wrote one), with a warning.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "readers.h"
+#include "skipped_items.h"
 #include "text_cursor.h"
 
 namespace shadowkit::mesh_io {
@@ -47,7 +49,7 @@ std::optional<Scalar> scalar_named(std::string_view name) {
 }
 
 // What a property means to the reader; kX, kY and kZ are 1 + the axis.
-enum class Role : std::uint8_t { kSkip, kX, kY, kZ, kIndices };
+enum class Role : std::uint8_t { kSkip, kX, kY, kZ, kIndices, kStrip };
 
 struct Property {
   std::string name;
@@ -71,6 +73,7 @@ struct Header {
   std::vector<Element> elements;
   std::size_t vertex = kNone;  // positions in elements
   std::size_t face = kNone;
+  std::size_t strips = kNone;  // "tristrips": strips of triangles, -1 between strips
 };
 
 Property* find_property(Element& element, std::string_view name) {
@@ -78,6 +81,20 @@ Property* find_property(Element& element, std::string_view name) {
     if (p.name == name) return &p;
   }
   return nullptr;
+}
+
+// The list of vertex indices of a face or strip element, which must hold integers.
+Property& index_list(Element& element, const std::string& path) {
+  Property* p = find_property(element, "vertex_indices");
+  if (p == nullptr) p = find_property(element, "vertex_index");
+  if (p == nullptr || !p->list) {
+    throw InputError(path, "the " + element.name + " element has no 'vertex_indices' list property");
+  }
+  if (p->type >= Scalar::kFloat || p->count_type >= Scalar::kFloat) {
+    throw InputError(path, "the " + element.name + " property '" + p->name +
+                               "' must use integer types");
+  }
+  return *p;
 }
 
 // Marks the properties that matter and checks that the ones needed exist.
@@ -99,22 +116,17 @@ void assign_roles(Header& header, const std::string& path) {
       }
       header.vertex = e;
     } else if (element.name == "face" && header.face == Header::kNone) {
-      Property* p = find_property(element, "vertex_indices");
-      if (p == nullptr) p = find_property(element, "vertex_index");
-      if (p == nullptr || !p->list) {
-        throw InputError(path, "the face element has no 'vertex_indices' list property");
-      }
-      if (p->type >= Scalar::kFloat || p->count_type >= Scalar::kFloat) {
-        throw InputError(path, "the face property '" + p->name + "' must use integer types");
-      }
-      p->role = Role::kIndices;
+      index_list(element, path).role = Role::kIndices;
       header.face = e;
+    } else if (element.name == "tristrips" && header.strips == Header::kNone) {
+      index_list(element, path).role = Role::kStrip;
+      header.strips = e;
     }
   }
   if (header.vertex == Header::kNone) {
     throw InputError(path, "the header declares no vertex element");
   }
-  if (header.face == Header::kNone) {
+  if (header.face == Header::kNone && header.strips == Header::kNone) {
     throw InputError(path, "holds no faces (the header declares no face element)");
   }
   const std::uint64_t vertex_count = header.elements[header.vertex].count;
@@ -124,7 +136,7 @@ void assign_roles(Header& header, const std::string& path) {
   }
 }
 
-Header read_header(TextCursor& in) {
+Header read_header(TextCursor& in, SkippedItems& skipped) {
   Header header;
   if (!in.next_line() || in.token() != "ply" || !in.line_done()) {
     throw InputError(in.path(), "not a PLY file: the first line is not 'ply'");
@@ -176,7 +188,7 @@ Header read_header(TextCursor& in) {
       if (property.name.empty()) in.fail("the property has no name");
       header.elements.back().properties.push_back(std::move(property));
     } else {
-      in.fail("unexpected " + quote(keyword) + " in the PLY header");
+      skipped.add("header line(s) that PLY does not define", in.line_number());
     }
   }
   if (!have_format) throw InputError(in.path(), "the header has no 'format' line");
@@ -295,14 +307,33 @@ std::uint64_t read_list_count(Source& in, const Property& p, const Element& e, s
   return static_cast<std::uint64_t>(n);
 }
 
+constexpr std::uint32_t kStripRestart = std::numeric_limits<std::uint32_t>::max();
+
+// Adds the triangles of \p strip, whose runs are separated by kStripRestart; every second
+// triangle of a run is reversed so that all keep the strip's orientation.
+void add_strip_triangles(const std::vector<std::uint32_t>& strip, PolygonSoup& soup) {
+  std::size_t run = 0;  // vertices of the current run seen so far
+  for (std::size_t k = 0; k < strip.size(); ++k) {
+    if (strip[k] == kStripRestart) {
+      run = 0;
+      continue;
+    }
+    if (++run < 3) continue;
+    const std::uint32_t a = strip[k - 2], b = strip[k - 1], c = strip[k];
+    run % 2 == 1 ? soup.add_face({a, b, c}) : soup.add_face({b, a, c});
+  }
+}
+
 template <typename Source>
-void read_body(const Header& header, Source& in, PolygonSoup& soup) {
+void read_body(const Header& header, Source& in, MeshFile& file) {
+  PolygonSoup& soup = file.soup;
   const std::uint64_t vertex_count = header.elements[header.vertex].count;
   std::vector<std::uint32_t> face;
   for (std::size_t e = 0; e < header.elements.size(); ++e) {
     const Element& element = header.elements[e];
     const bool is_vertex = e == header.vertex;
     const bool is_face = e == header.face;
+    const bool is_strips = e == header.strips;
     // Items without properties take no bytes; counting through them could take forever.
     if (element.properties.empty()) continue;
     for (std::uint64_t i = 0; i < element.count; ++i) {
@@ -319,18 +350,23 @@ void read_body(const Header& header, Source& in, PolygonSoup& soup) {
           continue;
         }
         const std::uint64_t n = read_list_count(in, p, element, i);
-        if (p.role != Role::kIndices) {
+        if (p.role != Role::kIndices && p.role != Role::kStrip) {
           in.skip(p, p.type, n);
           continue;
         }
+        const std::string item = element.name + " " + std::to_string(i);
         for (std::uint64_t k = 0; k < n; ++k) {
           const double index = in.value(p, p.type);
+          if (p.role == Role::kStrip && index == -1) {
+            face.push_back(kStripRestart);
+            continue;
+          }
           if (index != std::floor(index)) {
-            in.fail("face " + std::to_string(i) + " has vertex index " + format_number(index) +
+            in.fail(item + " has vertex index " + format_number(index) +
                     ", which is not a whole number");
           }
           if (!(index >= 0 && index < static_cast<double>(vertex_count))) {
-            in.fail("face " + std::to_string(i) + " has vertex index " + format_number(index) +
+            in.fail(item + " has vertex index " + format_number(index) +
                     " out of range (the file has " + std::to_string(vertex_count) + " vertices)");
           }
           face.push_back(static_cast<std::uint32_t>(index));
@@ -347,6 +383,8 @@ void read_body(const Header& header, Source& in, PolygonSoup& soup) {
         soup.positions.push_back(point);
       } else if (is_face && !face.empty()) {
         soup.add_face(face);
+      } else if (is_strips) {
+        add_strip_triangles(face, soup);
       }
     }
   }
@@ -367,24 +405,28 @@ std::uint64_t min_item_bytes(const Element& element, Encoding encoding) {
 
 }  // namespace
 
-PolygonSoup read_ply(std::string_view data, const std::string& path) {
+MeshFile read_ply(std::string_view data, const std::string& path, const Context& ctx) {
+  refuse_utf16(data, path);
   TextCursor in(data, path);
-  const Header header = read_header(in);
+  SkippedItems skipped;
+  const Header header = read_header(in, skipped);
+  skipped.warn(path, ctx);
   const std::string_view body = data.substr(std::min(in.offset(), data.size()));
 
-  PolygonSoup soup;
+  MeshFile file;
   const Element& vertex = header.elements[header.vertex];
-  soup.positions.reserve(
+  file.soup.positions.reserve(
       std::min<std::uint64_t>(vertex.count, body.size() / min_item_bytes(vertex, header.encoding)));
   if (header.encoding == Encoding::kAscii) {
     AsciiSource source(in);
-    read_body(header, source, soup);
+    read_body(header, source, file);
   } else {
     const bool big_endian_file = header.encoding == Encoding::kBigEndian;
     BinarySource source(body, big_endian_file != (std::endian::native == std::endian::big), path);
-    read_body(header, source, soup);
+    read_body(header, source, file);
   }
-  return soup;
+  file.stored_polygons = file.soup.face_count();
+  return file;
 }
 
 }  // namespace shadowkit::mesh_io

@@ -1,16 +1,28 @@
 #pragma once
 /// \brief The per-format mesh readers behind read_mesh_file(). Each parses a whole file held
-/// in memory; \p path only labels error messages.
+/// in memory; \p path labels messages and locates files the mesh refers to (glTF buffers),
+/// and \p ctx receives warnings about what is skipped.
 #include <string>
 #include <string_view>
+#include <vector>
 
-#include "shadowkit/scene/mesh.h"
+#include "shadowkit/core/context.h"
+#include "shadowkit/core/error.h"
+#include "shadowkit/scene/mesh_io.h"
 
 namespace shadowkit::mesh_io {
 
-PolygonSoup read_obj(std::string_view data, const std::string& path);
-PolygonSoup read_ply(std::string_view data, const std::string& path);
-PolygonSoup read_off(std::string_view data, const std::string& path);
-PolygonSoup read_stl(std::string_view data, const std::string& path);
+MeshFile read_obj(std::string_view data, const std::string& path, const Context& ctx);
+MeshFile read_ply(std::string_view data, const std::string& path, const Context& ctx);
+MeshFile read_off(std::string_view data, const std::string& path, const Context& ctx);
+MeshFile read_stl(std::string_view data, const std::string& path, const Context& ctx);
+MeshFile read_gltf(std::string_view data, const std::string& path, const Context& ctx);
+
+/// Reads \p path with assimp, in a child process that a crash or a hang cannot take down
+/// with shadowkit (limits::kImportSeconds, limits::kImportBytes).
+MeshFile read_with_assimp(const std::string& path, const Context& ctx);
+
+/// The extensions assimp's importers claim, lower case with the dot (".dae", ".fbx", ...).
+std::vector<std::string> assimp_extensions();
 
 }  // namespace shadowkit::mesh_io

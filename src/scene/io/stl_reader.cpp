@@ -41,11 +41,12 @@ bool is_binary(std::string_view data) {
     const auto count = load_little_endian<std::uint32_t>(data.data() + 80);
     if (kHeaderBytes + kRecordBytes * std::uint64_t{count} == data.size()) return true;
   }
-  const std::size_t start = data.find_first_not_of(" \t\r\n");
-  if (start == std::string_view::npos || !equals_ignoring_case(data.substr(start, 5), "solid")) {
+  const std::string_view text = without_utf8_bom(data);
+  const std::size_t start = text.find_first_not_of(" \t\r\n");
+  if (start == std::string_view::npos || !equals_ignoring_case(text.substr(start, 5), "solid")) {
     return true;
   }
-  const std::string_view sample = data.substr(std::min<std::size_t>(data.size(), 80), 1024);
+  const std::string_view sample = text.substr(std::min<std::size_t>(text.size(), 80), 1024);
   return std::any_of(sample.begin(), sample.end(), [](char c) {
     const auto u = static_cast<unsigned char>(c);
     return u < 0x09 || (u > 0x0d && u < 0x20) || u == 0x7f;
@@ -143,8 +144,11 @@ PolygonSoup read_ascii(std::string_view data, const std::string& path) {
 
 }  // namespace
 
-PolygonSoup read_stl(std::string_view data, const std::string& path) {
-  return is_binary(data) ? read_binary(data, path) : read_ascii(data, path);
+MeshFile read_stl(std::string_view data, const std::string& path, const Context& /*ctx*/) {
+  MeshFile file;
+  file.soup = is_binary(data) ? read_binary(data, path) : read_ascii(data, path);
+  file.stored_polygons = file.soup.face_count();
+  return file;
 }
 
 }  // namespace shadowkit::mesh_io

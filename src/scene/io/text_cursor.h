@@ -55,9 +55,22 @@ inline std::string quote(std::string_view token) {
   return quoted + (token.size() > kMax ? "...'" : "'");
 }
 
+/// \p text without a leading UTF-8 byte order mark, which some Windows tools write.
+inline std::string_view without_utf8_bom(std::string_view text) {
+  return text.starts_with("\xEF\xBB\xBF") ? text.substr(3) : text;
+}
+
+/// Throws when \p text begins with a UTF-16 byte order mark: read as bytes it would give
+/// messages about characters the file does not hold.
+inline void refuse_utf16(std::string_view text, const std::string& path) {
+  if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF")) {
+    throw InputError(path, "is UTF-16 text; save it as UTF-8 or ASCII");
+  }
+}
+
 /// \brief Walks a text line by line and each line token by token (whitespace-separated).
 ///
-/// Strips '\r' (CRLF files), and optionally comments and '\'-continued lines. Errors thrown
+/// Skips a UTF-8 byte order mark, strips '\r' (CRLF files), and optionally comments and '\'-continued lines. Errors thrown
 /// through fail() name the file and the current line.
 class TextCursor {
  public:
@@ -67,7 +80,10 @@ class TextCursor {
   };
 
   TextCursor(std::string_view text, std::string path, Options options)
-      : text_(text), path_(std::move(path)), options_(options) {}
+      : text_(text),
+        path_(std::move(path)),
+        options_(options),
+        next_(text.size() - without_utf8_bom(text).size()) {}
   TextCursor(std::string_view text, std::string path) : TextCursor(text, std::move(path), {}) {}
 
   /// Moves to the next line; false at the end of the text.
@@ -197,7 +213,7 @@ class TextCursor {
   std::string_view text_;
   std::string path_;
   Options options_;
-  std::size_t next_ = 0;  // offset of the next physical line
+  std::size_t next_;  // offset of the next physical line
   std::size_t line_number_ = 0;
   std::size_t next_line_number_ = 1;
   std::string_view rest_;  // the unread part of the current line

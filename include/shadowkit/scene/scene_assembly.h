@@ -1,0 +1,39 @@
+#pragma once
+/// \brief Turning what a scene file or a generator describes into a Scene: range checks, the
+/// working frame, meshes and tessellations.
+#include <string>
+#include <vector>
+
+#include "shadowkit/core/context.h"
+#include "shadowkit/scene/scene.h"
+
+namespace shadowkit {
+
+/// \brief One object as its source gives it, in world coordinates.
+struct ObjectSource {
+  std::string name;
+  PolygonSoup soup;
+  /// Segments per patch edge when \p soup is a Catmull-Clark control mesh; 0: polygons.
+  int tessellation = 0;
+  /// Labels the object's errors and warnings ("scene.json: key 'objects[2]'").
+  std::string where;
+};
+
+/// \brief A scene as described, before its working frame is chosen.
+struct SceneSource {
+  std::string name;
+  Camera camera;
+  std::vector<Light> lights;
+  std::vector<ObjectSource> objects;
+  /// Labels errors about the whole scene (the file, or "scene 'cubes:2000'").
+  std::string where;
+};
+
+/// Checks every coordinate against limits::kCoordinate and the geometry's size against its
+/// distance from the origin (limits::kSizeToOffset), chooses the working frame (Scene::frame),
+/// moves camera, lights and objects into it, and builds meshes and tessellations, refusing
+/// more than limits::kPolygons polygons before building them. InputError names the object or
+/// key at fault.
+Scene assemble_scene(SceneSource source, const Context& ctx);
+
+}  // namespace shadowkit

@@ -1,0 +1,131 @@
+#include "shadowkit/scene/scene_assembly.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "shadowkit/core/error.h"
+#include "shadowkit/scene/limits.h"
+#include "shadowkit/scene/subdivision.h"
+
+namespace shadowkit {
+namespace {
+
+std::string number_text(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+void check_coordinates(const ObjectSource& object) {
+  for (const Vec3& p : object.soup.positions) {
+    if (!is_finite(p) || max_abs_component(p) > limits::kCoordinate) {
+      throw InputError(object.where, "after any transform, a vertex lies beyond +-1e15, which is not supported");
+    }
+  }
+}
+
+// The geometry must be large enough against its distance from the origin for its
+// coordinates to describe it: a millimetre part a billion units out is mostly rounding.
+void check_size_against_offset(const Bounds3& geometry, const std::string& where) {
+  if (geometry.empty()) return;
+  const double offset = std::max(max_abs_component(geometry.lo), max_abs_component(geometry.hi));
+  const double size = geometry.diagonal();
+  if (size < limits::kSizeToOffset * offset) {
+    throw InputError(where, "the geometry is " + number_text(size) + " across but lies " +
+                                number_text(offset) +
+                                " from the origin: its coordinates hold too few digits of its "
+                                "shape (the size must be at least 1e-11 of the distance)");
+  }
+}
+
+// A position in working coordinates; \p key names it when it lies too far from the scene.
+Vec3 working_position(const WorldFrame& frame, Vec3 p, const std::string& where,
+                      const std::string& key) {
+  const Vec3 q = frame.to_working(p);
+  if (max_abs_component(q) > limits::kCoordinate) {
+    throw InputError(key_location(where, key),
+                     "lies more than 1e15 times the scene's size away from it");
+  }
+  return q;
+}
+
+class PolygonBudget {
+ public:
+  /// Takes \p polygons from the budget; InputError at \p where when it runs out.
+  void take(std::size_t polygons, const std::string& where) {
+    if (polygons > limits::kPolygons - used_) {
+      throw InputError(where, "the scene would hold more than " +
+                                  std::to_string(limits::kPolygons) + " polygons (" +
+                                  std::to_string(used_ + polygons) + ")");
+    }
+    used_ += polygons;
+  }
+
+ private:
+  std::size_t used_ = 0;
+};
+
+SceneObject build_object(ObjectSource& object, PolygonBudget& budget, const Context& ctx) {
+  const std::string label = object.where + " (" + object.name + ")";
+  if (object.tessellation == 0) {
+    budget.take(object.soup.face_count(), object.where);
+    return {object.name, Mesh::build(object.soup, label, ctx), 0, {}};
+  }
+  auto surface = SubdivisionSurface::build(object.soup, label);
+  // Two triangles per cell, segments x segments cells per patch: counted before tessellating.
+  const std::size_t per_patch = 2 * std::size_t(object.tessellation) * object.tessellation;
+  if (surface->patch_count() > limits::kPolygons / per_patch) {
+    throw InputError(key_location(object.where, "tessellation"),
+                     std::to_string(object.tessellation) + " segments on " +
+                         std::to_string(surface->patch_count()) + " patches would make " +
+                         std::to_string(surface->patch_count() * per_patch) +
+                         " triangles; at most " + std::to_string(limits::kPolygons) +
+                         " are allowed");
+  }
+  budget.take(surface->patch_count() * per_patch, key_location(object.where, "tessellation"));
+  return {object.name, Mesh::build(surface->tessellate(object.tessellation), label, ctx), 0,
+          std::move(surface)};
+}
+
+}  // namespace
+
+WorldFrame WorldFrame::around(const Bounds3& geometry) {
+  const double size = geometry.diagonal();
+  if (geometry.empty() || !(size > 0)) return {geometry.empty() ? Vec3{} : geometry.center(), 1};
+  return {geometry.center(), std::exp2(std::round(std::log2(size)))};
+}
+
+Scene assemble_scene(SceneSource source, const Context& ctx) {
+  Bounds3 geometry;
+  for (const ObjectSource& object : source.objects) {
+    check_coordinates(object);
+    for (const Vec3& p : object.soup.positions) geometry.add(p);
+  }
+  check_size_against_offset(geometry, source.where);
+
+  Scene scene;
+  scene.name = std::move(source.name);
+  scene.frame = WorldFrame::around(geometry);
+  scene.camera = source.camera;
+  scene.camera.position =
+      working_position(scene.frame, source.camera.position, source.where, "camera.position");
+  scene.camera.look_at =
+      working_position(scene.frame, source.camera.look_at, source.where, "camera.look_at");
+  for (std::size_t l = 0; l < source.lights.size(); ++l) {
+    Light light = source.lights[l];
+    if (light.type == Light::Type::point) {
+      light.position = working_position(scene.frame, light.position, source.where,
+                                        "lights[" + std::to_string(l) + "].position");
+    }
+    scene.lights.push_back(light);
+  }
+  PolygonBudget budget;
+  for (ObjectSource& object : source.objects) {
+    for (Vec3& p : object.soup.positions) p = scene.frame.to_working(p);
+    scene.objects.push_back(build_object(object, budget, ctx));
+  }
+  scene.finalize();
+  return scene;
+}
+
+}  // namespace shadowkit
