@@ -19,7 +19,7 @@ std::string number_text(double x) {
 void check_coordinates(const ObjectSource& object) {
   for (const Vec3& p : object.soup.positions) {
     if (!is_finite(p) || max_abs_component(p) > limits::kCoordinate) {
-      throw InputError(object.where, "after any transform, a vertex lies beyond +-1e15, which is not supported");
+      throw InputError(object.where, "a vertex lies beyond +-1e15, which is not supported");
     }
   }
 }
@@ -29,7 +29,11 @@ void check_coordinates(const ObjectSource& object) {
 void check_size_against_offset(const Bounds3& geometry, const std::string& where) {
   if (geometry.empty()) return;
   const double offset = std::max(max_abs_component(geometry.lo), max_abs_component(geometry.hi));
-  const double size = geometry.diagonal();
+  const double size = max_abs_component(geometry.extent());
+  if (size < limits::kSmallestSize && offset > 0) {
+    throw InputError(where, "the geometry is " + number_text(size) + " across; below 1e-290, "
+                            "coordinates lose the precision that describes it");
+  }
   if (size < limits::kSizeToOffset * offset) {
     throw InputError(where, "the geometry is " + number_text(size) + " across but lies " +
                                 number_text(offset) +
@@ -90,7 +94,8 @@ SceneObject build_object(ObjectSource& object, PolygonBudget& budget, const Cont
 }  // namespace
 
 WorldFrame WorldFrame::around(const Bounds3& geometry) {
-  const double size = geometry.diagonal();
+  // The largest extent, not the diagonal: its squares would underflow for tiny scenes.
+  const double size = geometry.empty() ? 0.0 : max_abs_component(geometry.extent());
   if (geometry.empty() || !(size > 0)) return {geometry.empty() ? Vec3{} : geometry.center(), 1};
   return {geometry.center(), std::exp2(std::round(std::log2(size)))};
 }

@@ -24,6 +24,9 @@ inline constexpr double kCoordinate = 1e15;
 /// The smallest ratio of the scene's size to its largest coordinate: below it, coordinates
 /// carry fewer than about five significant digits of the geometry itself.
 inline constexpr double kSizeToOffset = 1e-11;
+/// The smallest size of a scene's geometry: below it, coordinates are subnormal numbers with
+/// too few bits to describe it.
+inline constexpr double kSmallestSize = 1e-290;
 
 /// Segments per patch edge of a Catmull-Clark object's tessellation.
 inline constexpr int kTessellation = 256;

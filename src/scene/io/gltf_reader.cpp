@@ -463,13 +463,14 @@ void place_nodes(const GltfSource& src, GltfMeshes& meshes, MeshFile& file) {
   const tinygltf::Model& model = src.model();
   struct Visit {
     std::size_t node;
+    std::size_t parent_node;  // for messages; a root's is its own
     Affine parent;
     bool leaving;
   };
   std::vector<char> on_path(model.nodes.size(), 0);
   std::vector<Visit> stack;
   const std::vector<std::size_t> roots = root_nodes(src);
-  for (std::size_t r = roots.size(); r-- > 0;) stack.push_back({roots[r], {}, false});
+  for (std::size_t r = roots.size(); r-- > 0;) stack.push_back({roots[r], roots[r], {}, false});
   std::size_t visits = 0;
   while (!stack.empty()) {
     const Visit visit = stack.back();
@@ -479,7 +480,10 @@ void place_nodes(const GltfSource& src, GltfMeshes& meshes, MeshFile& file) {
       continue;
     }
     const std::string key = "nodes[" + std::to_string(visit.node) + "]";
-    if (on_path[visit.node]) src.fail(key + ".children", "the node is its own ancestor");
+    if (on_path[visit.node]) {
+      src.fail("nodes[" + std::to_string(visit.parent_node) + "].children",
+               "names node " + std::to_string(visit.node) + ", its own ancestor");
+    }
     if (++visits > limits::kPolygons) {
       src.fail(key, "the node hierarchy places nodes more than " +
                         std::to_string(limits::kPolygons) + " times");
@@ -488,10 +492,10 @@ void place_nodes(const GltfSource& src, GltfMeshes& meshes, MeshFile& file) {
     const tinygltf::Node& node = model.nodes[visit.node];
     const Affine world = visit.parent * local_transform(node, src, visit.node);
     if (node.mesh >= 0) meshes.place(src.index(node.mesh, model.meshes.size(), key + ".mesh"), world, file);
-    stack.push_back({visit.node, {}, true});
+    stack.push_back({visit.node, visit.node, {}, true});
     for (std::size_t c = node.children.size(); c-- > 0;) {
-      stack.push_back(
-          {src.index(node.children[c], model.nodes.size(), key + ".children"), world, false});
+      stack.push_back({src.index(node.children[c], model.nodes.size(), key + ".children"),
+                       visit.node, world, false});
     }
   }
 }

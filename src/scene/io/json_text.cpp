@@ -65,6 +65,9 @@ nlohmann::json parse_json_text(std::string_view text, const std::string& file) {
   // column 5: " or "[json.exception.out_of_range.406] "; the line is said once, in front.
   std::string what = parser.what_.substr(parser.what_.find("] ") + 2);
   if (what.starts_with("parse error")) what = what.substr(what.find(": ") + 2);
+  // The token nlohmann quotes may be a 400-digit number or a whole line.
+  constexpr std::size_t kLongest = 160;
+  if (what.size() > kLongest) what = what.substr(0, kLongest) + "...";
   throw InputError(at_line(text, parser.position_, file), "malformed JSON: " + what);
 }
 

@@ -14,15 +14,22 @@
 namespace shadowkit {
 namespace {
 
-std::string read_whole_file(const std::filesystem::path& path, const std::string& where) {
+using File = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
+
+File open_file(const std::filesystem::path& path, const std::string& where) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
     throw InputError(where, "cannot read the file: it is a directory");
   }
   // stdio rather than iostreams: errno then says why opening failed.
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                       &std::fclose);
+  File file(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!file) throw InputError(where, std::string("cannot open the file: ") + std::strerror(errno));
+  return file;
+}
+
+std::string read_whole_file(const std::filesystem::path& path, const std::string& where) {
+  const File file = open_file(path, where);
+  std::error_code error;
   // One read into a buffer of the file's size; the loop catches a file that grew meanwhile.
   const auto size = std::filesystem::file_size(path, error);
   std::string data(error ? 0 : size, '\0');
@@ -66,7 +73,10 @@ MeshFile read_any(const std::filesystem::path& path, const Context& ctx) {
   const std::string where = path.string();
   const Reader reader = own_reader(lower_extension(path));
   // Any other format, and a file without an extension, is assimp's to recognise.
-  if (reader == nullptr) return mesh_io::read_with_assimp(where, ctx);
+  if (reader == nullptr) {
+    open_file(path, where);  // a missing file is said in shadowkit's words, not assimp's
+    return mesh_io::read_with_assimp(where, ctx);
+  }
   const std::string data = read_whole_file(path, where);
   if (data.empty()) throw InputError(where, "holds no faces (the file is empty)");
   return reader(data, where, ctx);

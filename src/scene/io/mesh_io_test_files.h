@@ -59,6 +59,16 @@ class MeshFileTest : public ::testing::Test {
     return {};
   }
 
+  /// The message read_mesh_file() throws for a file \p name holding \p bytes.
+  std::string error(const std::string& name, std::string_view bytes) const {
+    return error_of(write(name, bytes));
+  }
+  /// The location prefix of messages about \p name, at \p line.
+  std::string at(const std::string& name, int line) const {
+    return (dir_ / name).string() + ":" + std::to_string(line) + ": ";
+  }
+  std::string at(const std::string& name) const { return (dir_ / name).string() + ": "; }
+
   std::filesystem::path dir_;
   /// Warnings of the readers, in order.
   std::vector<std::string> warnings_;
