@@ -7,6 +7,7 @@ find_package(CLI11 REQUIRED)
 find_package(PNG REQUIRED)
 find_package(TinyGLTF REQUIRED)
 find_package(assimp 5 REQUIRED)
+find_package(absl REQUIRED)
 
 find_path(STB_INCLUDE_DIR stb_image_write.h PATH_SUFFIXES stb REQUIRED)
 add_library(shadowkit_stb INTERFACE)

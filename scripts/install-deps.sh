@@ -5,7 +5,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libembree-dev libtbb-dev libosd-dev
   nlohmann-json3-dev libcli11-dev libstb-dev libpng-dev
-  libtinygltf-dev libassimp-dev assimp-utils assimp-testmodels
+  libtinygltf-dev libassimp-dev assimp-utils assimp-testmodels libabsl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-14 libfuzzer-14-dev libclang-rt-14-dev assimp-testmodels  # fuzz/: docs/fuzzing.md
 )

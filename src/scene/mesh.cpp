@@ -4,7 +4,9 @@
 #include <cmath>
 #include <span>
 #include <string>
-#include <unordered_map>
+#include <utility>
+
+#include <absl/container/flat_hash_map.h>
 
 #include "shadowkit/core/error.h"
 #include "shadowkit/scene/triangulate.h"
@@ -42,47 +44,51 @@ constexpr double kDegenerateArea = 1e-14;  // of the face's squared diameter
 struct CellKey {
   std::int64_t x, y, z;
   bool operator==(const CellKey&) const = default;
-};
-struct CellHash {
-  std::size_t operator()(const CellKey& k) const {
-    return std::size_t(std::uint64_t(k.x) * 73856093u ^ std::uint64_t(k.y) * 19349663u ^
-                       std::uint64_t(k.z) * 83492791u);
+  template <typename H>
+  friend H AbslHashValue(H h, const CellKey& k) {
+    return H::combine(std::move(h), k.x, k.y, k.z);
   }
 };
 
 // Merges positions closer than `tolerance` (in every coordinate) on a hash grid whose cells
-// are twice the tolerance wide, so only the 27 neighbouring cells need checking. Cells count
-// from the box's low corner: keys stay below diagonal / cell = 5e8 wherever the mesh sits.
+// are twice the tolerance wide. Only cells the point's tolerance box reaches can hold a match:
+// two per axis, searched in the same order as the 27 around it would be. Cells count from the
+// box's low corner: keys stay below diagonal / cell = 5e8 wherever the mesh sits.
 std::vector<std::uint32_t> weld(std::span<const Vec3> positions, const Bounds3& box,
                                 double tolerance, std::vector<Vec3>& welded) {
+  constexpr std::uint32_t kNone = std::uint32_t(-1);
   const double cell = tolerance > 0 ? 2 * tolerance : 1.0;  // one point: any cell will do
-  std::unordered_map<CellKey, std::vector<std::uint32_t>, CellHash> grid;
-  grid.reserve(positions.size());
+  absl::flat_hash_map<CellKey, std::uint32_t> first_in_cell;  // the cell's latest welded vertex
+  first_in_cell.reserve(positions.size());
+  std::vector<std::uint32_t> next_in_cell;  // per welded vertex: the one before it in its cell
   std::vector<std::uint32_t> remap(positions.size());
   auto key_of = [&](Vec3 p) {
     const Vec3 q = (p - box.lo) / cell;
     return CellKey{std::int64_t(q.x), std::int64_t(q.y), std::int64_t(q.z)};
   };
+  // The earliest welded vertex of a cell within tolerance of p, as the cell's list kept it.
+  auto match_in = [&](const CellKey& k, Vec3 p) {
+    const auto it = first_in_cell.find(k);
+    std::uint32_t found = kNone;
+    for (std::uint32_t w = it == first_in_cell.end() ? kNone : it->second; w != kNone;
+         w = next_in_cell[w]) {
+      if (max_abs_component(welded[w] - p) <= tolerance) found = w;
+    }
+    return found;
+  };
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const Vec3 p = positions[i];
-    const CellKey k = key_of(p);
-    std::uint32_t found = std::uint32_t(-1);
-    for (int dx = -1; dx <= 1 && found == std::uint32_t(-1); ++dx)
-      for (int dy = -1; dy <= 1 && found == std::uint32_t(-1); ++dy)
-        for (int dz = -1; dz <= 1 && found == std::uint32_t(-1); ++dz) {
-          auto it = grid.find({k.x + dx, k.y + dy, k.z + dz});
-          if (it == grid.end()) continue;
-          for (std::uint32_t w : it->second) {
-            if (max_abs_component(welded[w] - p) <= tolerance) {
-              found = w;
-              break;
-            }
-          }
-        }
-    if (found == std::uint32_t(-1)) {
+    const CellKey lo = key_of(p - Vec3{tolerance, tolerance, tolerance});
+    const CellKey hi = key_of(p + Vec3{tolerance, tolerance, tolerance});
+    std::uint32_t found = kNone;
+    for (std::int64_t x = lo.x; x <= hi.x && found == kNone; ++x)
+      for (std::int64_t y = lo.y; y <= hi.y && found == kNone; ++y)
+        for (std::int64_t z = lo.z; z <= hi.z && found == kNone; ++z) found = match_in({x, y, z}, p);
+    if (found == kNone) {
       found = std::uint32_t(welded.size());
       welded.push_back(p);
-      grid[k].push_back(found);
+      auto [it, inserted] = first_in_cell.try_emplace(key_of(p), found);
+      next_in_cell.push_back(inserted ? kNone : std::exchange(it->second, found));
     }
     remap[i] = found;
   }
@@ -220,7 +226,7 @@ Mesh Mesh::build(const PolygonSoup& soup, const std::string& name, const Context
 }
 
 void Mesh::build_adjacency() {
-  std::unordered_map<std::uint64_t, std::uint32_t> edge_of;
+  absl::flat_hash_map<std::uint64_t, std::uint32_t> edge_of;
   edge_of.reserve(face_vertices.size());
   corner_edge.resize(face_vertices.size());
   std::vector<std::uint32_t> uses_per_edge;

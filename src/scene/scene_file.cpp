@@ -204,7 +204,7 @@ Scene mesh_scene(MeshFile file, const fs::path& path, const Context& ctx) {
   const double radius = box.diagonal() > 0 ? 0.5 * box.diagonal() : 1.0;
   const Vec3 toward_camera = normalize(Vec3{0.6, 0.45, 1});
   scene.camera.look_at = box.center();
-  scene.camera.position = box.center() + toward_camera * (1.2 * radius / std::sin(std::numbers::pi / 8));
+  scene.camera.position = box.center() + toward_camera * (1.05 * radius / std::sin(std::numbers::pi / 8));
   scene.camera.up = {0, 1, 0};
   scene.camera.fov_y_deg = 45;
   scene.lights.push_back(Light::directional({-0.4, -1, -0.6}));
