@@ -1,0 +1,305 @@
+#include "harness.h"
+
+#include <stdlib.h>  // mkdtemp
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "shadowkit/core/context.h"
+#include "shadowkit/core/error.h"
+#include "shadowkit/methods/shadow_method.h"
+#include "shadowkit/raster/visible_surface.h"
+#include "shadowkit/scene/scene_file.h"
+
+namespace shadowkit::fuzz {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The rendering budget of the render targets: a frame whose long side has at most this many
+// pixels (the scene's aspect ratio kept), at most this many lights (the first ones), and no
+// rendering at all for scenes with more faces (those are about scale, not odd geometry; the
+// load targets still load them).
+constexpr int kFrameLongSide = 48;
+constexpr std::size_t kMaxRenderLights = 3;
+constexpr std::uint32_t kMaxRenderFaces = 1000;
+
+using Settings = std::map<std::string, std::string>;
+
+// Settings per method that keep a tiny frame fast; a method runs once per entry. Methods not
+// listed (a new one included) run once with their defaults.
+const std::map<std::string, std::vector<Settings>>& method_settings() {
+  static const std::map<std::string, std::vector<Settings>> settings = {
+      {"shadowmap", {{{"resolution", "64"}}}},
+      {"volume", {{{"count", "pass"}}, {{"count", "fail"}}}},
+      {"voxel", {{{"resolution", "16"}}}},
+  };
+  return settings;
+}
+
+struct Run {
+  std::string method;
+  MethodOptions options;
+  std::string label;  // "volume count=fail", for messages
+};
+
+// The fixed scene a mesh input is loaded into: a ground to receive shadows, a point and a
+// directional light, and the mesh, as it is or (second file) as a Catmull-Clark control mesh.
+std::string mesh_scene(const std::string& mesh_file, bool subdivision) {
+  const std::string mesh =
+      "{\"mesh\": \"" + mesh_file + "\"" +
+      (subdivision ? ", \"subdivision\": \"catmull-clark\", \"tessellation\": 2}" : "}");
+  return R"({
+  "camera": {"position": [0, 3, 7], "look_at": [0, 0.5, 0], "width": 48, "height": 32},
+  "lights": [
+    {"type": "point", "position": [2.5, 6, 3]},
+    {"type": "directional", "direction": [-0.4, -1, -0.3]}
+  ],
+  "objects": [{"generator": "ground", "size": 10}, )" +
+         mesh + "]\n}\n";
+}
+
+struct State {
+  std::string kind;
+  bool render = false;
+  bool verbose = false;
+  fs::path dir;                  // the per-process temporary directory
+  fs::path input;                // where each input is written
+  std::vector<fs::path> scenes;  // the scene files loaded per input, in order
+  Context ctx;
+  std::vector<Run> runs;
+  std::unique_ptr<tbb::global_control> threads;
+};
+
+State& state() {
+  static State s;
+  return s;
+}
+
+[[noreturn]] void harness_failure(const std::string& what) {
+  std::fprintf(stderr, "shadowkit fuzz harness: %s\n", what.c_str());
+  std::abort();
+}
+
+void write_file(const fs::path& path, const void* data, std::size_t size) {
+  // A new file rather than a truncated one: ext4 flushes a file truncated and rewritten
+  // (auto_da_alloc) and each input would wait for the disk.
+  std::error_code ignored;
+  fs::remove(path, ignored);
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  if (file == nullptr) harness_failure("cannot write " + path.string());
+  const bool ok = std::fwrite(data, 1, size, file) == size;
+  if (std::fclose(file) != 0 || !ok) harness_failure("cannot write " + path.string());
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+  write_file(path, text.data(), text.size());
+}
+
+void remove_directory() {
+  std::error_code ignored;
+  fs::remove_all(state().dir, ignored);
+}
+
+fs::path make_temporary_directory() {
+  std::error_code error;
+  const fs::path base = fs::temp_directory_path(error);
+  std::string pattern = ((error ? fs::path("/tmp") : base) / "shadowkit-fuzz-XXXXXX").string();
+  if (mkdtemp(pattern.data()) == nullptr) harness_failure("cannot create " + pattern);
+  return pattern;
+}
+
+// Scene inputs resolve "models/...", "meshes/..." and "../models/..." as the files of
+// examples/ and examples/sweep/ do, so the examples load whole as seeds.
+void link_examples(const fs::path& scene_dir) {
+  const char* env = std::getenv("SHADOWKIT_FUZZ_EXAMPLES");
+  const fs::path examples =
+      env != nullptr ? fs::path(env) : fs::path(SHADOWKIT_SOURCE_DIR) / "examples";
+  const std::pair<fs::path, fs::path> links[] = {
+      {scene_dir / "models", examples / "models"},
+      {scene_dir / "meshes", examples / "sweep" / "meshes"},
+      {scene_dir.parent_path() / "models", examples / "models"},
+  };
+  for (const auto& [link, target] : links) {
+    std::error_code error;
+    fs::create_directory_symlink(target, link, error);
+    if (error) harness_failure("cannot link " + link.string() + ": " + error.message());
+  }
+}
+
+// SHADOWKIT_FUZZ_SKIP: comma-separated runs to leave out, named as in make_runs()
+// ("volume count=pass,svbsp"), to look past a known bug until it is fixed.
+bool skipped(const std::string& label) {
+  const char* env = std::getenv("SHADOWKIT_FUZZ_SKIP");
+  if (env == nullptr) return false;
+  const std::string list = std::string(",") + env + ",";
+  return list.find("," + label + ",") != std::string::npos;
+}
+
+std::vector<Run> make_runs() {
+  std::vector<Run> runs;
+  for (const std::string& name : method_names()) {
+    const auto it = method_settings().find(name);
+    const std::vector<Settings> variants =
+        it == method_settings().end() ? std::vector<Settings>{Settings{}} : it->second;
+    for (const Settings& settings : variants) {
+      std::string label = name;
+      for (const auto& [key, value] : settings) label += " " + key + "=" + value;
+      MethodOptions options(name, settings);
+      // The harness's own settings must stay valid, or the method would silently never run.
+      try {
+        make_method(name, options);
+      } catch (const InputError& e) {
+        harness_failure("method " + label + " rejects the harness's settings: " + e.what());
+      }
+      if (!skipped(label)) runs.push_back({name, std::move(options), label});
+    }
+  }
+  return runs;
+}
+
+std::optional<Scene> load(const fs::path& path) {
+  State& s = state();
+  try {
+    return load_scene_file(path, s.ctx);
+  } catch (const InputError& e) {
+    if (s.verbose) std::fprintf(stderr, "input error: %s\n", e.what());
+    return std::nullopt;
+  }
+}
+
+// Scales the frame down to the rendering budget, keeping its aspect ratio.
+void shrink_frame(Camera& camera) {
+  const int long_side = std::max(camera.width, camera.height);
+  if (long_side <= kFrameLongSide) return;
+  const double f = double(kFrameLongSide) / long_side;
+  camera.width = std::max(1, int(std::lround(camera.width * f)));
+  camera.height = std::max(1, int(std::lround(camera.height * f)));
+}
+
+// ShadowMethod::shade's contract: lit or shadow at every covered pixel, background elsewhere.
+void check_mask(const ShadowMask& mask, const VisibleSurfaceBuffer& surfaces,
+                const std::string& what) {
+  for (std::size_t i = 0; i < mask.pixels.size(); ++i) {
+    const std::uint8_t v = mask.pixels[i];
+    const bool ok =
+        surfaces.covered(i) ? (v == kMaskLit || v == kMaskShadow) : v == kMaskBackground;
+    if (!ok) {
+      harness_failure(what + ": mask value " + std::to_string(v) + " at pixel " +
+                      std::to_string(i) + (surfaces.covered(i) ? " (covered)" : " (background)"));
+    }
+  }
+}
+
+// One method over every light, through the ShadowMethod interface itself: prepare, then
+// build and shade per light.
+void run_method(const Run& run, const Scene& scene, const VisibleSurfaceBuffer& surfaces) {
+  const Context& ctx = state().ctx;
+  const std::unique_ptr<ShadowMethod> method = make_method(run.method, run.options);
+  method->prepare(scene, ctx);
+  for (std::size_t light = 0; light < scene.lights.size(); ++light) {
+    method->build(scene, light, ctx);
+    ShadowMask mask(surfaces.width, surfaces.height, kMaskBackground);
+    method->shade(scene, surfaces, mask, ctx);
+    check_mask(mask, surfaces, run.label + ", light " + std::to_string(light));
+    static_cast<void>(method->memory_bytes());
+    static_cast<void>(method->counters());
+  }
+}
+
+double now_ms() {
+  using clock = std::chrono::steady_clock;
+  return std::chrono::duration<double, std::milli>(clock::now().time_since_epoch()).count();
+}
+
+// Renders \p scene unless it is beyond the rendering budget; true if it did.
+bool render(Scene& scene) {
+  State& s = state();
+  if (scene.face_count() > kMaxRenderFaces) return false;
+  if (scene.lights.size() > kMaxRenderLights) scene.lights.resize(kMaxRenderLights);
+  shrink_frame(scene.camera);
+  VisibleSurfaceBuffer surfaces;
+  try {
+    render_visible_surfaces(scene, s.ctx, surfaces);
+  } catch (const InputError& e) {
+    if (s.verbose) std::fprintf(stderr, "input error (camera pass): %s\n", e.what());
+    return false;
+  }
+  for (const Run& run : s.runs) {
+    const double start = now_ms();
+    try {
+      run_method(run, scene, surfaces);
+    } catch (const InputError& e) {
+      if (s.verbose) std::fprintf(stderr, "input error (%s): %s\n", run.label.c_str(), e.what());
+    }
+    if (s.verbose) std::fprintf(stderr, "%s: %.1f ms\n", run.label.c_str(), now_ms() - start);
+  }
+  return true;
+}
+
+}  // namespace
+
+void initialize(std::string_view kind, bool render) {
+  State& s = state();
+  s.kind = kind;
+  s.render = render;
+  const char* verbose = std::getenv("SHADOWKIT_FUZZ_VERBOSE");
+  s.verbose = verbose != nullptr && *verbose != '\0' && *verbose != '0';
+  s.ctx.warn = [](const std::string& message) {
+    if (state().verbose) std::fprintf(stderr, "warning: %s\n", message.c_str());
+  };
+  // One worker thread: coverage and timing then depend on the input alone; parallel fuzzing
+  // runs whole processes side by side (-fork=N, -jobs=N).
+  const char* threads = std::getenv("SHADOWKIT_FUZZ_THREADS");
+  const int n = threads != nullptr ? std::max(1, std::atoi(threads)) : 1;
+  s.threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                    std::size_t(n));
+
+  s.dir = make_temporary_directory();
+  std::atexit(remove_directory);
+  if (kind == "scene") {
+    const fs::path scene_dir = s.dir / "scene";
+    fs::create_directory(scene_dir);
+    link_examples(scene_dir);
+    s.input = scene_dir / "scene.json";
+    s.scenes = {s.input};
+  } else {
+    const std::string mesh_file = "input." + std::string(kind);
+    s.input = s.dir / mesh_file;
+    s.scenes = {s.dir / "scene.json", s.dir / "subdivision.json"};
+    write_text(s.scenes[0], mesh_scene(mesh_file, false));
+    write_text(s.scenes[1], mesh_scene(mesh_file, true));
+  }
+  if (render) s.runs = make_runs();
+}
+
+int run_one(const std::uint8_t* data, std::size_t size) {
+  State& s = state();
+  write_file(s.input, data, size);
+  // A mesh is tried as a control mesh only when it loads as a plain mesh: a reader's error
+  // would only repeat.
+  bool rendered = false;
+  for (const fs::path& path : s.scenes) {
+    std::optional<Scene> scene = load(path);
+    if (!scene) break;
+    if (s.render) rendered = render(*scene) || rendered;
+  }
+  // A render target keeps only inputs it rendered in its corpus (libFuzzer: -1 rejects an
+  // input): what no method sees is the load targets' business, and a corpus of broken scene
+  // files would leave few mutations that reach the methods.
+  return s.render && !rendered ? -1 : 0;
+}
+
+}  // namespace shadowkit::fuzz
