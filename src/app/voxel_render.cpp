@@ -28,6 +28,18 @@ Camera turned(Camera camera, double degrees) {
 
 // Triangles the §5.1 still render draws at a time: the peak memory of its tessellation.
 constexpr std::size_t kStillBatchTriangles = std::size_t(1) << 18;
+// With the frame buffer the whole tessellation is kept, about 1 KB a subpatch against the
+// masks' 140 bytes (docs/voxel.md): the bound on the subpatches when voxel.max_subpatches
+// is not given.
+constexpr std::size_t kKeptTessellationSubpatches = std::size_t(1) << 23;
+
+// The voxel method with voxel-render's bound on the subpatches.
+VoxelMethod method_for_render(const MethodOptions& settings) {
+  VoxelMethod method(settings);
+  const bool bound_given = !settings.text("max_subpatches", "").empty();
+  if (!method.keeps_frame_buffer() || bound_given) return method;
+  return VoxelMethod(settings, kKeptTessellationSubpatches);
+}
 
 // §5.1: one still image, the tessellation drawn in batches as it is made.
 int render_still(const Scene& scene, VoxelMethod& method, const VoxelRenderOptions& options,
@@ -47,9 +59,8 @@ int render_still(const Scene& scene, VoxelMethod& method, const VoxelRenderOptio
 
 int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx) {
   const auto settings = options.settings.find("voxel");
-  const auto method =
-      make_method("voxel", settings == options.settings.end() ? MethodOptions{} : settings->second);
-  auto& voxel_method = dynamic_cast<VoxelMethod&>(*method);
+  VoxelMethod voxel_method =
+      method_for_render(settings == options.settings.end() ? MethodOptions{} : settings->second);
   // §5.1 keeps no shadow states: a second view would redo all the shadow work.
   if (!options.turned_image.empty() && !voxel_method.keeps_frame_buffer()) {
     throw InputError("option '--turned-image'",

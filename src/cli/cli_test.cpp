@@ -150,6 +150,9 @@ TEST_F(Cli, VoxelRenderWritesBothViews) {
       "voxel-render square --set voxel.resolution=30 --image " + (dir_ / "c.png").string(),
       "voxel.resolution");
   expect_bad_input(
+      "voxel-render square --set voxel.max_subpatches=1000 --image " + (dir_ / "c.png").string(),
+      "scene 'square': the voxel method at voxel.resolution=256 makes more than 1000 subpatches");
+  expect_bad_input(
       "voxel-render square --set voxel.test=offset --set voxel.framebuffer=0 "
       "--image " +
           (dir_ / "c.png").string() + " --turned-image " + (dir_ / "d.png").string(),

@@ -1,6 +1,9 @@
 #include "patch_set.h"
 
 #include <algorithm>
+#include <functional>
+#include <tuple>
+#include <unordered_set>
 #include <utility>
 
 namespace shadowkit::voxel {
@@ -25,6 +28,25 @@ std::array<std::uint32_t, 3> shortest_side_first(std::array<std::uint32_t, 3> t,
   if (side(0) > 4 * side(first)) std::rotate(t.begin(), t.begin() + first, t.end());
   return t;
 }
+
+// A triangle's corners in a fixed order, whatever order and winding it was given in.
+std::array<Vec3, 3> corner_set(const std::array<std::uint32_t, 3>& t,
+                               const std::vector<Vec3>& positions) {
+  std::array<Vec3, 3> corners{positions[t[0]], positions[t[1]], positions[t[2]]};
+  std::sort(corners.begin(), corners.end(),
+            [](Vec3 a, Vec3 b) { return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z); });
+  return corners;
+}
+
+struct CornerSetHash {
+  std::size_t operator()(const std::array<Vec3, 3>& corners) const {
+    std::size_t h = 0;
+    for (const Vec3& c : corners) {
+      for (int a = 0; a < 3; ++a) h = h * 1000003 ^ std::hash<double>()(c[a]);
+    }
+    return h;
+  }
+};
 
 }  // namespace
 
@@ -68,9 +90,14 @@ PatchSet::PatchSet(const Scene& scene) : scene_(&scene) {
 
 void PatchSet::add_triangles(const Scene& scene) {
   const TriangleList& triangles = scene.triangles();
+  // A triangle with the corners of an earlier one (an object's coincident copy) is the same
+  // surface: voxelized again, it would add its subpatches, samples and blocker records, and
+  // not one voxel.
+  std::unordered_set<std::array<Vec3, 3>, CornerSetHash> seen;
   for (std::uint32_t t = 0; t < triangles.triangles.size(); ++t) {
     const std::uint32_t object = scene.object_of_face(triangles.triangle_face[t]);
     if (scene.objects[object].subdivision) continue;  // its tessellation; the surface is added
+    if (!seen.insert(corner_set(triangles.triangles[t], triangles.positions)).second) continue;
     const auto& [a, b, c] = shortest_side_first(triangles.triangles[t], triangles.positions);
     patches_.push_back({object, nullptr, t, {a, b, c, c}});
   }

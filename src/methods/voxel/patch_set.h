@@ -24,7 +24,9 @@ struct Patch {
   std::array<std::uint32_t, 4> corner_ids{};
 };
 
-/// \brief The patches of every object, with canonical evaluation of shared sides.
+/// \brief The patches of every object, with canonical evaluation of shared sides. A
+/// triangle whose three corners an earlier triangle already has (in any order) is left out:
+/// coincident copies are one surface.
 ///
 /// Leak-free voxelization needs a point on a shared side (or a shared corner) to be the same
 /// bits from every patch around it. point() therefore evaluates boundary points through one

@@ -10,6 +10,8 @@ namespace shadowkit {
 namespace {
 
 constexpr int kMinResolution = 16, kMaxResolution = 2048;
+// Subpatch ids and their corners' sample numbers (subpatch * 4 + corner) are 32-bit.
+constexpr double kSubpatchIdLimit = double(1 << 28);
 // Empty voxels at a visible point look this far (voxels) for a non-empty one.
 constexpr int kNeighbourReach = 2;
 
@@ -59,22 +61,46 @@ bool streamed_option(const MethodOptions& options, voxel::ShadowTest test) {
   return framebuffer == 0;
 }
 
+std::size_t max_subpatches_option(const MethodOptions& options, std::size_t fallback) {
+  const double n = options.number("max_subpatches", double(fallback));
+  if (n != std::floor(n) || n < 1 || n > kSubpatchIdLimit) {
+    bad_option("max_subpatches", "expected a whole number in 1..268435456", options);
+  }
+  return std::size_t(n);
+}
+
 }  // namespace
 
-VoxelMethod::VoxelMethod(const MethodOptions& options) {
-  options.expect_only("voxel", {"resolution", "adjacency", "test", "bound", "framebuffer"});
+VoxelMethod::VoxelMethod(const MethodOptions& options, std::size_t max_subpatches) {
+  options.expect_only(
+      "voxel", {"resolution", "adjacency", "test", "bound", "framebuffer", "max_subpatches"});
   resolution_ = resolution_option(options);
   adjacency_ = adjacency_option(options);
   test_ = test_option(options);
   whole_scene_ = bound_option(options);
   streamed_mode_ = streamed_option(options, test_);
+  max_subpatches_ = max_subpatches_option(options, max_subpatches);
 }
 
 void VoxelMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
   grid_ = voxel::make_grid(voxel::frame_bound(scene, whole_scene_), resolution_);
   patches_.emplace(scene);
-  if (streamed_mode_) return;
-  leaves_ = voxel::voxelize(*patches_, grid_, adjacency_);
+  // Counted before they are stored: the frame buffer mode keeps every subpatch, and §5.1
+  // runs the recursion again for each light.
+  const auto too_many = [&] {
+    return InputError("scene '" + scene.name + "'",
+                      "the voxel method at voxel.resolution=" + std::to_string(resolution_) +
+                          " makes more than " + std::to_string(max_subpatches_) +
+                          " subpatches (voxel.max_subpatches); lower voxel.resolution or raise "
+                          "voxel.max_subpatches");
+  };
+  if (streamed_mode_) {
+    if (!voxel::count_leaves(*patches_, grid_, adjacency_, max_subpatches_)) throw too_many();
+    return;
+  }
+  auto leaves = voxel::voxelize(*patches_, grid_, adjacency_, max_subpatches_);
+  if (!leaves) throw too_many();
+  leaves_ = std::move(*leaves);
   const voxel::VoxelKeys keys(grid_.dims);
   voxels_ = voxel::SurfaceVoxels::collect(leaves_, grid_, keys, adjacency_);
   buffer_ = voxel::CubicFrameBuffer(grid_, voxels_.keys);

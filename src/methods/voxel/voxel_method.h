@@ -28,9 +28,17 @@ namespace shadowkit {
 /// - `framebuffer` (default 1): 1 keeps the voxels' states in the cubic frame buffer (§5.2);
 ///   0 streams the voxels onto the projection plane and decides each visible point on the
 ///   fly (§5.1, voxel::StreamedShadows), offset test only.
+/// - `max_subpatches` (default kMaxSubpatches): the most leaves the voxelization may make;
+///   prepare() counts them before keeping more than voxel::kKeptWhileCounting, and more is
+///   an InputError.
 class VoxelMethod final : public ShadowMethod {
  public:
-  explicit VoxelMethod(const MethodOptions& options);
+  /// The default bound on the subpatches: every structure but the frame buffer grows with
+  /// them (about 140 bytes a subpatch at the peak of prepare, docs/voxel.md).
+  static constexpr std::size_t kMaxSubpatches = std::size_t(1) << 25;
+
+  /// \p max_subpatches: the bound when the `max_subpatches` setting is not given.
+  explicit VoxelMethod(const MethodOptions& options, std::size_t max_subpatches = kMaxSubpatches);
   std::string_view name() const override { return "voxel"; }
   void prepare(const Scene& scene, const Context& ctx) override;
   void build(const Scene& scene, std::size_t light, const Context& ctx) override;
@@ -59,6 +67,7 @@ class VoxelMethod final : public ShadowMethod {
   voxel::ShadowTest test_ = voxel::ShadowTest::topology;
   bool whole_scene_ = false;
   bool streamed_mode_ = false;
+  std::size_t max_subpatches_ = kMaxSubpatches;
 
   voxel::VoxelGrid grid_;
   std::optional<voxel::PatchSet> patches_;  ///< §5.1: voxelized again per light

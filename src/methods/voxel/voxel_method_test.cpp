@@ -2,6 +2,7 @@
 // bad options.
 #include "voxel_method.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cctype>
@@ -127,6 +128,61 @@ TEST(VoxelDegenerate, TinyAndHugeCoordinates) {
   }
 }
 
+// Ten copies of a box on one spot: a triangle with the corners of an earlier one is one
+// surface, voxelized once, so the copies cost what one box costs and shadow as it does.
+TEST(VoxelCoincidentObjects, CopiesCostWhatOneCosts) {
+  const auto boxes = [](int copies) {
+    std::vector<PolygonSoup> soups{testing::horizontal_quad(-3, 3, -3, 3, 0)};
+    for (int i = 0; i < copies; ++i) soups.push_back(testing::box({-0.5, 0, -0.5}, {0.5, 1, 0.5}));
+    return testing::make_scene(
+        testing::camera({1, 4, 5}, {0, 0, 0}, 160, 90),
+        {testing::point_light({1, 3, 1}), testing::directional_light({1, -2, 1})}, soups);
+  };
+  const Scene one = boxes(1), ten = boxes(10);
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(one, {});
+  for (std::size_t light = 0; light < one.lights.size(); ++light) {
+    VoxelMethod a(voxel_options({{"resolution", "64"}})), b(voxel_options({{"resolution", "64"}}));
+    const ShadowMask mask_one = testing::method_mask(a, one, vsb, light);
+    const ShadowMask mask_ten = testing::method_mask(b, ten, vsb, light);
+    EXPECT_EQ(mask_one.pixels, mask_ten.pixels) << light;
+    EXPECT_EQ(testing::counter(a, "subpatches"), 13'505) << light;
+    EXPECT_EQ(testing::counter(b, "subpatches"), 13'505) << light;
+    EXPECT_EQ(testing::counter(b, "voxels"), 4'509) << light;
+    EXPECT_EQ(testing::counter(b, "blocker_records"), testing::counter(a, "blocker_records"));
+    EXPECT_EQ(b.memory_bytes(), a.memory_bytes()) << light;
+  }
+}
+
+// One subpatch more than voxel.max_subpatches allows is refused in prepare(), with the
+// scene, the resolution and the bound named, and nothing kept; exactly as many are not.
+TEST(VoxelSubpatchBound, RefusesOneSubpatchTooMany) {
+  const Scene scene = testing::square_over_plane(testing::camera({0, 6, 8}, {0, 0, 0}, 160, 90),
+                                                 testing::point_light({0, 4, 0}));
+  for (const char* framebuffer : {"1", "0"}) {
+    const auto options = [&](const std::string& bound) {
+      return voxel_options({{"resolution", "64"},
+                            {"test", "offset"},
+                            {"framebuffer", framebuffer},
+                            {"max_subpatches", bound}});
+    };
+    VoxelMethod exact(options("9314"));
+    EXPECT_NO_THROW(exact.prepare(scene, {})) << framebuffer;
+    VoxelMethod over(options("9313"));
+    EXPECT_THAT([&] { over.prepare(scene, {}); },
+                ::testing::ThrowsMessage<InputError>(::testing::StrEq(
+                    "scene 'test': the voxel method at voxel.resolution=64 makes more than "
+                    "9313 subpatches (voxel.max_subpatches); lower voxel.resolution or raise "
+                    "voxel.max_subpatches")))
+        << framebuffer;
+    EXPECT_TRUE(over.subpatches().empty()) << framebuffer;
+    EXPECT_EQ(over.frame_buffer().memory_bytes(), 0u) << framebuffer;
+  }
+  VoxelMethod counted(voxel_options({{"resolution", "64"}}));
+  counted.prepare(scene, {});
+  counted.build(scene, 0, {});
+  EXPECT_EQ(testing::counter(counted, "subpatches"), 9'314);
+}
+
 TEST(VoxelOptions, BadValuesAreInputErrors) {
   EXPECT_THROW(VoxelMethod(voxel_options({{"resolution", "300"}})), InputError);
   EXPECT_THROW(VoxelMethod(voxel_options({{"resolution", "8"}})), InputError);
@@ -135,6 +191,9 @@ TEST(VoxelOptions, BadValuesAreInputErrors) {
   EXPECT_THROW(VoxelMethod(voxel_options({{"test", "ray"}})), InputError);
   EXPECT_THROW(VoxelMethod(voxel_options({{"bound", "all"}})), InputError);
   EXPECT_THROW(VoxelMethod(voxel_options({{"bias", "1"}})), InputError);
+  EXPECT_THROW(VoxelMethod(voxel_options({{"max_subpatches", "0"}})), InputError);
+  EXPECT_THROW(VoxelMethod(voxel_options({{"max_subpatches", "2.5"}})), InputError);
+  EXPECT_THROW(VoxelMethod(voxel_options({{"max_subpatches", "268435457"}})), InputError);
   EXPECT_NO_THROW(VoxelMethod(voxel_options(
       {{"resolution", "512"}, {"adjacency", "6"}, {"test", "offset"}, {"bound", "scene"}})));
 }

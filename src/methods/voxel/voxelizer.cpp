@@ -1,7 +1,11 @@
 #include "voxelizer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <numeric>
+
+#include "shadowkit/core/error.h"
 
 namespace shadowkit::voxel {
 namespace {
@@ -12,6 +16,11 @@ constexpr double kTinyExtent = 1.0 / 64;
 constexpr int kMaxDepth = 40;
 // Coordinates of voxel_floor() are clamped here, far outside any grid (M <= 2^12).
 constexpr double kFarVoxel = 1 << 20;
+// Leaves a patch counts on its own before adding them to the shared total.
+constexpr std::uint32_t kCountBatch = 1 << 12;
+
+// Thrown out of every patch's recursion once the leaves counted pass the bound.
+struct TooManyLeaves {};
 
 class PatchVoxelizer {
  public:
@@ -111,9 +120,83 @@ bool small_enough(const Corners& corners, int adjacency) {
   return true;
 }
 
-std::vector<Subpatch> voxelize(const PatchSet& patches, const VoxelGrid& grid, int adjacency) {
-  return concatenate(map_leaves<Subpatch>(
-      patches, grid, adjacency, [](const Subpatch& leaf, const Domain&) { return leaf; }));
+namespace {
+
+// What counting made: per patch its leaf count and, if the running total stayed within the
+// bound on kept leaves, its leaves.
+struct CountedLeaves {
+  std::vector<std::uint32_t> counts;
+  std::vector<std::vector<Subpatch>> kept;
+  bool complete(std::size_t patch) const { return kept[patch].size() == counts[patch]; }
+};
+
+// Runs the recursion over every patch and counts the leaves, stopping once they pass
+// \p most; a patch keeps its leaves while the total counted stays within \p keep.
+std::optional<CountedLeaves> count(const PatchSet& patches, const VoxelGrid& grid, int adjacency,
+                                   std::size_t most, std::size_t keep) {
+  CountedLeaves out{std::vector<std::uint32_t>(patches.size(), 0),
+                    std::vector<std::vector<Subpatch>>(patches.size())};
+  std::atomic<std::size_t> total{0};
+  try {
+    tbb::parallel_for(std::size_t(0), patches.size(), [&](std::size_t p) {
+      std::uint32_t& count = out.counts[p];
+      std::vector<Subpatch>& kept = out.kept[p];
+      bool keeping = total.load(std::memory_order_relaxed) < keep;
+      const auto add = [&](std::uint32_t n) {
+        const std::size_t counted = total.fetch_add(n, std::memory_order_relaxed) + n;
+        if (counted > most) throw TooManyLeaves{};
+        if (counted > keep && keeping) {
+          keeping = false;
+          std::vector<Subpatch>().swap(kept);
+        }
+      };
+      voxelize_patch(patches, std::uint32_t(p), grid, adjacency,
+                     [&](const Subpatch& leaf, const Domain&) {
+                       if (keeping) kept.push_back(leaf);
+                       if (++count % kCountBatch == 0) add(kCountBatch);
+                     });
+      add(count % kCountBatch);
+    });
+  } catch (const TooManyLeaves&) {
+    return std::nullopt;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<std::size_t> count_leaves(const PatchSet& patches, const VoxelGrid& grid,
+                                        int adjacency, std::size_t most) {
+  const std::optional<CountedLeaves> counted = count(patches, grid, adjacency, most, 0);
+  if (!counted) return std::nullopt;
+  return std::accumulate(counted->counts.begin(), counted->counts.end(), std::size_t(0));
+}
+
+std::optional<std::vector<Subpatch>> voxelize(const PatchSet& patches, const VoxelGrid& grid,
+                                              int adjacency, std::size_t most, std::size_t keep) {
+  std::optional<CountedLeaves> counted = count(patches, grid, adjacency, most, keep);
+  if (!counted) return std::nullopt;
+  const std::vector<std::uint32_t>& counts = counted->counts;
+  std::vector<std::size_t> first(counts.size() + 1, 0);
+  std::inclusive_scan(counts.begin(), counts.end(), first.begin() + 1, std::plus<>(),
+                      std::size_t(0));
+  std::vector<Subpatch> leaves(first.back());
+  tbb::parallel_for(std::size_t(0), patches.size(), [&](std::size_t p) {
+    if (counted->complete(p)) {
+      std::copy(counted->kept[p].begin(), counted->kept[p].end(), leaves.begin() + first[p]);
+      std::vector<Subpatch>().swap(counted->kept[p]);
+      return;
+    }
+    // Counted only: made again, the same leaves in the same order.
+    std::size_t next = first[p];
+    voxelize_patch(patches, std::uint32_t(p), grid, adjacency,
+                   [&](const Subpatch& leaf, const Domain&) {
+                     SHADOWKIT_CHECK(next < first[p + 1]);
+                     leaves[next++] = leaf;
+                   });
+    SHADOWKIT_CHECK(next == first[p + 1]);
+  });
+  return leaves;
 }
 
 }  // namespace shadowkit::voxel

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "patch_set.h"
@@ -72,7 +73,22 @@ std::vector<T> concatenate(std::vector<std::vector<T>> parts) {
   return out;
 }
 
-/// The leaf subpatches of every patch that reach \p grid, in patch order.
-std::vector<Subpatch> voxelize(const PatchSet& patches, const VoxelGrid& grid, int adjacency);
+/// How many leaves of all patches reach \p grid; nothing once they add up to more than
+/// \p most. The recursion then stops, so an input that asks too much is turned away in the
+/// time of \p most leaves, with nothing stored.
+std::optional<std::size_t> count_leaves(const PatchSet& patches, const VoxelGrid& grid,
+                                        int adjacency, std::size_t most);
+
+/// Leaves voxelize() keeps while it counts by default (about 220 MB): what an input refused
+/// for too many leaves may take.
+inline constexpr std::size_t kKeptWhileCounting = std::size_t(1) << 22;
+
+/// The leaf subpatches of every patch that reach \p grid, in patch order, in one array;
+/// nothing when there are more than \p most. The leaves are counted first (as by
+/// count_leaves()), each patch keeping its leaves while the count stays within \p keep: a
+/// scene within it is voxelized once, a larger one again for the patches not kept.
+std::optional<std::vector<Subpatch>> voxelize(const PatchSet& patches, const VoxelGrid& grid,
+                                              int adjacency, std::size_t most,
+                                              std::size_t keep = kKeptWhileCounting);
 
 }  // namespace shadowkit::voxel

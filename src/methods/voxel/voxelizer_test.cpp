@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <vector>
 
 #include "../../testing/test_scenes.h"
@@ -55,7 +56,8 @@ struct Voxelized {
 Voxelized voxelize_scene(const Scene& scene, int resolution, int adjacency) {
   Voxelized v;
   v.grid = make_grid(scene.bounds(), resolution);
-  v.leaves = voxelize(PatchSet(scene), v.grid, adjacency);
+  const PatchSet patches(scene);
+  v.leaves = *voxelize(patches, v.grid, adjacency, std::numeric_limits<std::size_t>::max());
   v.voxels = SurfaceVoxels::collect(v.leaves, v.grid, VoxelKeys(v.grid.dims), adjacency);
   return v;
 }
@@ -193,6 +195,45 @@ TEST(SharedSides, AreEvaluatedCanonically) {
     const double t = k / 64.0;
     EXPECT_EQ(along_0_to_2(0, t), along_0_to_2(1, t)) << t;
   }
+}
+
+// The leaves are counted before they are stored: past the bound there are none, and
+// patches counted but not kept are made again, the same leaves in the same order.
+TEST(Counting, BoundsTheLeavesAndKeepsTheirOrder) {
+  const Scene scene =
+      scene_of({octahedron(2), polygon({{-3, -2.5, -3}, {3, -2.5, -3}, {0, -2.5, 3}})});
+  const PatchSet patches(scene);
+  const VoxelGrid grid = make_grid(scene.bounds(), 64);
+  const std::size_t all = std::numeric_limits<std::size_t>::max();
+  const std::vector<Subpatch> leaves = *voxelize(patches, grid, 26, all);
+  ASSERT_EQ(leaves.size(), 9'119u);
+  EXPECT_EQ(count_leaves(patches, grid, 26, all), leaves.size());
+  EXPECT_EQ(count_leaves(patches, grid, 26, leaves.size()), leaves.size());
+  EXPECT_EQ(count_leaves(patches, grid, 26, leaves.size() - 1), std::nullopt);
+  EXPECT_EQ(voxelize(patches, grid, 26, leaves.size() - 1), std::nullopt);
+  for (const std::size_t keep : {std::size_t(0), std::size_t(5'000)}) {
+    const std::vector<Subpatch> again = *voxelize(patches, grid, 26, all, keep);
+    ASSERT_EQ(again.size(), leaves.size()) << keep;
+    for (std::size_t l = 0; l < leaves.size(); ++l) {
+      ASSERT_EQ(again[l].patch, leaves[l].patch) << keep << " " << l;
+      for (int k = 0; k < 4; ++k) {
+        ASSERT_EQ(again[l].corner[k].vec(), leaves[l].corner[k].vec()) << keep << " " << l;
+      }
+    }
+  }
+}
+
+// A triangle given again, by another object, in another order or winding, is one surface:
+// one patch. A triangle sharing two of its corners is not.
+TEST(CoincidentTriangles, AreOnePatch) {
+  const Vec3 a{0.1, 0.2, 0.3}, b{3.7, -0.4, 1.1}, c{2.9, 3.3, -0.7}, d{-0.6, 2.1, 0.9};
+  using testing::polygon;
+  const Scene scene = scene_of({polygon({a, b, c}), polygon({a, b, c}), polygon({c, b, a}),
+                                polygon({b, c, a}), polygon({a, b, d})});
+  const PatchSet patches(scene);
+  ASSERT_EQ(patches.size(), 2u);
+  EXPECT_EQ(patches[0].object, 0u);
+  EXPECT_EQ(patches[1].object, 4u);
 }
 
 // A Catmull-Clark cube (a closed limit surface with extraordinary vertices) as one object.
