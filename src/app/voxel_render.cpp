@@ -58,6 +58,10 @@ int render_still(const Scene& scene, VoxelMethod& method, const VoxelRenderOptio
 }  // namespace
 
 int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx) {
+  if (!std::isfinite(options.turn_deg)) {
+    throw InputError("option '--turn'", "expected a finite number of degrees, got " +
+                                            std::to_string(options.turn_deg));
+  }
   const auto settings = options.settings.find("voxel");
   VoxelMethod voxel_method =
       method_for_render(settings == options.settings.end() ? MethodOptions{} : settings->second);

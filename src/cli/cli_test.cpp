@@ -159,6 +159,16 @@ TEST_F(Cli, VoxelRenderWritesBothViews) {
       "--turned-image");
 }
 
+TEST_F(Cli, VoxelRenderRefusesATurnThatIsNoNumber) {
+  for (const char* turn : {"nan", "inf"}) {
+    expect_bad_input(
+        "voxel-render square --set voxel.resolution=32 --image " + (dir_ / "a.png").string() +
+            " --turned-image " + (dir_ / "b.png").string() + " --turn " + turn,
+        std::string("option '--turn': expected a finite number of degrees, got ") + turn);
+    EXPECT_FALSE(fs::exists(dir_ / "a.png"));
+  }
+}
+
 // §5.1: one still image, the tessellation drawn in batches as it is made.
 TEST_F(Cli, VoxelRenderWithoutFrameBufferWritesTheStillImage) {
   write("ground.obj", kGround);
