@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "progress.h"
 #include "shadowkit/app/mask_compare.h"
@@ -39,6 +40,7 @@ std::vector<std::string> with_reference_first(std::vector<std::string> methods) 
 }
 
 nlohmann::json run_json(const MethodRun& run, double scan_ms) {
+  if (run.failed()) return {{"method", run.method}, {"light", run.light}, {"failed", run.failure}};
   nlohmann::json j = {{"method", run.method},
                       {"light", run.light},
                       {"prepare_ms", run.prepare_ms},
@@ -50,11 +52,31 @@ nlohmann::json run_json(const MethodRun& run, double scan_ms) {
   return j;
 }
 
-void print_row(const MethodRun& run, const MaskComparison* c) {
-  std::printf("%-10s L%-3zu %10.2f %10.2f %10.2f %10.1f", run.method.c_str(), run.light,
-              run.prepare_ms, run.build_ms, run.shade_ms, double(run.memory_bytes) / 1e6);
-  if (c) std::printf(" %11.4f %11.4f", c->raw_pct(), c->interior_pct());
-  std::printf("\n");
+// The comparison keys of a compare row; null where the reference failed on the light.
+void add_comparison_json(nlohmann::json& j, const std::optional<MaskComparison>& c) {
+  j["mismatch_raw_pct"] = c ? nlohmann::json(c->raw_pct()) : nlohmann::json();
+  j["mismatch_interior_pct"] = c ? nlohmann::json(c->interior_pct()) : nlohmann::json();
+  j["surface_pixels"] = c ? nlohmann::json(c->surface_pixels) : nlohmann::json();
+  j["interior_pixels"] = c ? nlohmann::json(c->interior_pixels) : nlohmann::json();
+}
+
+// One table row: times and memory, then \p comparison (compare's mismatch columns); or why
+// the method could not do the light.
+void print_row(const MethodRun& run, const std::string& comparison) {
+  if (run.failed()) {
+    std::printf("%-10s L%-3zu failed: %s\n", run.method.c_str(), run.light, run.failure.c_str());
+    return;
+  }
+  std::printf("%-10s L%-3zu %10.2f %10.2f %10.2f %10.1f%s\n", run.method.c_str(), run.light,
+              run.prepare_ms, run.build_ms, run.shade_ms, double(run.memory_bytes) / 1e6,
+              comparison.c_str());
+}
+
+std::string comparison_columns(const std::optional<MaskComparison>& c) {
+  if (!c) return "  no reference";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, " %11.4f %11.4f", c->raw_pct(), c->interior_pct());
+  return buf;
 }
 
 void print_header(const Scene& scene, const CameraPass& pass, bool with_mismatch) {
@@ -66,6 +88,10 @@ void print_header(const Scene& scene, const CameraPass& pass, bool with_mismatch
               "shade_ms", "memory_MB");
   if (with_mismatch) std::printf(" %11s %11s", "mismatch_%", "interior_%");
   std::printf("\n");
+}
+
+bool any_failed(const std::vector<MethodRun>& runs) {
+  return std::any_of(runs.begin(), runs.end(), [](const MethodRun& r) { return r.failed(); });
 }
 
 }  // namespace
@@ -92,8 +118,9 @@ int run_render(const RenderOptions& options, const Context& ctx) {
   make_method(options.method, settings_for(options, options.method));  // validate first
   const Scene scene = load_scene(options.scene, ctx);
   const CameraPass pass = run_camera_pass(scene, {}, ctx);
-  const std::vector<MethodRun> runs = run_method(scene, pass.surfaces, options.method,
-                                                 settings_for(options, options.method), {}, ctx);
+  const std::vector<MethodRun> runs =
+      run_method(scene, pass.surfaces, options.method, settings_for(options, options.method), {},
+                 ctx, OnFailure::stop);
   std::vector<const ShadowMask*> masks;
   for (const MethodRun& run : runs) {
     write_png(options.mask_prefix + ".L" + std::to_string(run.light) + ".png", run.mask);
@@ -116,12 +143,25 @@ int run_compare(const CompareOptions& options, const Context& ctx) {
   for (const std::string& m : methods) {
     progress.step("method " + m);
     ComparedMethod cm{
-        m, run_method(scene, pass.surfaces, m, settings_for(options, m), {}, ctx), {}};
+        m,
+        run_method(scene, pass.surfaces, m, settings_for(options, m), {}, ctx, OnFailure::record),
+        {}};
+    const ComparedMethod& reference = compared.empty() ? cm : compared.front();
     for (std::size_t l = 0; l < cm.runs.size(); ++l) {
-      const ShadowMask& ref = compared.empty() ? cm.runs[l].mask : compared.front().runs[l].mask;
-      cm.against_reference.push_back(compare_masks(ref, cm.runs[l].mask, object_ids));
+      const MethodRun &ref = reference.runs[l], &run = cm.runs[l];
+      cm.against_reference.push_back(
+          ref.failed() || run.failed()
+              ? std::nullopt
+              : std::optional(compare_masks(ref.mask, run.mask, object_ids)));
     }
     compared.push_back(std::move(cm));
+  }
+  for (const MethodRun& ref : compared.front().runs) {
+    if (!ref.failed()) continue;
+    std::fprintf(stderr,
+                 "shadowkit: raytrace, the reference, failed on light %zu: %s; no mask of that "
+                 "light is compared\n",
+                 ref.light, ref.failure.c_str());
   }
   if (!options.report_dir.empty()) {
     progress.step("writing report");
@@ -134,19 +174,19 @@ int run_compare(const CompareOptions& options, const Context& ctx) {
                                            "raytrace") != options.methods.end();
   nlohmann::json out = nlohmann::json::array();
   if (!options.json) print_header(scene, pass, true);
+  bool failed = false;
   for (const ComparedMethod& cm : compared) {
+    failed = failed || any_failed(cm.runs);
     if (cm.name == "raytrace" && !wanted_reference) continue;
     for (std::size_t l = 0; l < cm.runs.size(); ++l) {
-      const MaskComparison& c = cm.against_reference[l];
+      const MethodRun& run = cm.runs[l];
+      const std::optional<MaskComparison>& c = cm.against_reference[l];
       if (!options.json) {
-        print_row(cm.runs[l], &c);
+        print_row(run, comparison_columns(c));
         continue;
       }
-      nlohmann::json j = run_json(cm.runs[l], pass.scan_ms);
-      j["mismatch_raw_pct"] = c.raw_pct();
-      j["mismatch_interior_pct"] = c.interior_pct();
-      j["surface_pixels"] = c.surface_pixels;
-      j["interior_pixels"] = c.interior_pixels;
+      nlohmann::json j = run_json(run, pass.scan_ms);
+      if (!run.failed()) add_comparison_json(j, c);
       out.push_back(std::move(j));
     }
   }
@@ -154,7 +194,7 @@ int run_compare(const CompareOptions& options, const Context& ctx) {
   if (!options.report_dir.empty() && !options.json) {
     std::printf("report: %s/index.html\n", options.report_dir.c_str());
   }
-  return 0;
+  return failed ? kExitRunFailed : 0;
 }
 
 int run_bench(const BenchOptions& options, const Context& ctx) {
@@ -169,20 +209,23 @@ int run_bench(const BenchOptions& options, const Context& ctx) {
   const CameraPass pass = run_camera_pass(scene, reps, ctx);
   nlohmann::json out = nlohmann::json::array();
   if (!options.json) print_header(scene, pass, false);
+  bool failed = false;
   for (const std::string& m : methods) {
     progress.step("method " + m);
-    for (const MethodRun& run :
-         run_method(scene, pass.surfaces, m, settings_for(options, m), reps, ctx)) {
+    const std::vector<MethodRun> runs =
+        run_method(scene, pass.surfaces, m, settings_for(options, m), reps, ctx, OnFailure::record);
+    failed = failed || any_failed(runs);
+    for (const MethodRun& run : runs) {
       if (options.json) {
         out.push_back(run_json(run, pass.scan_ms));
       } else {
-        print_row(run, nullptr);
+        print_row(run, "");
       }
     }
   }
   progress.step("");
   if (options.json) std::cout << out.dump(2) << "\n";
-  return 0;
+  return failed ? kExitRunFailed : 0;
 }
 
 }  // namespace shadowkit

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <exception>
+#include <new>
+
+#include "shadowkit/core/error.h"
 
 namespace shadowkit {
 
@@ -34,6 +38,28 @@ double timed_median(const Repetitions& reps, Fn&& fn) {
   return median(samples);
 }
 
+// A failed run's reason, in the words the command line uses for the same exception.
+std::string failure_reason(const std::exception& e) {
+  if (dynamic_cast<const InputError*>(&e)) return e.what();
+  if (dynamic_cast<const std::bad_alloc*>(&e)) return "out of memory";
+  return std::string("internal error: ") + e.what();
+}
+
+// Runs \p step; with OnFailure::record, what it throws comes back as the failure's reason.
+template <class Step>
+std::string attempt(OnFailure on_failure, Step&& step) {
+  if (on_failure == OnFailure::stop) {
+    step();
+    return {};
+  }
+  try {
+    step();
+    return {};
+  } catch (const std::exception& e) {
+    return failure_reason(e);
+  }
+}
+
 }  // namespace
 
 CameraPass run_camera_pass(const Scene& scene, const Repetitions& reps, const Context& ctx) {
@@ -44,10 +70,11 @@ CameraPass run_camera_pass(const Scene& scene, const Repetitions& reps, const Co
 
 std::vector<MethodRun> run_method(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
                                   const std::string& method_name, const MethodOptions& options,
-                                  const Repetitions& reps, const Context& ctx) {
+                                  const Repetitions& reps, const Context& ctx,
+                                  OnFailure on_failure) {
   std::unique_ptr<ShadowMethod> method = make_method(method_name, options);
   const double start = now_ms();
-  method->prepare(scene, ctx);
+  const std::string prepare_failure = attempt(on_failure, [&] { method->prepare(scene, ctx); });
   const double prepare_ms = now_ms() - start;
 
   std::vector<MethodRun> runs;
@@ -56,14 +83,21 @@ std::vector<MethodRun> run_method(const Scene& scene, const VisibleSurfaceBuffer
     run.method = method_name;
     run.light = light;
     run.prepare_ms = prepare_ms;
-    run.build_ms = timed_median(reps, [&] { method->build(scene, light, ctx); });
-    run.mask = ShadowMask(surfaces.width, surfaces.height, kMaskBackground);
-    run.shade_ms = timed_median(reps, [&] {
-      std::fill(run.mask.pixels.begin(), run.mask.pixels.end(), kMaskBackground);
-      method->shade(scene, surfaces, run.mask, ctx);
-    });
-    run.memory_bytes = method->memory_bytes();
-    run.counters = method->counters();
+    run.failure = prepare_failure;
+    if (!run.failed()) {
+      run.failure = attempt(on_failure, [&] {
+        run.build_ms = timed_median(reps, [&] { method->build(scene, light, ctx); });
+        run.mask = ShadowMask(surfaces.width, surfaces.height, kMaskBackground);
+        run.shade_ms = timed_median(reps, [&] {
+          std::fill(run.mask.pixels.begin(), run.mask.pixels.end(), kMaskBackground);
+          method->shade(scene, surfaces, run.mask, ctx);
+        });
+        run.memory_bytes = method->memory_bytes();
+        run.counters = method->counters();
+      });
+    }
+    // A failed light keeps no half-made mask.
+    if (run.failed()) run.mask = ShadowMask();
     runs.push_back(std::move(run));
   }
   return runs;

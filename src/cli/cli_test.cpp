@@ -181,6 +181,61 @@ TEST_F(Cli, VoxelRenderWithoutFrameBufferWritesTheStillImage) {
   EXPECT_GT(fs::file_size(dir_ / "still.png"), 0u);
 }
 
+// The voxel method refuses the scene (more subpatches than voxel.max_subpatches allows):
+// its rows say why, every other method's rows are there, and the exit status is 3.
+TEST_F(Cli, AMethodThatRefusesTheSceneDoesNotStopTheOthers) {
+  write("ground.obj", kGround);
+  const std::string s =
+      write("two-lights.json",
+            R"({"camera": {"position": [0, 6, 8], "look_at": [0, 0, 0], "width": 80, "height": 60},
+                "lights": [{"type": "point", "position": [1, 5, 1]},
+                           {"type": "directional", "direction": [1, -3, 0.5]}],
+                "objects": [{"mesh": "ground.obj"}, {"generator": "box", "size": 1}]})")
+          .string();
+  const std::string refusal =
+      "scene 'two-lights': the voxel method at voxel.resolution=256 makes more than 1000 "
+      "subpatches (voxel.max_subpatches); lower voxel.resolution or raise voxel.max_subpatches";
+  const std::string bound = " --set voxel.max_subpatches=1000 --threads 1";
+
+  const Result json = run("compare " + s + " --methods voxel,shadowmap --json" + bound);
+  ASSERT_EQ(json.status, 3) << json.err;
+  const auto rows = nlohmann::json::parse(json.out);
+  ASSERT_EQ(rows.size(), 4u);
+  for (std::size_t light = 0; light < 2; ++light) {
+    const auto& voxel = rows[light];
+    EXPECT_EQ(voxel, (nlohmann::json{{"method", "voxel"}, {"light", light}, {"failed", refusal}}));
+    const auto& shadowmap = rows[2 + light];
+    EXPECT_EQ(shadowmap["method"], "shadowmap");
+    EXPECT_EQ(shadowmap["light"], light);
+    EXPECT_FALSE(shadowmap.contains("failed"));
+    EXPECT_LT(double(shadowmap["mismatch_interior_pct"]), 1.0);
+  }
+
+  const fs::path report = dir_ / "report";
+  const Result table =
+      run("compare " + s + " --methods voxel,shadowmap --report " + report.string() + bound);
+  EXPECT_EQ(table.status, 3) << table.err;
+  EXPECT_THAT(table.out, HasSubstr("voxel      L0   failed: " + refusal + "\n"));
+  EXPECT_THAT(table.out, HasSubstr("voxel      L1   failed: " + refusal + "\n"));
+  EXPECT_THAT(table.out, HasSubstr("\nshadowmap  L1 "));
+  EXPECT_THAT(slurp(report / "index.html"), HasSubstr("failed: " + refusal));
+  EXPECT_TRUE(fs::exists(report / "shadowmap.png"));
+  EXPECT_FALSE(fs::exists(report / "voxel.png"));
+
+  const Result bench =
+      run("bench " + s + " --methods voxel,volume --repeats 1 --warmup 0 --json" + bound);
+  EXPECT_EQ(bench.status, 3) << bench.err;
+  const auto timed = nlohmann::json::parse(bench.out);
+  ASSERT_EQ(timed.size(), 4u);
+  EXPECT_EQ(timed[1]["failed"], refusal);
+  EXPECT_EQ(timed[3]["method"], "volume");
+  EXPECT_TRUE(timed[3].contains("shade_ms"));
+
+  // One method: its refusal is the command's error.
+  expect_bad_input("render " + s + " --method voxel --mask " + (dir_ / "m").string() + bound,
+                   refusal);
+}
+
 TEST_F(Cli, FragmentsWritesPlyAndAreasThatSumToEachPolygon) {
   const fs::path ply = dir_ / "square.ply";
   const Result r = run("fragments square --threads 1 --out " + ply.string());

@@ -10,6 +10,10 @@
 
 namespace shadowkit {
 
+/// Exit status of compare and bench when a method could not do a light: its rows say why,
+/// the other rows ran.
+inline constexpr int kExitRunFailed = 3;
+
 /// \brief What every command shares.
 struct CommandOptions {
   std::string scene;                              ///< file or built-in scene name

@@ -13,7 +13,7 @@
 namespace shadowkit {
 
 /// \brief One method on one light: median times over the repetitions, memory, counters and
-/// the mask of the last repetition.
+/// the mask of the last repetition; or why the method could not do the light.
 struct MethodRun {
   std::string method;
   std::size_t light = 0;
@@ -23,6 +23,14 @@ struct MethodRun {
   std::size_t memory_bytes = 0;
   MethodCounters counters;
   ShadowMask mask;
+  std::string failure;  ///< what prepare, build or shade threw; empty when the light ran
+  bool failed() const { return !failure.empty(); }
+};
+
+/// \brief What run_method does when the method's prepare, build or shade throws.
+enum class OnFailure {
+  stop,    ///< the exception goes on to the caller
+  record,  ///< the light's run records it (every light's, when prepare threw); the rest run
 };
 
 /// \brief How often to run each stage when timing.
@@ -46,6 +54,7 @@ CameraPass run_camera_pass(const Scene& scene, const Repetitions& reps, const Co
 /// Runs \p method_name (with its options) over every light of \p scene.
 std::vector<MethodRun> run_method(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
                                   const std::string& method_name, const MethodOptions& options,
-                                  const Repetitions& reps, const Context& ctx);
+                                  const Repetitions& reps, const Context& ctx,
+                                  OnFailure on_failure);
 
 }  // namespace shadowkit
