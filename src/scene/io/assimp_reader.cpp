@@ -20,11 +20,13 @@
 #include <cmath>
 #include <cstring>
 #include <new>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "import_cache.h"
 #include "readers.h"
 #include "shadowkit/scene/limits.h"
 #include "skipped_items.h"
@@ -313,7 +315,8 @@ bool read_until(int in, std::chrono::steady_clock::time_point deadline, std::str
   }
 }
 
-ImportResult import_in_child(const std::string& path) {
+// The child's message about \p path: its polygons or the reason it could not read them.
+std::string import_in_child(const std::string& path) {
   int pipe_ends[2];
   if (pipe(pipe_ends) != 0) {
     throw InputError(path, std::string("cannot start the importer: ") + std::strerror(errno));
@@ -346,11 +349,28 @@ ImportResult import_in_child(const std::string& path) {
     throw InputError(path, "assimp crashed reading it (" +
                                std::string(strsignal(WTERMSIG(status))) + ")");
   }
+  return message;
+}
+
+std::optional<ImportResult> decoded(const std::string& message) {
   try {
     return decode(message);
   } catch (const std::exception&) {
-    throw InputError(path, "assimp stopped before it finished reading it");
+    return std::nullopt;  // the child stopped midway, or a cache entry is damaged
   }
+}
+
+// The cache's copy of the import if it holds a sound one, else a fresh import, then cached.
+ImportResult cached_import(const std::string& path) {
+  const ImportCache cache = ImportCache::from_environment();
+  if (const std::optional<std::string> kept = cache.find(path)) {
+    if (std::optional<ImportResult> result = decoded(*kept)) return std::move(*result);
+  }
+  const std::string message = import_in_child(path);
+  std::optional<ImportResult> result = decoded(message);
+  if (!result) throw InputError(path, "assimp stopped before it finished reading it");
+  if (result->error.empty()) cache.store(path, message);
+  return std::move(*result);
 }
 
 }  // namespace
@@ -374,7 +394,7 @@ std::vector<std::string> assimp_extensions() {
 }
 
 MeshFile read_with_assimp(const std::string& path, const Context& ctx) {
-  ImportResult result = import_in_child(path);
+  ImportResult result = cached_import(path);
   if (!result.error.empty()) {
     throw InputError(path, "assimp cannot read it: " + result.error.substr(0, result.error.find('\n')));
   }

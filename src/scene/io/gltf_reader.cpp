@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <memory>
 #include <string>
@@ -508,8 +507,11 @@ bool read_referenced_file(std::vector<unsigned char>* out, std::string* err,
     *err += "cannot open '" + path + "'";
     return false;
   }
-  out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  return true;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    out->insert(out->end(), buffer, buffer + in.gcount());
+  }
+  return !in.bad();
 }
 
 bool file_exists(const std::string& path, void* /*user*/) {

@@ -4,6 +4,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdlib>
+#include <iterator>
+
 #include "mesh_io_test_files.h"
 
 namespace shadowkit::mesh_io_test {
@@ -90,9 +94,9 @@ TEST_F(RealFilesTest, ObjFacesMayNameLaterVerticesAndLeaveIndicesOut) {
   EXPECT_EQ(file.soup.positions.size(), 3u);
 }
 
-// COLLADA through assimp: the node's matrix places the polygon, which stays whole.
-TEST_F(RealFilesTest, AssimpFormatsKeepPolygonsWholeAndApplyNodeTransforms) {
-  const std::string dae = R"(<?xml version="1.0" encoding="utf-8"?>
+// A quad placed at x = 5 by its node's translation, as COLLADA writes it.
+std::string quad_dae(const std::string& translate = "5 0 0") {
+  return R"(<?xml version="1.0" encoding="utf-8"?>
 <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
   <asset><up_axis>Y_UP</up_axis></asset>
   <library_geometries><geometry id="quad"><mesh>
@@ -104,17 +108,48 @@ TEST_F(RealFilesTest, AssimpFormatsKeepPolygonsWholeAndApplyNodeTransforms) {
     <polylist count="1"><input semantic="VERTEX" source="#v" offset="0"/><vcount>4</vcount><p>0 1 2 3</p></polylist>
   </mesh></geometry></library_geometries>
   <library_visual_scenes><visual_scene id="s">
-    <node id="n"><translate>5 0 0</translate><instance_geometry url="#quad"/></node>
+    <node id="n"><translate>)" + translate + R"(</translate><instance_geometry url="#quad"/></node>
   </visual_scene></library_visual_scenes>
   <scene><instance_visual_scene url="#s"/></scene>
 </COLLADA>)";
-  const MeshFile file = read("quad.dae", dae);
+}
+
+Bounds3 bounds(const PolygonSoup& soup) {
+  Bounds3 box;
+  for (const Vec3& p : soup.positions) box.add(p);
+  return box;
+}
+
+// COLLADA through assimp: the node's matrix places the polygon, which stays whole.
+TEST_F(RealFilesTest, AssimpFormatsKeepPolygonsWholeAndApplyNodeTransforms) {
+  const MeshFile file = read("quad.dae", quad_dae());
   ASSERT_EQ(file.soup.face_count(), 1u);
   EXPECT_THAT(file.soup.face_start, ElementsAre(0, 4)) << "a quad, not two triangles";
-  Bounds3 box;
-  for (const Vec3& p : file.soup.positions) box.add(p);
-  EXPECT_EQ(box.lo, (Vec3{5, 0, 0}));
-  EXPECT_EQ(box.hi, (Vec3{6, 1, 0}));
+  EXPECT_EQ(bounds(file.soup).lo, (Vec3{5, 0, 0}));
+  EXPECT_EQ(bounds(file.soup).hi, (Vec3{6, 1, 0}));
+}
+
+// The import cache answers for a file as long as its path, size and time are unchanged.
+TEST_F(RealFilesTest, AssimpImportsAreCachedPerVersionOfTheFile) {
+  const std::filesystem::path cache = dir_ / "cache";
+  setenv("SHADOWKIT_CACHE_DIR", cache.c_str(), 1);
+  const std::filesystem::path dae = write("quad.dae", quad_dae("5 0 0"));
+  EXPECT_EQ(bounds(read_mesh_file(dae, ctx_).soup).lo, (Vec3{5, 0, 0}));
+  ASSERT_EQ(std::distance(std::filesystem::directory_iterator(cache), {}), 1);
+  // Same size and time, other content: the cache still answers, so it was asked.
+  const auto time = std::filesystem::last_write_time(dae);
+  write("quad.dae", quad_dae("7 0 0"));
+  std::filesystem::last_write_time(dae, time);
+  EXPECT_EQ(bounds(read_mesh_file(dae, ctx_).soup).lo, (Vec3{5, 0, 0}));
+  // A new time is a new version of the file.
+  std::filesystem::last_write_time(dae, time + std::chrono::seconds(1));
+  EXPECT_EQ(bounds(read_mesh_file(dae, ctx_).soup).lo, (Vec3{7, 0, 0}));
+  // A damaged entry is imported afresh, not trusted.
+  for (const auto& entry : std::filesystem::directory_iterator(cache)) {
+    std::filesystem::resize_file(entry.path(), std::filesystem::file_size(entry.path()) / 2);
+  }
+  EXPECT_EQ(bounds(read_mesh_file(dae, ctx_).soup).lo, (Vec3{7, 0, 0}));
+  setenv("SHADOWKIT_CACHE_DIR", "", 1);
 }
 
 }  // namespace
