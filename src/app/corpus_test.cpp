@@ -56,13 +56,13 @@ std::string shell_quoted(const std::string& s) {
 }
 
 AssimpVerdict assimp_info(const fs::path& file) {
-  const std::string command =
-      "timeout 60 assimp info " + shell_quoted(file.string()) + " -r 2>&1";
+  const std::string command = "timeout 60 assimp info " + shell_quoted(file.string()) + " -r 2>&1";
   std::FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return {false, 0, false, "cannot run assimp"};
   std::string output;
   char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) output.append(buffer, n);
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
+    output.append(buffer, n);
   const int status = pclose(pipe);
   AssimpVerdict verdict;
   std::smatch m;
@@ -100,9 +100,12 @@ std::size_t surface_pixels(Scene scene) {
   scene.camera.height = 108;
   const Context quiet{.threads = 0, .warn = [](const std::string&) {}};
   const CameraPass pass = run_camera_pass(scene, {}, quiet);
-  const std::vector<MethodRun> runs = run_method(scene, pass.surfaces, "raytrace", {}, {}, quiet, OnFailure::stop);
-  return runs.empty() ? 0 : std::size_t(std::count_if(runs[0].mask.pixels.begin(), runs[0].mask.pixels.end(),
-                                                       [](std::uint8_t v) { return v != kMaskBackground; }));
+  const std::vector<MethodRun> runs =
+      run_method(scene, pass.surfaces, "raytrace", {}, {}, quiet, OnFailure::stop);
+  return runs.empty()
+             ? 0
+             : std::size_t(std::count_if(runs[0].mask.pixels.begin(), runs[0].mask.pixels.end(),
+                                         [](std::uint8_t v) { return v != kMaskBackground; }));
 }
 
 Outcome judge(const fs::path& file) {

@@ -1,12 +1,12 @@
 #include "shadowkit/scene/mesh.h"
 
+#include <absl/container/flat_hash_map.h>
+
 #include <algorithm>
 #include <cmath>
 #include <span>
 #include <string>
 #include <utility>
-
-#include <absl/container/flat_hash_map.h>
 
 #include "shadowkit/core/error.h"
 #include "shadowkit/scene/triangulate.h"
@@ -57,7 +57,7 @@ struct CellKey {
 std::vector<std::uint32_t> weld(std::span<const Vec3> positions, const Bounds3& box,
                                 double tolerance, std::vector<Vec3>& welded) {
   constexpr std::uint32_t kNone = std::uint32_t(-1);
-  const double cell = tolerance > 0 ? 2 * tolerance : 1.0;  // one point: any cell will do
+  const double cell = tolerance > 0 ? 2 * tolerance : 1.0;    // one point: any cell will do
   absl::flat_hash_map<CellKey, std::uint32_t> first_in_cell;  // the cell's latest welded vertex
   first_in_cell.reserve(positions.size());
   std::vector<std::uint32_t> next_in_cell;  // per welded vertex: the one before it in its cell
@@ -83,7 +83,8 @@ std::vector<std::uint32_t> weld(std::span<const Vec3> positions, const Bounds3& 
     std::uint32_t found = kNone;
     for (std::int64_t x = lo.x; x <= hi.x && found == kNone; ++x)
       for (std::int64_t y = lo.y; y <= hi.y && found == kNone; ++y)
-        for (std::int64_t z = lo.z; z <= hi.z && found == kNone; ++z) found = match_in({x, y, z}, p);
+        for (std::int64_t z = lo.z; z <= hi.z && found == kNone; ++z)
+          found = match_in({x, y, z}, p);
     if (found == kNone) {
       found = std::uint32_t(welded.size());
       welded.push_back(p);

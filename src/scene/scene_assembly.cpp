@@ -31,8 +31,9 @@ void check_size_against_offset(const Bounds3& geometry, const std::string& where
   const double offset = std::max(max_abs_component(geometry.lo), max_abs_component(geometry.hi));
   const double size = max_abs_component(geometry.extent());
   if (size < limits::kSmallestSize && offset > 0) {
-    throw InputError(where, "the geometry is " + number_text(size) + " across; below 1e-290, "
-                            "coordinates lose the precision that describes it");
+    throw InputError(where, "the geometry is " + number_text(size) +
+                                " across; below 1e-290, "
+                                "coordinates lose the precision that describes it");
   }
   if (size < limits::kSizeToOffset * offset) {
     throw InputError(where, "the geometry is " + number_text(size) + " across but lies " +

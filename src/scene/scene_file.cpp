@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <numbers>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <sstream>
 
 #include "io/json_text.h"
@@ -148,7 +148,8 @@ void read_objects(const JsonCursor& list, const fs::path& dir, SceneSource& scen
 // keys replace or extend.
 SceneSource generated_scene(const JsonCursor& root, const std::string& file) {
   const std::string spec = root["generator"].string();
-  if (spec.find(':') != std::string::npos) return builtin_scene_source(spec, root["generator"].where());
+  if (spec.find(':') != std::string::npos)
+    return builtin_scene_source(spec, root["generator"].where());
   // Its parameters are the file's keys but for the scene's own.
   nlohmann::json params = nlohmann::json::object();
   for (const auto& [key, value] : root.value().items()) {
@@ -204,7 +205,8 @@ Scene mesh_scene(MeshFile file, const fs::path& path, const Context& ctx) {
   const double radius = box.diagonal() > 0 ? 0.5 * box.diagonal() : 1.0;
   const Vec3 toward_camera = normalize(Vec3{0.6, 0.45, 1});
   scene.camera.look_at = box.center();
-  scene.camera.position = box.center() + toward_camera * (1.05 * radius / std::sin(std::numbers::pi / 8));
+  scene.camera.position =
+      box.center() + toward_camera * (1.05 * radius / std::sin(std::numbers::pi / 8));
   scene.camera.up = {0, 1, 0};
   scene.camera.fov_y_deg = 45;
   scene.lights.push_back(Light::directional({-0.4, -1, -0.6}));

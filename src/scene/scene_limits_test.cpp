@@ -23,15 +23,16 @@ TEST_F(SceneFileTest, DeepNestingIsRefusedAtItsLineBeforeAnyRecursion) {
   // Thousands of levels once overflowed the stack in dump() and in a JSON copy.
   const std::string deep_up = scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0],
     "up": )" + nested(5000, "0"));
-  EXPECT_EQ(error_of(deep_up), (dir_ / "scene.json").string() +
-                                   ":3: JSON nested deeper than 100 levels");
+  EXPECT_EQ(error_of(deep_up),
+            (dir_ / "scene.json").string() + ":3: JSON nested deeper than 100 levels");
   const std::string deep_generator =
       "{\"generator\": \"cubes\",\n\"extra\": " + nested(100000, "") + "}";
-  EXPECT_EQ(error_of(deep_generator), (dir_ / "scene.json").string() +
-                                          ":2: JSON nested deeper than 100 levels");
+  EXPECT_EQ(error_of(deep_generator),
+            (dir_ / "scene.json").string() + ":2: JSON nested deeper than 100 levels");
   // Brackets inside strings do not count.
   EXPECT_EQ(error_of("{\"camera\": {\"position\": [0, 4, 12], \"look_at\": [0, 0, 0]},\n"
-                     "\"name\": \"" + std::string(500, '[') + "\"}"),
+                     "\"name\": \"" +
+                     std::string(500, '[') + "\"}"),
             "no error");
 }
 
@@ -75,21 +76,21 @@ TEST_F(SceneFileTest, ImagesAreBoundedInPixels) {
 // out of memory after two minutes, naming the wrong setting.
 TEST_F(SceneFileTest, TessellationIsRefusedBeforeItIsBuilt) {
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_THAT(
-      error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
-                     R"({"type": "point", "position": [3, 10, 4]})",
-                     R"({"generator": "sphere", "segments": 64, "rings": 32,
+  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                             R"({"type": "point", "position": [3, 10, 4]})",
+                             R"({"generator": "sphere", "segments": 64, "rings": 32,
                          "subdivision": "catmull-clark", "tessellation": 256})")),
-      HasSubstr("key 'objects[0].tessellation': 256 segments on 8064 patches would make "
-                "1056964608 triangles; at most 16777216 are allowed"));
+              HasSubstr("key 'objects[0].tessellation': 256 segments on 8064 patches would make "
+                        "1056964608 triangles; at most 16777216 are allowed"));
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
 }
 
 TEST_F(SceneFileTest, GeometryFarFromItsSizeIsRefused) {
   EXPECT_THAT(
-      error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
-                     R"({"type": "point", "position": [3, 10, 4]})",
-                     R"({"generator": "box", "size": 1e-6, "transform": {"translate": [1e9, 0, 0]}})")),
+      error_of(
+          scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                R"({"type": "point", "position": [3, 10, 4]})",
+                R"({"generator": "box", "size": 1e-6, "transform": {"translate": [1e9, 0, 0]}})")),
       HasSubstr(": the geometry is 1e-06 across but lies 1e+09 from the origin"));
   // A camera a million billion scene sizes away cannot see it.
   EXPECT_THAT(error_of(scene(R"("position": [0, 0, 1e14], "look_at": [0, 0, 0])",

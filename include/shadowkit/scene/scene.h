@@ -109,7 +109,8 @@ struct Scene {
   const Bounds3& bounds() const { return bounds_; }
   /// bounds() in world coordinates.
   Bounds3 world_bounds() const {
-    return bounds_.empty() ? bounds_ : Bounds3{frame.to_world(bounds_.lo), frame.to_world(bounds_.hi)};
+    return bounds_.empty() ? bounds_
+                           : Bounds3{frame.to_world(bounds_.lo), frame.to_world(bounds_.hi)};
   }
   const TriangleList& triangles() const { return triangles_; }
 

@@ -13,7 +13,8 @@ double world_area(const Scene& scene, double working_area) {
 }
 
 double polygon_area(const Scene& scene, std::uint32_t face) {
-  return world_area(scene, scene.objects[scene.object_of_face(face)].mesh.areas[scene.local_face(face)]);
+  return world_area(scene,
+                    scene.objects[scene.object_of_face(face)].mesh.areas[scene.local_face(face)]);
 }
 
 void write_header(std::ostream& out, const Scene& scene, const MultiLightFragments& result) {

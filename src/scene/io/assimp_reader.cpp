@@ -4,17 +4,16 @@
 // assimp parses in a child process: its importers can crash, loop or exhaust memory on a
 // damaged file, and a crash of the child is reported as bad input instead of ending
 // shadowkit. The child sends the placed polygons back through a pipe.
-#include <assimp/Importer.hpp>
 #include <assimp/scene.h>
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <fcntl.h>
-
 #include <algorithm>
+#include <assimp/Importer.hpp>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -123,7 +122,7 @@ void count_stored(const aiScene& scene, MeshFile& file) {
     if (scene.mMeshes[m] == nullptr) continue;
     for (unsigned f = 0; f < scene.mMeshes[m]->mNumFaces; ++f) {
       ++(scene.mMeshes[m]->mFaces[f].mNumIndices < 3 ? file.skipped_primitives
-                                                      : file.stored_polygons);
+                                                     : file.stored_polygons);
     }
   }
 }
@@ -346,8 +345,8 @@ std::string import_in_child(const std::string& path) {
                                std::to_string(limits::kImportSeconds) + " s");
   }
   if (WIFSIGNALED(status)) {
-    throw InputError(path, "assimp crashed reading it (" +
-                               std::string(strsignal(WTERMSIG(status))) + ")");
+    throw InputError(
+        path, "assimp crashed reading it (" + std::string(strsignal(WTERMSIG(status))) + ")");
   }
   return message;
 }
@@ -396,7 +395,8 @@ std::vector<std::string> assimp_extensions() {
 MeshFile read_with_assimp(const std::string& path, const Context& ctx) {
   ImportResult result = cached_import(path);
   if (!result.error.empty()) {
-    throw InputError(path, "assimp cannot read it: " + result.error.substr(0, result.error.find('\n')));
+    throw InputError(path,
+                     "assimp cannot read it: " + result.error.substr(0, result.error.find('\n')));
   }
   for (const std::string& warning : result.warnings) ctx.warning(path + ": " + warning);
   return std::move(result.file);

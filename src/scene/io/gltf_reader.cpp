@@ -46,8 +46,7 @@ struct Affine {
 /// \brief Errors and warnings of one file, located by JSON path ("file: key 'nodes[3]'").
 class GltfSource {
  public:
-  GltfSource(const tinygltf::Model& model, const std::string& path)
-      : model_(model), path_(path) {}
+  GltfSource(const tinygltf::Model& model, const std::string& path) : model_(model), path_(path) {}
 
   const tinygltf::Model& model() const { return model_; }
   [[noreturn]] void fail(const std::string& key, const std::string& what) const {
@@ -94,10 +93,22 @@ Affine local_transform(const tinygltf::Node& node, const GltfSource& src, std::s
     const double norm = std::sqrt(x * x + y * y + z * z + w * w);
     if (!(norm > 0)) src.fail(key + ".rotation", "is not a rotation (a zero quaternion)");
     x /= norm, y /= norm, z /= norm, w /= norm;
-    r.m = {1 - 2 * (y * y + z * z), 2 * (x * y + z * w),     2 * (x * z - y * w),     0,
-           2 * (x * y - z * w),     1 - 2 * (x * x + z * z), 2 * (y * z + x * w),     0,
-           2 * (x * z + y * w),     2 * (y * z - x * w),     1 - 2 * (x * x + y * y), 0,
-           0,                       0,                       0,                       1};
+    r.m = {1 - 2 * (y * y + z * z),
+           2 * (x * y + z * w),
+           2 * (x * z - y * w),
+           0,
+           2 * (x * y - z * w),
+           1 - 2 * (x * x + z * z),
+           2 * (y * z + x * w),
+           0,
+           2 * (x * z + y * w),
+           2 * (y * z - x * w),
+           1 - 2 * (x * x + y * y),
+           0,
+           0,
+           0,
+           0,
+           1};
   }
   if (finite(node.scale, 3, "scale")) {
     s.m[0] = node.scale[0], s.m[5] = node.scale[1], s.m[10] = node.scale[2];
@@ -191,7 +202,8 @@ ByteRange view_bytes(const GltfSource& src, int view_index, const std::string& k
 /// \brief An accessor's elements as doubles, bounds-checked once (sparse accessors too).
 class AccessorValues {
  public:
-  AccessorValues(const GltfSource& src, std::size_t a) : key_("accessors[" + std::to_string(a) + "]") {
+  AccessorValues(const GltfSource& src, std::size_t a)
+      : key_("accessors[" + std::to_string(a) + "]") {
     const tinygltf::Accessor& acc = src.model().accessors[a];
     components_ = component_count(acc.type);
     const std::size_t bytes = component_bytes(acc.componentType);
@@ -199,7 +211,8 @@ class AccessorValues {
     // Elements in a buffer view cost what the file holds; elements without one are zeros
     // (§3.6.2.1) that cost only what the count claims, so the count is bounded.
     if (acc.bufferView < 0 && acc.count > limits::kPolygons) {
-      src.fail(key_ + ".count", std::to_string(acc.count) + " elements without a bufferView are more than " +
+      src.fail(key_ + ".count", std::to_string(acc.count) +
+                                    " elements without a bufferView are more than " +
                                     std::to_string(limits::kPolygons) + " allowed");
     }
     ByteRange range;
@@ -208,7 +221,8 @@ class AccessorValues {
       range = view_bytes(src, acc.bufferView, key_ + ".bufferView");
       const std::size_t element = bytes * components_;
       stride = range.stride != 0 ? range.stride : element;
-      if (stride < element) src.fail(key_, "its buffer view's byteStride is below its element size");
+      if (stride < element)
+        src.fail(key_, "its buffer view's byteStride is below its element size");
       const std::size_t room = range.size - std::min(acc.byteOffset, range.size);
       if (acc.count > 0 && (acc.byteOffset > range.size || element > room ||
                             acc.count - 1 > (room - element) / stride)) {
@@ -222,7 +236,8 @@ class AccessorValues {
       for (std::size_t i = 0; i < acc.count; ++i) {
         const unsigned char* at = range.data + acc.byteOffset + i * stride;
         for (std::size_t c = 0; c < components_; ++c) {
-          values_[i * components_ + c] = component(at + c * bytes, acc.componentType, acc.normalized);
+          values_[i * components_ + c] =
+              component(at + c * bytes, acc.componentType, acc.normalized);
         }
       }
     }
@@ -248,18 +263,21 @@ class AccessorValues {
     const auto index_offset = static_cast<std::size_t>(std::max(acc.sparse.indices.byteOffset, 0));
     const auto value_offset = static_cast<std::size_t>(std::max(acc.sparse.values.byteOffset, 0));
     if (index_offset > indices.size || n > (indices.size - index_offset) / index_bytes) {
-      src.fail(key + ".indices", "its " + std::to_string(n) + " indices do not fit their buffer view");
+      src.fail(key + ".indices",
+               "its " + std::to_string(n) + " indices do not fit their buffer view");
     }
     const std::size_t element = bytes * components_;
     if (value_offset > values.size || n > (values.size - value_offset) / element) {
-      src.fail(key + ".values", "its " + std::to_string(n) + " values do not fit their buffer view");
+      src.fail(key + ".values",
+               "its " + std::to_string(n) + " values do not fit their buffer view");
     }
     for (std::size_t k = 0; k < n; ++k) {
       const double i = component(indices.data + index_offset + k * index_bytes,
                                  acc.sparse.indices.componentType, false);
       if (!(i >= 0 && i < static_cast<double>(count()))) {
         src.fail(key + ".indices", "index " + std::to_string(static_cast<long long>(i)) +
-                                       " is out of range (" + std::to_string(count()) + " elements)");
+                                       " is out of range (" + std::to_string(count()) +
+                                       " elements)");
       }
       const unsigned char* at = values.data + value_offset + k * element;
       for (std::size_t c = 0; c < components_; ++c) {
@@ -317,7 +335,8 @@ class GltfMeshes {
   void place(std::size_t m, const Affine& transform, MeshFile& file) {
     const tinygltf::Mesh& mesh = src_.model().meshes[m];
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
-      const std::string key = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
+      const std::string key =
+          "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
       place_primitive(mesh.primitives[p], key, transform, file);
     }
   }
@@ -336,8 +355,8 @@ class GltfMeshes {
                        const Affine& transform, MeshFile& file) {
     for (const char* compressed : {"KHR_draco_mesh_compression", "EXT_meshopt_compression"}) {
       if (prim.extensions.count(compressed) != 0) {
-        src_.fail(key + ".extensions", std::string("uses ") + compressed +
-                                           ", which shadowkit cannot decode");
+        src_.fail(key + ".extensions",
+                  std::string("uses ") + compressed + ", which shadowkit cannot decode");
       }
     }
     const auto position = prim.attributes.find("POSITION");
@@ -434,9 +453,8 @@ std::vector<std::size_t> root_nodes(const GltfSource& src) {
   const tinygltf::Model& model = src.model();
   std::vector<std::size_t> roots;
   if (!model.scenes.empty()) {
-    const std::size_t s = model.defaultScene < 0
-                              ? 0
-                              : src.index(model.defaultScene, model.scenes.size(), "scene");
+    const std::size_t s =
+        model.defaultScene < 0 ? 0 : src.index(model.defaultScene, model.scenes.size(), "scene");
     for (int n : model.scenes[s].nodes) {
       roots.push_back(src.index(n, model.nodes.size(), "scenes[" + std::to_string(s) + "].nodes"));
     }
@@ -490,7 +508,8 @@ void place_nodes(const GltfSource& src, GltfMeshes& meshes, MeshFile& file) {
     on_path[visit.node] = 1;
     const tinygltf::Node& node = model.nodes[visit.node];
     const Affine world = visit.parent * local_transform(node, src, visit.node);
-    if (node.mesh >= 0) meshes.place(src.index(node.mesh, model.meshes.size(), key + ".mesh"), world, file);
+    if (node.mesh >= 0)
+      meshes.place(src.index(node.mesh, model.meshes.size(), key + ".mesh"), world, file);
     stack.push_back({visit.node, visit.node, {}, true});
     for (std::size_t c = node.children.size(); c-- > 0;) {
       stack.push_back({src.index(node.children[c], model.nodes.size(), key + ".children"),

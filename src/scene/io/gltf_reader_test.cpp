@@ -58,20 +58,20 @@ class GltfBuilder {
   /// The whole file, buffer embedded as a data URI.
   std::string gltf(const std::string& meshes, const std::string& nodes,
                    const std::string& scenes = R"([{"nodes": [0]}])") const {
-    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": )" + scenes +
-           R"(, "nodes": )" + nodes + R"(, "meshes": )" + meshes + R"(, "accessors": [)" +
-           join(accessors_) + R"(], "bufferViews": [)" + join(views_) +
-           R"(], "buffers": [{"byteLength": )" + std::to_string(buffer_.size()) +
-           R"(, "uri": "data:application/octet-stream;base64,)" + base64(buffer_) + "\"}]}";
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": )" + scenes + R"(, "nodes": )" +
+           nodes + R"(, "meshes": )" + meshes + R"(, "accessors": [)" + join(accessors_) +
+           R"(], "bufferViews": [)" + join(views_) + R"(], "buffers": [{"byteLength": )" +
+           std::to_string(buffer_.size()) + R"(, "uri": "data:application/octet-stream;base64,)" +
+           base64(buffer_) + "\"}]}";
   }
 
   /// The same as a .glb: the JSON chunk and the buffer as the BIN chunk.
   std::string glb(const std::string& meshes, const std::string& nodes) const {
-    std::string json = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" +
-                       nodes + R"(, "meshes": )" + meshes + R"(, "accessors": [)" +
-                       join(accessors_) + R"(], "bufferViews": [)" + join(views_) +
-                       R"(], "buffers": [{"byteLength": )" + std::to_string(buffer_.size()) +
-                       "}]}";
+    std::string json =
+        R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": )" +
+        nodes + R"(, "meshes": )" + meshes + R"(, "accessors": [)" + join(accessors_) +
+        R"(], "bufferViews": [)" + join(views_) + R"(], "buffers": [{"byteLength": )" +
+        std::to_string(buffer_.size()) + "}]}";
     while (json.size() % 4 != 0) json += ' ';
     std::string bin = buffer_;
     while (bin.size() % 4 != 0) bin += '\0';
@@ -152,14 +152,13 @@ TEST_F(GltfTest, ListsStripsAndFansInEveryIndexType) {
   const int strip16 = b.indices({0, 1, 2, 3, 3, 4, 4, 1}, 5123);
   const int fan32 = b.indices({1, 4, 3, 2}, 5125);
   const MeshFile lists = read(
-      "modes.gltf",
-      b.gltf(R"([{"primitives": [{"attributes": {"POSITION": )" + std::to_string(p) +
-                 R"(}, "indices": )" + std::to_string(list8) +
-                 R"(}, {"attributes": {"POSITION": )" + std::to_string(p) + R"(}, "indices": )" +
-                 std::to_string(strip16) + R"(, "mode": 5}, {"attributes": {"POSITION": )" +
-                 std::to_string(p) + R"(}, "indices": )" + std::to_string(fan32) +
-                 R"(, "mode": 6}]}])",
-             R"([{"mesh": 0}])"));
+      "modes.gltf", b.gltf(R"([{"primitives": [{"attributes": {"POSITION": )" + std::to_string(p) +
+                               R"(}, "indices": )" + std::to_string(list8) +
+                               R"(}, {"attributes": {"POSITION": )" + std::to_string(p) +
+                               R"(}, "indices": )" + std::to_string(strip16) +
+                               R"(, "mode": 5}, {"attributes": {"POSITION": )" + std::to_string(p) +
+                               R"(}, "indices": )" + std::to_string(fan32) + R"(, "mode": 6}]}])",
+                           R"([{"mesh": 0}])"));
   // 2 listed; the strip's 6 triangles less the 4 that repeat an index; the fan's 2.
   EXPECT_EQ(lists.soup.face_count(), 2u + 2u + 2u);
   EXPECT_EQ(lists.stored_polygons, 2u + 6u + 2u);
@@ -182,22 +181,23 @@ TEST_F(GltfTest, ListsStripsAndFansInEveryIndexType) {
 TEST_F(GltfTest, PointsAndLinesAreSkippedAndCounted) {
   GltfBuilder b;
   b.positions(kTriangle);
-  const MeshFile file = read(
-      "mixed.gltf",
-      b.gltf(R"([{"primitives": [{"attributes": {"POSITION": 0}, "mode": 0},
+  const MeshFile file =
+      read("mixed.gltf", b.gltf(R"([{"primitives": [{"attributes": {"POSITION": 0}, "mode": 0},
                                  {"attributes": {"POSITION": 0}, "mode": 3},
                                  {"attributes": {"POSITION": 0}}]}])",
-             R"([{"mesh": 0}])"));
+                                R"([{"mesh": 0}])"));
   EXPECT_EQ(file.soup.face_count(), 1u);
   EXPECT_EQ(file.skipped_primitives, 3u + 2u);
-  EXPECT_THAT(warnings_, ElementsAre(at("mixed.gltf") + "skipped 1 point primitive(s) (they bound no surface)",
-                                     at("mixed.gltf") + "skipped 1 line primitive(s) (they bound no surface)"));
+  EXPECT_THAT(
+      warnings_,
+      ElementsAre(at("mixed.gltf") + "skipped 1 point primitive(s) (they bound no surface)",
+                  at("mixed.gltf") + "skipped 1 line primitive(s) (they bound no surface)"));
 }
 
 TEST_F(GltfTest, SparseAccessorsReplaceTheirElements) {
   GltfBuilder b;
   b.positions(kTriangle);
-  b.indices({2}, 5125);  // accessor 1: which element
+  b.indices({2}, 5125);      // accessor 1: which element
   b.positions({{0, 5, 0}});  // accessor 2: its new value
   b.add_accessor(R"({"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 3,
     "sparse": {"count": 1, "indices": {"bufferView": 1, "componentType": 5125},
@@ -210,7 +210,8 @@ TEST_F(GltfTest, SparseAccessorsReplaceTheirElements) {
 TEST_F(GltfTest, BinaryGlbReadsLikeTheJson) {
   GltfBuilder b;
   const int p = b.positions(kTriangle);
-  const MeshFile file = read("triangle.glb", b.glb("[" + mesh_of(p) + "]", R"([{"mesh": 0, "translation": [0, 0, 3]}])"));
+  const MeshFile file = read(
+      "triangle.glb", b.glb("[" + mesh_of(p) + "]", R"([{"mesh": 0, "translation": [0, 0, 3]}])"));
   ASSERT_EQ(file.soup.face_count(), 1u);
   expect_near(file.soup.positions[2], {0, 1, 3});
 }
@@ -219,32 +220,38 @@ TEST_F(GltfTest, ErrorsNameTheJsonPath) {
   GltfBuilder b;
   const int p = b.positions(kTriangle);
   const int bad = b.indices({0, 1, 9}, 5123);
-  EXPECT_EQ(error("range.gltf", b.gltf("[" + mesh_of(p, bad) + "]", R"([{"mesh": 0}])")),
-            at("range.gltf") + "key 'accessors[1]': index 9 is out of range (POSITION has 3 elements)");
+  EXPECT_EQ(
+      error("range.gltf", b.gltf("[" + mesh_of(p, bad) + "]", R"([{"mesh": 0}])")),
+      at("range.gltf") + "key 'accessors[1]': index 9 is out of range (POSITION has 3 elements)");
   EXPECT_EQ(error("cycle.gltf", b.gltf("[" + mesh_of(p) + "]",
                                        R"([{"children": [1]}, {"mesh": 0, "children": [0]}])")),
             at("cycle.gltf") + "key 'nodes[1].children': names node 0, its own ancestor");
   EXPECT_EQ(error("node.gltf", b.gltf("[" + mesh_of(p) + "]", R"([{"mesh": 4}])")),
             at("node.gltf") + "key 'nodes[0].mesh': index 4 is out of range (1 defined)");
-  b.add_accessor(R"({"bufferView": 0, "byteOffset": 8, "componentType": 5126, "type": "VEC3", "count": 3})");
+  b.add_accessor(
+      R"({"bufferView": 0, "byteOffset": 8, "componentType": 5126, "type": "VEC3", "count": 3})");
   EXPECT_EQ(error("view.gltf", b.gltf("[" + mesh_of(2) + "]", R"([{"mesh": 0}])")),
-            at("view.gltf") + "key 'accessors[2]': 3 elements from byte 8 do not fit its buffer view's 36 bytes");
-  EXPECT_EQ(error("scale.gltf", b.gltf("[" + mesh_of(p) + "]", R"([{"mesh": 0, "scale": [1, 2]}])")),
-            at("scale.gltf") + "key 'nodes[0].scale': expected 3 numbers");
+            at("view.gltf") +
+                "key 'accessors[2]': 3 elements from byte 8 do not fit its buffer view's 36 bytes");
+  EXPECT_EQ(
+      error("scale.gltf", b.gltf("[" + mesh_of(p) + "]", R"([{"mesh": 0, "scale": [1, 2]}])")),
+      at("scale.gltf") + "key 'nodes[0].scale': expected 3 numbers");
   EXPECT_EQ(error("deep.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"extras\": " +
                                    std::string(10000, '[') + std::string(10000, ']') + "}"),
             at("deep.gltf", 1) + "JSON nested deeper than 100 levels");
-  EXPECT_THAT(error("broken.gltf", "{\"asset\": "), HasSubstr(at("broken.gltf") + "not a valid glTF 2.0 file: "));
+  EXPECT_THAT(error("broken.gltf", "{\"asset\": "),
+              HasSubstr(at("broken.gltf") + "not a valid glTF 2.0 file: "));
 }
 
 TEST_F(GltfTest, AMissingBufferFileIsNamed) {
-  const std::string gltf = R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 36, "uri": "gone.bin"}],
+  const std::string gltf =
+      R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 36, "uri": "gone.bin"}],
     "bufferViews": [{"buffer": 0, "byteLength": 36}],
     "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 3}],
     "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "nodes": [{"mesh": 0}]})";
-  EXPECT_THAT(error("external.gltf", gltf),
-              AllOf(HasSubstr(at("external.gltf") + "not a valid glTF 2.0 file: "),
-                    HasSubstr("gone.bin")));
+  EXPECT_THAT(
+      error("external.gltf", gltf),
+      AllOf(HasSubstr(at("external.gltf") + "not a valid glTF 2.0 file: "), HasSubstr("gone.bin")));
   ByteWriter w;
   for (const Vec3& v : kTriangle) w.put(float(v.x)).put(float(v.y)).put(float(v.z));
   write("gone.bin", w.bytes());

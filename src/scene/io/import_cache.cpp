@@ -33,8 +33,8 @@ std::optional<std::string> ImportCache::key_of(const fs::path& file) const {
   const auto time = fs::last_write_time(path, error);
   if (error) return std::nullopt;
   return "shadowkit-import 1, assimp " + std::to_string(aiGetVersionMajor()) + "." +
-         std::to_string(aiGetVersionMinor()) + "." + std::to_string(aiGetVersionRevision()) +
-         ", " + std::to_string(size) + " bytes, modified " +
+         std::to_string(aiGetVersionMinor()) + "." + std::to_string(aiGetVersionRevision()) + ", " +
+         std::to_string(size) + " bytes, modified " +
          std::to_string(time.time_since_epoch().count()) + ", " + path.string();
 }
 
@@ -53,7 +53,8 @@ std::optional<std::string> ImportCache::find(const fs::path& file) const {
   if (!in || !std::getline(in, stored_key) || stored_key != *key) return std::nullopt;
   std::string bytes;
   char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) bytes.append(buffer, std::size_t(in.gcount()));
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0)
+    bytes.append(buffer, std::size_t(in.gcount()));
   if (in.bad()) return std::nullopt;
   return bytes;
 }

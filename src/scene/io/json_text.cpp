@@ -46,9 +46,9 @@ void check_json_depth(std::string_view text, const std::string& file) {
       in_string = true;
     } else if (c == '[' || c == '{') {
       if (++depth > limits::kJsonDepth) {
-        throw InputError(at_line(text, i, file),
-                         "JSON nested deeper than " + std::to_string(limits::kJsonDepth) +
-                             " levels");
+        throw InputError(
+            at_line(text, i, file),
+            "JSON nested deeper than " + std::to_string(limits::kJsonDepth) + " levels");
       }
     } else if (c == ']' || c == '}') {
       --depth;

@@ -58,8 +58,8 @@ struct OwnReader {
   Reader read;
 };
 constexpr OwnReader kOwnReaders[] = {
-    {".obj", &mesh_io::read_obj},   {".ply", &mesh_io::read_ply},  {".off", &mesh_io::read_off},
-    {".stl", &mesh_io::read_stl},   {".gltf", &mesh_io::read_gltf}, {".glb", &mesh_io::read_gltf},
+    {".obj", &mesh_io::read_obj}, {".ply", &mesh_io::read_ply},   {".off", &mesh_io::read_off},
+    {".stl", &mesh_io::read_stl}, {".gltf", &mesh_io::read_gltf}, {".glb", &mesh_io::read_gltf},
 };
 
 Reader own_reader(const std::string& extension) {
@@ -87,11 +87,11 @@ MeshFile read_any(const std::filesystem::path& path, const Context& ctx) {
 MeshFile read_mesh_file(const std::filesystem::path& path, const Context& ctx) {
   MeshFile file = read_any(path, ctx);
   if (file.soup.face_count() == 0) {
-    throw InputError(path.string(),
-                     file.skipped_primitives > 0
-                         ? "holds no faces, only " + std::to_string(file.skipped_primitives) +
-                               " points and lines, which cast no shadow"
-                         : std::string("holds no faces"));
+    throw InputError(path.string(), file.skipped_primitives > 0
+                                        ? "holds no faces, only " +
+                                              std::to_string(file.skipped_primitives) +
+                                              " points and lines, which cast no shadow"
+                                        : std::string("holds no faces"));
   }
   return file;
 }

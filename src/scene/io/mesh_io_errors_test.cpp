@@ -36,7 +36,8 @@ TEST_F(MeshIoErrorTest, Directory) {
 
 // Formats without a reader of shadowkit's own go to assimp, which refuses what it cannot read.
 TEST_F(MeshIoErrorTest, FilesAssimpCannotRead) {
-  EXPECT_EQ(error("cube.3ds", cube_obj()), at("cube.3ds") + "assimp cannot read it: Chunk is too large");
+  EXPECT_EQ(error("cube.3ds", cube_obj()),
+            at("cube.3ds") + "assimp cannot read it: Chunk is too large");
   EXPECT_THAT(error("notes.txt", "shopping list\n"),
               AllOf(HasSubstr(at("notes.txt") + "assimp cannot read it: "),
                     HasSubstr("No suitable reader found")));
@@ -68,15 +69,16 @@ TEST_F(MeshIoErrorTest, ObjMalformedVertex) {
 TEST_F(MeshIoErrorTest, ObjFaceIndexOutOfRange) {
   std::string obj = cube_obj();  // 2 header lines, 8 vertices, 6 faces
   obj += "f 1 2 9\n";
-  EXPECT_THAT(error("range.obj", obj),
-              HasSubstr(at("range.obj", 17) +
-                        "face index 9 is out of range (the file has 8 vertices)"));
+  EXPECT_THAT(
+      error("range.obj", obj),
+      HasSubstr(at("range.obj", 17) + "face index 9 is out of range (the file has 8 vertices)"));
   EXPECT_THAT(error("neg.obj", "v 0 0 0\nv 1 0 0\nf 1 2 -3\n"),
               HasSubstr(at("neg.obj", 3) +
                         "face index -3 is out of range (the file has 2 vertices so far)"));
   // A face may name vertices given after it, but only those the file gives.
-  EXPECT_THAT(error("early.obj", "v 0 0 0\nf 1 2 4\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
-              HasSubstr(at("early.obj", 2) + "face index 4 is out of range (the file has 3 vertices)"));
+  EXPECT_THAT(
+      error("early.obj", "v 0 0 0\nf 1 2 4\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"),
+      HasSubstr(at("early.obj", 2) + "face index 4 is out of range (the file has 3 vertices)"));
 }
 
 TEST_F(MeshIoErrorTest, ObjZeroAndMalformedIndices) {

@@ -26,9 +26,10 @@ constexpr std::string_view kBom = "\xEF\xBB\xBF";
 
 TEST_F(RealFilesTest, AUtf8ByteOrderMarkIsSkippedInEveryTextFormat) {
   // Before, the mark hid an OBJ's first vertex and made an ASCII STL read as binary.
-  const std::pair<const char*, std::string> files[] = {
-      {"bom.obj", cube_obj()}, {"bom.ply", cube_ply_ascii()}, {"bom.off", cube_off()},
-      {"bom.stl", cube_stl_ascii()}};
+  const std::pair<const char*, std::string> files[] = {{"bom.obj", cube_obj()},
+                                                       {"bom.ply", cube_ply_ascii()},
+                                                       {"bom.off", cube_off()},
+                                                       {"bom.stl", cube_stl_ascii()}};
   for (const auto& [name, text] : files) {
     const MeshFile with = read(name, std::string(kBom) + text);
     const MeshFile without = read(std::string("plain-") + name, text);
@@ -53,8 +54,9 @@ TEST_F(RealFilesTest, Blender247PlyHeaderLineIsAWarning) {
       "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   const MeshFile file = read("Wuson.ply", ply);
   EXPECT_EQ(file.soup.face_count(), 1u);
-  EXPECT_THAT(warnings_, ElementsAre(at("Wuson.ply") +
-                                     "skipped 1 header line(s) that PLY does not define at line 3"));
+  EXPECT_THAT(
+      warnings_,
+      ElementsAre(at("Wuson.ply") + "skipped 1 header line(s) that PLY does not define at line 3"));
 }
 
 TEST_F(RealFilesTest, PlyTriangleStripsKeepTheirWinding) {
@@ -108,7 +110,8 @@ std::string quad_dae(const std::string& translate = "5 0 0") {
     <polylist count="1"><input semantic="VERTEX" source="#v" offset="0"/><vcount>4</vcount><p>0 1 2 3</p></polylist>
   </mesh></geometry></library_geometries>
   <library_visual_scenes><visual_scene id="s">
-    <node id="n"><translate>)" + translate + R"(</translate><instance_geometry url="#quad"/></node>
+    <node id="n"><translate>)" +
+         translate + R"(</translate><instance_geometry url="#quad"/></node>
   </visual_scene></library_visual_scenes>
   <scene><instance_visual_scene url="#s"/></scene>
 </COLLADA>)";

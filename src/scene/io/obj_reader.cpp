@@ -15,13 +15,14 @@ namespace shadowkit::mesh_io {
 namespace {
 
 // Statements that only name, group or decorate what "v" and "f" define.
-constexpr std::string_view kIgnored[] = {"vt", "vn", "g", "o", "s", "mg", "usemtl", "mtllib",
-                                         "lod", "bevel", "c_interp", "d_interp", "shadow_obj",
-                                         "trace_obj", "ctech", "stech", "maplib", "usemap"};
+constexpr std::string_view kIgnored[] = {"vt",       "vn",       "g",          "o",         "s",
+                                         "mg",       "usemtl",   "mtllib",     "lod",       "bevel",
+                                         "c_interp", "d_interp", "shadow_obj", "trace_obj", "ctech",
+                                         "stech",    "maplib",   "usemap"};
 // Free-form curves and surfaces (OBJ spec, "Free-form curve/surface attributes").
-constexpr std::string_view kFreeForm[] = {"vp",   "cstype", "deg",  "bmat", "step", "curv",
-                                          "curv2", "surf",  "parm", "trim", "hole", "scrv",
-                                          "sp",   "end",    "con"};
+constexpr std::string_view kFreeForm[] = {"vp",   "cstype", "deg",  "bmat", "step",
+                                          "curv", "curv2",  "surf", "parm", "trim",
+                                          "hole", "scrv",   "sp",   "end",  "con"};
 
 bool one_of(std::string_view word, std::span<const std::string_view> words) {
   for (std::string_view w : words) {

@@ -88,11 +88,12 @@ Property& index_list(Element& element, const std::string& path) {
   Property* p = find_property(element, "vertex_indices");
   if (p == nullptr) p = find_property(element, "vertex_index");
   if (p == nullptr || !p->list) {
-    throw InputError(path, "the " + element.name + " element has no 'vertex_indices' list property");
+    throw InputError(path,
+                     "the " + element.name + " element has no 'vertex_indices' list property");
   }
   if (p->type >= Scalar::kFloat || p->count_type >= Scalar::kFloat) {
-    throw InputError(path, "the " + element.name + " property '" + p->name +
-                               "' must use integer types");
+    throw InputError(path,
+                     "the " + element.name + " property '" + p->name + "' must use integer types");
   }
   return *p;
 }

@@ -70,8 +70,8 @@ inline void refuse_utf16(std::string_view text, const std::string& path) {
 
 /// \brief Walks a text line by line and each line token by token (whitespace-separated).
 ///
-/// Skips a UTF-8 byte order mark, strips '\r' (CRLF files), and optionally comments and '\'-continued lines. Errors thrown
-/// through fail() name the file and the current line.
+/// Skips a UTF-8 byte order mark, strips '\r' (CRLF files), and optionally comments and
+/// '\'-continued lines. Errors thrown through fail() name the file and the current line.
 class TextCursor {
  public:
   struct Options {
