@@ -60,7 +60,9 @@ Camera read_camera(const JsonCursor& c, Camera camera, const Context& ctx,
   }
   const Vec3 view = camera.look_at - camera.position;
   if (!(length(view) > 1e-12 * std::max(1.0, max_abs_component(camera.position)))) {
-    c["look_at"].fail("equals camera.position: the view direction is undefined");
+    c["look_at"].fail(view == Vec3{} ? "equals camera.position: the view direction is undefined"
+                                     : "lies too close to camera.position, against their "
+                                       "coordinates' size, to define a view direction");
   }
   if (!(length(cross(normalize(view), camera.up)) > 1e-9)) {
     c.has("up") ? c["up"].fail("is zero or parallel to the view direction")
