@@ -39,13 +39,26 @@ std::vector<std::string> with_reference_first(std::vector<std::string> methods) 
   return methods;
 }
 
-nlohmann::json run_json(const MethodRun& run, double scan_ms) {
+// The scene and how long loading it took: parsing, welding, triangulating, the working frame.
+struct LoadedScene {
+  Scene scene;
+  double load_ms = 0;
+};
+
+LoadedScene timed_load(const std::string& spec, const Context& ctx) {
+  const double start = now_ms();
+  Scene scene = load_scene(spec, ctx);
+  return {std::move(scene), now_ms() - start};
+}
+
+nlohmann::json run_json(const MethodRun& run, double load_ms, double scan_ms) {
   if (run.failed()) return {{"method", run.method}, {"light", run.light}, {"failed", run.failure}};
   nlohmann::json j = {{"method", run.method},
                       {"light", run.light},
                       {"prepare_ms", run.prepare_ms},
                       {"build_ms", run.build_ms},
                       {"shade_ms", run.shade_ms},
+                      {"load_ms", load_ms},
                       {"scan_ms", scan_ms},
                       {"memory_bytes", run.memory_bytes}};
   for (const auto& [key, value] : run.counters) j["counters"][key] = value;
@@ -79,11 +92,14 @@ std::string comparison_columns(const std::optional<MaskComparison>& c) {
   return buf;
 }
 
-void print_header(const Scene& scene, const CameraPass& pass, bool with_mismatch) {
+void print_header(const LoadedScene& loaded, const CameraPass& pass, bool with_mismatch) {
+  const Scene& scene = loaded.scene;
   std::printf(
-      "scene %s: %u polygons, %zu triangles, %zu light(s), %dx%d; scan conversion %.2f ms\n",
+      "scene %s: %u polygons, %zu triangles, %zu light(s), %dx%d; loading %.2f ms, scan "
+      "conversion %.2f ms\n",
       scene.name.c_str(), scene.face_count(), scene.triangles().triangles.size(),
-      scene.lights.size(), pass.surfaces.width, pass.surfaces.height, pass.scan_ms);
+      scene.lights.size(), pass.surfaces.width, pass.surfaces.height, loaded.load_ms,
+      pass.scan_ms);
   std::printf("%-10s %-4s %10s %10s %10s %10s", "method", "light", "prepare_ms", "build_ms",
               "shade_ms", "memory_MB");
   if (with_mismatch) std::printf(" %11s %11s", "mismatch_%", "interior_%");
@@ -133,7 +149,8 @@ int run_render(const RenderOptions& options, const Context& ctx) {
 int run_compare(const CompareOptions& options, const Context& ctx) {
   const std::vector<std::string> methods = with_reference_first(checked_methods(options.methods));
   for (const std::string& m : methods) make_method(m, settings_for(options, m));
-  const Scene scene = load_scene(options.scene, ctx);
+  const LoadedScene loaded = timed_load(options.scene, ctx);
+  const Scene& scene = loaded.scene;
   Progress progress;
   progress.step("scan conversion");
   const CameraPass pass = run_camera_pass(scene, {}, ctx);
@@ -173,7 +190,7 @@ int run_compare(const CompareOptions& options, const Context& ctx) {
       options.methods.empty() || std::find(options.methods.begin(), options.methods.end(),
                                            "raytrace") != options.methods.end();
   nlohmann::json out = nlohmann::json::array();
-  if (!options.json) print_header(scene, pass, true);
+  if (!options.json) print_header(loaded, pass, true);
   bool failed = false;
   for (const ComparedMethod& cm : compared) {
     failed = failed || any_failed(cm.runs);
@@ -185,7 +202,7 @@ int run_compare(const CompareOptions& options, const Context& ctx) {
         print_row(run, comparison_columns(c));
         continue;
       }
-      nlohmann::json j = run_json(run, pass.scan_ms);
+      nlohmann::json j = run_json(run, loaded.load_ms, pass.scan_ms);
       if (!run.failed()) add_comparison_json(j, c);
       out.push_back(std::move(j));
     }
@@ -202,13 +219,14 @@ int run_bench(const BenchOptions& options, const Context& ctx) {
   for (const std::string& m : methods) make_method(m, settings_for(options, m));
   if (options.repeats < 1) throw InputError("--repeats", "needs at least one timed run");
   if (options.warmup < 0) throw InputError("--warmup", "cannot be negative");
-  const Scene scene = load_scene(options.scene, ctx);
+  const LoadedScene loaded = timed_load(options.scene, ctx);
+  const Scene& scene = loaded.scene;
   const Repetitions reps{options.warmup, options.repeats};
   Progress progress;
   progress.step("scan conversion");
   const CameraPass pass = run_camera_pass(scene, reps, ctx);
   nlohmann::json out = nlohmann::json::array();
-  if (!options.json) print_header(scene, pass, false);
+  if (!options.json) print_header(loaded, pass, false);
   bool failed = false;
   for (const std::string& m : methods) {
     progress.step("method " + m);
@@ -217,7 +235,7 @@ int run_bench(const BenchOptions& options, const Context& ctx) {
     failed = failed || any_failed(runs);
     for (const MethodRun& run : runs) {
       if (options.json) {
-        out.push_back(run_json(run, pass.scan_ms));
+        out.push_back(run_json(run, loaded.load_ms, pass.scan_ms));
       } else {
         print_row(run, "");
       }
