@@ -97,13 +97,9 @@ std::vector<std::uint32_t> weld(std::span<const Vec3> positions, const Bounds3& 
 }
 
 // Removes repeated consecutive vertices (including the wrap-around) left by welding.
-std::vector<std::uint32_t> remove_repeats(std::vector<std::uint32_t> loop) {
-  std::vector<std::uint32_t> out;
-  for (std::uint32_t v : loop) {
-    if (out.empty() || out.back() != v) out.push_back(v);
-  }
-  while (out.size() > 1 && out.front() == out.back()) out.pop_back();
-  return out;
+void remove_repeats(std::vector<std::uint32_t>& loop) {
+  loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
+  while (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
 }
 
 double diameter(std::span<const Vec3> p, std::span<const std::uint32_t> loop) {
@@ -156,7 +152,8 @@ PolygonSoup welded_soup(const PolygonSoup& soup) {
       loop.push_back(remap[soup.indices[k]]);
       used[loop.back()] = true;
     }
-    loops.push_back(remove_repeats(std::move(loop)));
+    remove_repeats(loop);
+    loops.push_back(std::move(loop));
   }
   // Used positions keep their order: a soup without duplicates keeps its numbering.
   std::vector<std::uint32_t> compact(merged.size());
@@ -179,19 +176,25 @@ Mesh Mesh::build(const PolygonSoup& soup, const std::string& name, const Context
       weld(soup.positions, box, kWeldTolerance * box.diagonal(), mesh.vertices);
 
   std::size_t degenerate = 0, split = 0;
-  auto add_face = [&mesh](std::span<const std::uint32_t> loop, const Plane& plane, double area) {
-    mesh.face_vertices.insert(mesh.face_vertices.end(), loop.begin(), loop.end());
+  mesh.face_vertices.reserve(soup.indices.size());
+  mesh.face_start.reserve(soup.face_start.size());
+  mesh.planes.reserve(soup.face_count());
+  mesh.areas.reserve(soup.face_count());
+  mesh.convex.reserve(soup.face_count());
+  std::vector<std::uint32_t> loop;
+  auto add_face = [&mesh](std::span<const std::uint32_t> face, const Plane& plane, double area) {
+    mesh.face_vertices.insert(mesh.face_vertices.end(), face.begin(), face.end());
     mesh.face_start.push_back(std::uint32_t(mesh.face_vertices.size()));
     mesh.planes.push_back(plane);
     mesh.areas.push_back(area);
-    mesh.convex.push_back(turns_one_way(mesh.vertices, loop, plane.normal));
+    mesh.convex.push_back(turns_one_way(mesh.vertices, face, plane.normal));
   };
   for (std::size_t f = 0; f < soup.face_count(); ++f) {
-    std::vector<std::uint32_t> loop;
+    loop.clear();
     for (std::uint32_t k = soup.face_start[f]; k < soup.face_start[f + 1]; ++k) {
       loop.push_back(remap[soup.indices[k]]);
     }
-    loop = remove_repeats(std::move(loop));
+    remove_repeats(loop);
     const double size = loop.size() >= 3 ? diameter(mesh.vertices, loop) : 0.0;
     const Vec3 newell = loop.size() >= 3 ? newell_normal(mesh.vertices, loop) : Vec3{};
     const double area = 0.5 * length(newell);
@@ -226,25 +229,51 @@ Mesh Mesh::build(const PolygonSoup& soup, const std::string& name, const Context
   return mesh;
 }
 
+// Edges are numbered in the order of their first corner. Corners are grouped by their edge's
+// lower vertex (a counting sort) and each group sorted by the upper one: the corners of an edge
+// then lie together, the first of them leading, whatever a vertex's degree.
 void Mesh::build_adjacency() {
-  absl::flat_hash_map<std::uint64_t, std::uint32_t> edge_of;
-  edge_of.reserve(face_vertices.size());
-  corner_edge.resize(face_vertices.size());
-  std::vector<std::uint32_t> uses_per_edge;
+  const std::size_t corners = face_vertices.size();
+  std::vector<std::uint32_t> lower(corners), upper(corners);
+  std::vector<std::uint32_t> group_start(vertices.size() + 1, 0);
   for (std::size_t f = 0; f < face_count(); ++f) {
     const std::uint32_t n = face_size(f);
     for (std::uint32_t k = 0; k < n; ++k) {
       const std::uint32_t a = face_vertex(f, k), b = face_vertex(f, (k + 1) % n);
-      const std::uint32_t lo = std::min(a, b), hi = std::max(a, b);
-      const std::uint64_t key = (std::uint64_t(lo) << 32) | hi;
-      auto [it, inserted] = edge_of.try_emplace(key, std::uint32_t(edges.size()));
-      if (inserted) {
-        edges.push_back({lo, hi, 0, 0});
-        uses_per_edge.push_back(0);
-      }
-      corner_edge[face_start[f] + k] = it->second;
-      ++uses_per_edge[it->second];
+      lower[face_start[f] + k] = std::min(a, b);
+      upper[face_start[f] + k] = std::max(a, b);
+      ++group_start[std::min(a, b) + 1];
     }
+  }
+  for (std::size_t v = 0; v < vertices.size(); ++v) group_start[v + 1] += group_start[v];
+  std::vector<std::uint64_t> grouped(corners);  // (upper << 32 | corner) per lower vertex
+  {
+    std::vector<std::uint32_t> fill(group_start.begin(), group_start.end() - 1);
+    for (std::size_t c = 0; c < corners; ++c) {
+      grouped[fill[lower[c]]++] = std::uint64_t(upper[c]) << 32 | c;
+    }
+  }
+  std::vector<std::uint32_t> leader(corners);  // the first corner on each corner's edge
+  for (std::size_t v = 0; v < vertices.size(); ++v) {
+    const auto begin = grouped.begin() + group_start[v], end = grouped.begin() + group_start[v + 1];
+    std::sort(begin, end);
+    std::uint32_t first = 0;
+    for (auto it = begin; it != end; ++it) {
+      if (it == begin || (*it >> 32) != (*(it - 1) >> 32)) first = std::uint32_t(*it);
+      leader[std::uint32_t(*it)] = first;
+    }
+  }
+  corner_edge.resize(corners);
+  std::vector<std::uint32_t> uses_per_edge;
+  for (std::size_t c = 0; c < corners; ++c) {
+    if (leader[c] == c) {
+      corner_edge[c] = std::uint32_t(edges.size());
+      edges.push_back({lower[c], upper[c], 0, 0});
+      uses_per_edge.push_back(0);
+    } else {
+      corner_edge[c] = corner_edge[leader[c]];
+    }
+    ++uses_per_edge[corner_edge[c]];
   }
   std::uint32_t offset = 0;
   for (std::size_t e = 0; e < edges.size(); ++e) {
