@@ -1,11 +1,14 @@
 #include "harness.h"
 
+#include <pthread.h>
 #include <stdlib.h>  // mkdtemp
+#include <sys/prctl.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -22,6 +25,10 @@
 #include "shadowkit/methods/shadow_method.h"
 #include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/scene_file.h"
+
+// The sanitizers' hook for their fatal reports (libFuzzer sets it to save the input); weak, as
+// the release fuzz build has no sanitizer runtime.
+extern "C" __attribute__((weak)) void __sanitizer_set_death_callback(void (*callback)());
 
 namespace shadowkit::fuzz {
 namespace {
@@ -106,6 +113,17 @@ void write_file(const fs::path& path, const void* data, std::size_t size) {
 
 void write_text(const fs::path& path, const std::string& text) {
   write_file(path, text.data(), text.size());
+}
+
+// A reader that parses in a child process (the formats assimp reads) expects that child to die
+// as it would outside the fuzzer, which the reader then reports as an InputError. fork()
+// passes libFuzzer's and the sanitizers' crash handlers on to the child, which would report
+// the importer's crash as the target's own and save the input as a crash; this puts the
+// defaults back. The child also dies with its parent, whom libFuzzer may stop for a timeout.
+void in_forked_child() {
+  for (int signal : {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT}) std::signal(signal, SIG_DFL);
+  if (__sanitizer_set_death_callback != nullptr) __sanitizer_set_death_callback(nullptr);
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
 }
 
 void remove_directory() {
@@ -266,6 +284,8 @@ void initialize(std::string_view kind, bool render) {
   const int n = threads != nullptr ? std::max(1, std::atoi(threads)) : 1;
   s.threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                     std::size_t(n));
+
+  pthread_atfork(nullptr, nullptr, in_forked_child);
 
   s.dir = make_temporary_directory();
   std::atexit(remove_directory);

@@ -9,8 +9,8 @@
 # build-fuzz-release/ (SHADOWKIT_FUZZ_BUILD_DIR overrides). The corpus of each target persists
 # in $SHADOWKIT_FUZZ_HOME/corpus/TARGET (default ~/.cache/shadowkit-fuzz); the crash-*,
 # timeout-*, oom-*, leak-* and slow-unit-* (over 10 s) inputs and the logs go to
-# $SHADOWKIT_FUZZ_HOME/findings/BUILD/TARGET/. Exit status 1 when anything but slow inputs
-# was found.
+# $SHADOWKIT_FUZZ_HOME/findings/BUILD/TARGET/; those that do not fail again when replayed, to
+# its unreproduced/. Exit status 1 when anything but slow inputs was found.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 source "$root/fuzz/common.sh"
@@ -84,11 +84,22 @@ for name in "${targets[@]}"; do
     -ignore_timeouts=1 -ignore_ooms=1 -max_total_time=$((minutes * 60)) \
     -artifact_prefix="$findings/" "$corpus" "${regressions[@]}" "$work/seeds" >"$log" 2>&1 ||
     true
-  # The last status line of fork mode: "#EXECS: cov: .. corp: .. exec/s: .. oom/timeout/crash:
-  # O/T/C time: Ss ...".
+  # The last status line of fork mode: "#EXECS: cov: .. exec/s: .. oom/timeout/crash: ..
+  # time: Ss ...". Its counts leave out the inputs that fail as the run starts (the seeds and
+  # regression inputs), so the findings are counted as the files saved.
   stats=$(grep -aoE '#[0-9]+: cov: .* time: [0-9]+s' "$log" | tail -1 || true)
   execs=$(sed -n 's/^#\([0-9]*\):.*/\1/p' <<<"$stats")
   seconds=$(sed -n 's/.* time: \([0-9]*\)s.*/\1/p' <<<"$stats")
+  # Each input saved is replayed once. One that passes then moves to unreproduced/ and is not
+  # counted: an allocation of an importer's child process (the formats assimp reads), which
+  # the reader reports as an InputError, or a hang of an overloaded machine.
+  mkdir -p "$findings/unreproduced"
+  while IFS= read -r -d '' file; do
+    if TMPDIR=$work/tmp "$binary" "${options[@]}" "$file" >>"$log.replay" 2>&1; then
+      mv "$file" "$findings/unreproduced/"
+    fi
+  done < <(find "$findings" -maxdepth 1 -newer "$work/start" \( -name 'crash-*' -o \
+    -name 'timeout-*' -o -name 'oom-*' -o -name 'leak-*' \) -print0)
   count() { find "$findings" -maxdepth 1 -name "$1-*" -newer "$work/start" | wc -l; }
   crashes=$(count crash) timeouts=$(count timeout) ooms=$(count oom) leaks=$(count leak)
   slow=$(count slow-unit)
