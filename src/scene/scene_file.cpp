@@ -59,12 +59,15 @@ Camera read_camera(const JsonCursor& c, Camera camera, const Context& ctx,
            std::to_string(limits::kPixels) + " are allowed");
   }
   const Vec3 view = camera.look_at - camera.position;
-  if (!(length(view) > 1e-12 * std::max(1.0, max_abs_component(camera.position)))) {
+  // Relative to the coordinates alone: a scene in units of 1e-13 is as good as one in metres.
+  const double size =
+      std::max(max_abs_component(camera.position), max_abs_component(camera.look_at));
+  if (!(length(view) > 1e-12 * size)) {
     c["look_at"].fail(view == Vec3{} ? "equals camera.position: the view direction is undefined"
                                      : "lies too close to camera.position, against their "
                                        "coordinates' size, to define a view direction");
   }
-  if (!(length(cross(normalize(view), camera.up)) > 1e-9)) {
+  if (!(length(cross(normalize(view), normalize(camera.up))) > 1e-9)) {
     c.has("up") ? c["up"].fail("is zero or parallel to the view direction")
                 : c.fail("up [0, 1, 0] is parallel to the view direction; give camera.up");
   }

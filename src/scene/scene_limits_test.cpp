@@ -100,6 +100,15 @@ TEST_F(SceneFileTest, GeometryFarFromItsSizeIsRefused) {
                         "from it"));
 }
 
+// Camera checks are relative to the camera's own coordinates and vectors, never absolute.
+TEST_F(SceneFileTest, ACameraInTinyUnitsIsAsGoodAsOneInMetres) {
+  EXPECT_EQ(error_of(scene(R"("position": [0, 4e-13, 12e-13], "look_at": [0, 0, 0],
+                              "up": [0, 1e-20, 0])",
+                           R"({"type": "point", "position": [3e-13, 10e-13, 4e-13]})",
+                           R"({"generator": "box", "size": 1e-13})")),
+            "no error");
+}
+
 TEST(BuiltinScenes, SizesBeyondTheCoordinateRangeAreRefused) {
   for (const char* spec : {"room:1e20", "room:1e300"}) {
     EXPECT_THAT([&] { make_builtin_scene(spec, {}); },
