@@ -286,6 +286,9 @@ void initialize(std::string_view kind, bool render) {
                                                     std::size_t(n));
 
   pthread_atfork(nullptr, nullptr, in_forked_child);
+  // No import cache (docs/formats.md): each input is new, however alike its path, size and
+  // time are to the last one's, and a run must not fill the user's cache with its inputs.
+  setenv("SHADOWKIT_CACHE_DIR", "", 1);
 
   s.dir = make_temporary_directory();
   std::atexit(remove_directory);
