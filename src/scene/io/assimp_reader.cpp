@@ -240,6 +240,7 @@ class Reader {
  private:
   void take(void* out, std::size_t n) {
     if (n > bytes_.size()) throw std::length_error("truncated");
+    if (n == 0) return;  // an empty vector's data() may be null, which memcpy must not get
     std::memcpy(out, bytes_.data(), n);
     bytes_.remove_prefix(n);
   }
