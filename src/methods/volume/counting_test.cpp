@@ -6,6 +6,7 @@
 #include "../../testing/test_scenes.h"
 #include "contour_edges.h"
 #include "eye_count.h"
+#include "shadowkit/core/error.h"
 #include "shadow_polygon.h"
 #include "volume_method.h"
 
@@ -124,6 +125,24 @@ TEST(Counting, ForcedDepthPassAndDepthFailAgreeWithTheReference) {
               0.05)
         << mode;
   }
+}
+
+// With the camera in the ground's plane no count at the eye exists: a forced depth-pass
+// refuses the light (it once stopped on a failed check), and auto counts depth-fail.
+TEST(Counting, ForcedDepthPassRefusesAnEyeWithoutACount) {
+  const Scene scene = square_scene({0, 0, 6}, {0, 1, 0});
+  VolumeMethod pass({"volume", {{"count", "pass"}}});
+  pass.prepare(scene, {});
+  try {
+    pass.build(scene, 0, {});
+    ADD_FAILURE() << "depth-pass built without a count at the eye";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(),
+                 "option 'volume.count': pass needs the count at the eye, which object 'object0' "
+                 "leaves undefined (the camera lies in one of its face planes, or its ray to "
+                 "the light grazes an edge); use auto or fail");
+  }
+  EXPECT_EQ(depth_fail_objects(scene), 1);
 }
 
 }  // namespace

@@ -83,7 +83,13 @@ CasterVolume caster_volume(const Scene& scene, const SubObjects& parts,
   v.depth_fail = counting == VolumeMethod::Counting::depth_fail ||
                  (counting == VolumeMethod::Counting::automatic &&
                   needs_depth_fail(mesh, edges, light, eye, view, eye_count));
-  SHADOWKIT_CHECK(v.depth_fail || eye_count);
+  if (!v.depth_fail && !eye_count) {
+    // Only a forced depth-pass gets here: auto counts depth-fail where the eye's count is open.
+    throw InputError("option 'volume.count'",
+                     "pass needs the count at the eye, which object '" + object.name +
+                         "' leaves undefined (the camera lies in one of its face planes, or its "
+                         "ray to the light grazes an edge); use auto or fail");
+  }
   v.eye_count = v.depth_fail ? 0 : *eye_count;
   // Shadow polygons (Fig. 4), and the caps that close the volumes for depth-fail.
   for (const ContourEdge& e : edges) {
