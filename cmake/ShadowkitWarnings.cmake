@@ -3,8 +3,8 @@ add_library(shadowkit_warnings INTERFACE)
 target_compile_options(shadowkit_warnings INTERFACE
   -Wall -Wextra -Wpedantic -Wshadow -Wnon-virtual-dtor -Wold-style-cast -Wcast-align
   -Woverloaded-virtual -Wnull-dereference -Wimplicit-fallthrough
-  # GCC 12 reports false positives inside std::string (GCC bug 105329).
-  -Wno-restrict)
+  # GCC 12 reports false positives inside std::string (GCC bug 105329); clang has no such switch.
+  $<$<CXX_COMPILER_ID:GNU>:-Wno-restrict>)
 
 add_library(shadowkit_options INTERFACE)
 target_link_libraries(shadowkit_options INTERFACE shadowkit_warnings)

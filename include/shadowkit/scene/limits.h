@@ -31,8 +31,12 @@ inline constexpr double kSmallestSize = 1e-290;
 /// Segments per patch edge of a Catmull-Clark object's tessellation.
 inline constexpr int kTessellation = 256;
 
-/// Seconds and bytes an assimp import may take before it is stopped.
-inline constexpr int kImportSeconds = 120;
-inline constexpr std::size_t kImportBytes = std::size_t{8} << 30;
+/// Seconds an assimp import may take before it is stopped: a base and more per MiB of the
+/// file, so that a large model has time and a small damaged file is stopped soon.
+inline constexpr double kImportSeconds = 10;
+inline constexpr double kImportSecondsPerMiB = 1;
+/// Bytes of address space an assimp import may use: a base and more per byte of the file.
+inline constexpr std::size_t kImportBytes = std::size_t{1} << 30;
+inline constexpr std::size_t kImportBytesPerFileByte = 64;
 
 }  // namespace shadowkit::limits

@@ -17,7 +17,9 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <new>
 #include <optional>
 #include <stdexcept>
@@ -170,7 +172,28 @@ ImportResult collect(const aiScene& scene) {
   return result;
 }
 
-ImportResult import(const std::string& path) {
+/// \brief What one import may take: limits.h's base, and more for a larger file.
+struct ImportBudget {
+  double seconds;
+  std::size_t bytes;
+
+  static ImportBudget for_file(const std::string& path) {
+    std::error_code error;
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    const std::uintmax_t file_bytes = error ? 0 : size;
+    return {
+        limits::kImportSeconds + limits::kImportSecondsPerMiB * double(file_bytes >> 20),
+        limits::kImportBytes + limits::kImportBytesPerFileByte *
+                                   std::min<std::uintmax_t>(file_bytes, std::uintmax_t{1} << 32)};
+  }
+  std::string memory_text() const {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f GiB", double(bytes) / double(std::size_t{1} << 30));
+    return text;
+  }
+};
+
+ImportResult import(const std::string& path, const ImportBudget& budget) {
   ImportResult result;
   try {
     Assimp::Importer importer;
@@ -183,8 +206,8 @@ ImportResult import(const std::string& path) {
     }
     result = collect(*scene);
   } catch (const std::bad_alloc&) {
-    result.error = "reading it needs more than " + std::to_string(limits::kImportBytes >> 30) +
-                   " GiB of memory";
+    result.error = "reading it needs more than " + budget.memory_text() +
+                   " of memory (1 GiB and 64 bytes per byte of the file)";
   } catch (const std::exception& e) {
     result.error = e.what();
   }
@@ -276,9 +299,13 @@ ImportResult decode(std::string_view bytes) {
 
 // ---- The child process ----
 
-[[noreturn]] void run_child(const std::string& path, int out) {
+[[noreturn]] void run_child(const std::string& path, const ImportBudget& budget, int out) {
+  // A crash is the parent's to report, not the handlers the child inherited (a fuzzer's).
+  for (int signal_number : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTRAP}) {
+    signal(signal_number, SIG_DFL);
+  }
   if (!kAddressSanitizer) {
-    const rlimit memory{limits::kImportBytes, limits::kImportBytes};
+    const rlimit memory{budget.bytes, budget.bytes};
     setrlimit(RLIMIT_AS, &memory);
   }
   // Some importers print; shadowkit's output (info --json) and messages must stay its own.
@@ -287,7 +314,7 @@ ImportResult decode(std::string_view bytes) {
     dup2(null, STDOUT_FILENO);
     dup2(null, STDERR_FILENO);
   }
-  const std::string message = encode(import(path));
+  const std::string message = encode(import(path, budget));
   for (std::size_t done = 0; done < message.size();) {
     const ssize_t n = write(out, message.data() + done, message.size() - done);
     if (n < 0 && errno == EINTR) continue;
@@ -317,6 +344,7 @@ bool read_until(int in, std::chrono::steady_clock::time_point deadline, std::str
 
 // The child's message about \p path: its polygons or the reason it could not read them.
 std::string import_in_child(const std::string& path) {
+  const ImportBudget budget = ImportBudget::for_file(path);
   int pipe_ends[2];
   if (pipe(pipe_ends) != 0) {
     throw InputError(path, std::string("cannot start the importer: ") + std::strerror(errno));
@@ -329,21 +357,24 @@ std::string import_in_child(const std::string& path) {
   }
   if (child == 0) {
     close(pipe_ends[0]);
-    run_child(path, pipe_ends[1]);
+    run_child(path, budget, pipe_ends[1]);
   }
   close(pipe_ends[1]);
   std::string message;
-  const bool finished = read_until(
-      pipe_ends[0], std::chrono::steady_clock::now() + std::chrono::seconds(limits::kImportSeconds),
-      message);
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::milliseconds(std::int64_t(budget.seconds * 1000));
+  const bool finished = read_until(pipe_ends[0], deadline, message);
   close(pipe_ends[0]);
   if (!finished) kill(child, SIGKILL);
   int status = 0;
   while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
   }
   if (!finished) {
-    throw InputError(path, "assimp did not finish reading it within " +
-                               std::to_string(limits::kImportSeconds) + " s");
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.0f", budget.seconds);
+    throw InputError(path, std::string("assimp did not finish reading it within ") + seconds +
+                               " s (" + std::to_string(int(limits::kImportSeconds)) +
+                               " s and 1 s per MiB of the file)");
   }
   if (WIFSIGNALED(status)) {
     throw InputError(

@@ -19,7 +19,7 @@ MeshFile read_stl(std::string_view data, const std::string& path, const Context&
 MeshFile read_gltf(std::string_view data, const std::string& path, const Context& ctx);
 
 /// Reads \p path with assimp, in a child process that a crash or a hang cannot take down
-/// with shadowkit (limits::kImportSeconds, limits::kImportBytes).
+/// with shadowkit, within a time and memory budget that grows with the file (limits.h).
 MeshFile read_with_assimp(const std::string& path, const Context& ctx);
 
 /// The extensions assimp's importers claim, lower case with the dot (".dae", ".fbx", ...).
