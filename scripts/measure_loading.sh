@@ -26,7 +26,7 @@ awk 'BEGIN {
   }
 }' > "$work/cubes-2000.obj"
 
-median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2) }'; }
+median() { sort -g | awk '{ v[NR] = $1 } END { printf "%.1f", (NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2) }'; }
 json_number() { grep -o "\"$1\": [0-9.e+-]*" | head -1 | awk '{ print $2 }'; }
 
 measure() {  # LABEL FILE [ENV...]
