@@ -9,10 +9,6 @@ find_package(TinyGLTF REQUIRED)
 find_package(assimp 5 REQUIRED)
 find_package(absl REQUIRED)
 
-find_path(STB_INCLUDE_DIR stb_image_write.h PATH_SUFFIXES stb REQUIRED)
-add_library(shadowkit_stb INTERFACE)
-target_include_directories(shadowkit_stb SYSTEM INTERFACE ${STB_INCLUDE_DIR})
-
 # Debian 12's OpenSubdivConfig.cmake names a static library the package does not ship,
 # so the headers and libosdCPU.so are found directly.
 find_path(OPENSUBDIV_INCLUDE_DIR opensubdiv/far/topologyRefiner.h REQUIRED)

@@ -5,6 +5,9 @@ target_compile_options(shadowkit_warnings INTERFACE
   -Woverloaded-virtual -Wnull-dereference -Wimplicit-fallthrough
   # GCC 12 reports false positives inside std::string (GCC bug 105329); clang has no such switch.
   $<$<CXX_COMPILER_ID:GNU>:-Wno-restrict>)
+if(SHADOWKIT_WARNINGS_AS_ERRORS)
+  target_compile_options(shadowkit_warnings INTERFACE -Werror)
+endif()
 
 add_library(shadowkit_options INTERFACE)
 target_link_libraries(shadowkit_options INTERFACE shadowkit_warnings)

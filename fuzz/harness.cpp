@@ -22,6 +22,7 @@
 
 #include "shadowkit/core/context.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/methods/registry.h"
 #include "shadowkit/methods/shadow_method.h"
 #include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/scene_file.h"

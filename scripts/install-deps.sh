@@ -4,10 +4,10 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libembree-dev libtbb-dev libosd-dev
-  nlohmann-json3-dev libcli11-dev libstb-dev libpng-dev
+  nlohmann-json3-dev libcli11-dev libpng-dev
   libtinygltf-dev libassimp-dev assimp-utils assimp-testmodels libabsl-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
-  clang-14 libfuzzer-14-dev libclang-rt-14-dev assimp-testmodels  # fuzz/: docs/fuzzing.md
+  libgtest-dev libgmock-dev libbenchmark-dev python3 clang-format-14  # tests: layering, format
+  clang-14 libfuzzer-14-dev libclang-rt-14-dev  # fuzz/: docs/fuzzing.md
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -7,11 +7,12 @@
 #include <optional>
 
 #include "progress.h"
-#include "shadowkit/app/mask_compare.h"
+#include "shadowkit/methods/mask_compare.h"
 #include "shadowkit/app/pipeline.h"
 #include "shadowkit/app/report.h"
 #include "shadowkit/app/shading.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/methods/registry.h"
 #include "shadowkit/scene/scene_file.h"
 
 namespace shadowkit {

@@ -1,11 +1,10 @@
 // The fragments command: svbsp's fragments of every light written as geometry and areas.
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 
-#include "../methods/svbsp/fragments_output.h"
 #include "shadowkit/app/commands.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/methods/svbsp.h"
 #include "shadowkit/scene/scene_file.h"
 
 namespace shadowkit {
@@ -13,7 +12,7 @@ namespace shadowkit {
 int run_fragments(const FragmentsOptions& options, const Context& ctx) {
   const auto svbsp_settings = options.settings.find("svbsp");
   if (svbsp_settings != options.settings.end()) {
-    make_method("svbsp", svbsp_settings->second);  // unknown keys and bad values
+    svbsp::make_method(svbsp_settings->second);  // unknown keys and bad values
     if (svbsp_settings->second.number("shadowed_only", 0) != 0) {
       throw InputError("option 'svbsp.shadowed_only'",
                        "fragments writes lit and shadowed fragments; the option applies to "
@@ -25,13 +24,8 @@ int run_fragments(const FragmentsOptions& options, const Context& ctx) {
   json.replace_extension(".json");
   if (json == ply) throw InputError("--out " + options.out, "the PLY file cannot end in .json");
   const Scene scene = load_scene(options.scene, ctx);
-  const svbsp::SceneBsp bsp = svbsp::SceneBsp::build(scene);
-  const svbsp::MultiLightFragments result = svbsp::generate_multi_light_shadows(bsp, scene);
-  svbsp::write_fragments_ply(ply, scene, result);
-  std::ofstream out(json);
-  out << svbsp::fragment_areas_json(scene, result).dump(2) << "\n";
-  if (!out) throw InputError(json.string(), "cannot write");
-  std::printf("%zu fragments of %u polygons, %zu light(s): %s, %s\n", result.fragments.size(),
+  const svbsp::FragmentsWritten written = svbsp::write_fragments(scene, ply, json);
+  std::printf("%zu fragments of %u polygons, %zu light(s): %s, %s\n", written.fragments,
               scene.face_count(), scene.lights.size(), ply.c_str(), json.c_str());
   return 0;
 }

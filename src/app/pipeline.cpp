@@ -6,6 +6,7 @@
 #include <new>
 
 #include "shadowkit/core/error.h"
+#include "shadowkit/methods/registry.h"
 
 namespace shadowkit {
 

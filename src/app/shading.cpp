@@ -3,37 +3,14 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
-#include <array>
-#include <cmath>
+
+#include "shadowkit/core/palette.h"
 
 namespace shadowkit {
-namespace {
-
-std::uint8_t to_byte(double v) {
-  return std::uint8_t(std::lround(255.0 * std::clamp(v, 0.0, 1.0)));
-}
-
-}  // namespace
-
-Vec3 object_colour(std::uint32_t object) {
-  static constexpr std::array<Vec3, 8> palette{{{0.85, 0.82, 0.75},
-                                                {0.90, 0.55, 0.35},
-                                                {0.45, 0.65, 0.90},
-                                                {0.55, 0.80, 0.50},
-                                                {0.85, 0.75, 0.35},
-                                                {0.75, 0.50, 0.80},
-                                                {0.40, 0.80, 0.80},
-                                                {0.90, 0.45, 0.55}}};
-  return palette[object % palette.size()];
-}
-
-Rgb8 to_rgb8(Vec3 c) {
-  return {to_byte(c.x), to_byte(c.y), to_byte(c.z)};
-}
 
 Image<Rgb8> shade_image(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
                         const std::vector<const ShadowMask*>& masks) {
-  Image<Rgb8> image(surfaces.width, surfaces.height, Rgb8{24, 26, 32});
+  Image<Rgb8> image(surfaces.width, surfaces.height, kBackground);
   const Vec3 eye = scene.camera.position;
   const double diffuse_share = (1.0 - kAmbient) / double(std::max<std::size_t>(1, masks.size()));
   tbb::parallel_for(0, surfaces.height, [&](int y) {

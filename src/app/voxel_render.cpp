@@ -5,9 +5,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "../methods/voxel/subpatch_render.h"
 #include "shadowkit/app/commands.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/methods/voxel.h"
 #include "shadowkit/scene/scene_file.h"
 
 namespace shadowkit {
@@ -26,31 +26,16 @@ Camera turned(Camera camera, double degrees) {
   return camera;
 }
 
-// Triangles the §5.1 still render draws at a time: the peak memory of its tessellation.
-constexpr std::size_t kStillBatchTriangles = std::size_t(1) << 18;
-// With the frame buffer the whole tessellation is kept, about 1 KB a subpatch against the
-// masks' 140 bytes (docs/voxel.md): the bound on the subpatches when voxel.max_subpatches
-// is not given.
-constexpr std::size_t kKeptTessellationSubpatches = std::size_t(1) << 23;
-
-// The voxel method with voxel-render's bound on the subpatches.
-VoxelMethod method_for_render(const MethodOptions& settings) {
-  VoxelMethod method(settings);
-  const bool bound_given = !settings.text("max_subpatches", "").empty();
-  if (!method.keeps_frame_buffer() || bound_given) return method;
-  return VoxelMethod(settings, kKeptTessellationSubpatches);
-}
-
 // §5.1: one still image, the tessellation drawn in batches as it is made.
-int render_still(const Scene& scene, VoxelMethod& method, const VoxelRenderOptions& options,
-                 const Context& ctx) {
+int render_still(const Scene& scene, const MethodOptions& settings,
+                 const VoxelRenderOptions& options, const Context& ctx) {
   const auto start = std::chrono::steady_clock::now();
-  const voxel::StillImage still = voxel::render_still(scene, method, ctx, kStillBatchTriangles);
+  const voxel::StillImage still = voxel::render_still(scene, settings, ctx);
   write_png(options.image, still.image);
   std::printf(
       "%zu triangles in %zu batches; voxelization, shadows, tessellation and view %.1f ms "
       "(shadow data %.1f MB): %s\n",
-      still.triangles, still.batches, ms_since(start), double(method.memory_bytes()) / 1e6,
+      still.triangles, still.batches, ms_since(start), double(still.shadow_bytes) / 1e6,
       options.image.c_str());
   return 0;
 }
@@ -62,19 +47,19 @@ int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx) {
     throw InputError("option '--turn'", "expected a finite number of degrees, got " +
                                             std::to_string(options.turn_deg));
   }
-  const auto settings = options.settings.find("voxel");
-  VoxelMethod voxel_method =
-      method_for_render(settings == options.settings.end() ? MethodOptions{} : settings->second);
+  const auto found = options.settings.find("voxel");
+  const MethodOptions settings = found == options.settings.end() ? MethodOptions{} : found->second;
+  const bool frame_buffer = voxel::keeps_frame_buffer(settings);
   // §5.1 keeps no shadow states: a second view would redo all the shadow work.
-  if (!options.turned_image.empty() && !voxel_method.keeps_frame_buffer()) {
+  if (!options.turned_image.empty() && !frame_buffer) {
     throw InputError("option '--turned-image'",
                      "a second view without new shadow work is what the cubic frame buffer is "
                      "for; voxel.framebuffer=0 (Lai & Cheng 5.1) renders one still image");
   }
   const Scene scene = load_scene(options.scene, ctx);
-  if (!voxel_method.keeps_frame_buffer()) return render_still(scene, voxel_method, options, ctx);
+  if (!frame_buffer) return render_still(scene, settings, options, ctx);
   const auto start = std::chrono::steady_clock::now();
-  voxel::SubpatchImage source = voxel::make_subpatch_image(scene, voxel_method, ctx);
+  voxel::FrameBufferImage source(scene, settings, ctx);
   const double prepare_ms = ms_since(start);
   const auto view_start = std::chrono::steady_clock::now();
   write_png(options.image, source.render(scene.camera));
@@ -82,7 +67,7 @@ int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx) {
   std::printf(
       "%zu triangles; voxelization, shadows and tessellation %.1f ms (shadow data %.1f MB); "
       "view %.1f ms: %s\n",
-      source.triangle_count(), prepare_ms, double(voxel_method.memory_bytes()) / 1e6, view_ms,
+      source.triangle_count(), prepare_ms, double(source.shadow_bytes()) / 1e6, view_ms,
       options.image.c_str());
   if (!options.turned_image.empty()) {
     const auto turn_start = std::chrono::steady_clock::now();

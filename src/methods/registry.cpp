@@ -1,11 +1,12 @@
-#include "angular/angular_method.h"
-#include "raytrace/raytrace_method.h"
+#include "shadowkit/methods/registry.h"
+
 #include "shadowkit/core/error.h"
-#include "shadowkit/methods/shadow_method.h"
-#include "shadowmap/shadow_map_method.h"
-#include "svbsp/svbsp_method.h"
-#include "volume/volume_method.h"
-#include "voxel/voxel_method.h"
+#include "shadowkit/methods/angular.h"
+#include "shadowkit/methods/raytrace.h"
+#include "shadowkit/methods/shadowmap.h"
+#include "shadowkit/methods/svbsp.h"
+#include "shadowkit/methods/volume.h"
+#include "shadowkit/methods/voxel.h"
 
 namespace shadowkit {
 
@@ -14,12 +15,12 @@ std::vector<std::string> method_names() {
 }
 
 std::unique_ptr<ShadowMethod> make_method(std::string_view name, const MethodOptions& options) {
-  if (name == "raytrace") return std::make_unique<RaytraceMethod>(options);
-  if (name == "shadowmap") return std::make_unique<ShadowMapMethod>(options);
-  if (name == "volume") return std::make_unique<VolumeMethod>(options);
-  if (name == "svbsp") return std::make_unique<SvbspMethod>(options);
-  if (name == "angular") return std::make_unique<AngularMethod>(options);
-  if (name == "voxel") return std::make_unique<VoxelMethod>(options);
+  if (name == "raytrace") return raytrace::make_method(options);
+  if (name == "shadowmap") return shadowmap::make_method(options);
+  if (name == "volume") return volume::make_method(options);
+  if (name == "svbsp") return svbsp::make_method(options);
+  if (name == "angular") return angular::make_method(options);
+  if (name == "voxel") return voxel::make_method(options);
   std::string list;
   for (const auto& m : method_names()) list += (list.empty() ? "" : ", ") + m;
   throw InputError("method '" + std::string(name) + "'",

@@ -7,8 +7,8 @@
 #include <limits>
 
 #include "shadowkit/core/error.h"
-#include "tile_bins.h"
-#include "triangle_setup.h"
+#include "shadowkit/raster/tile_bins.h"
+#include "shadowkit/raster/triangle_setup.h"
 
 namespace shadowkit {
 namespace {

@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <random>
 
-#include "../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 #include "shadowkit/core/image.h"
-#include "triangle_setup.h"
+#include "shadowkit/raster/triangle_setup.h"
 
 namespace shadowkit {
 namespace {

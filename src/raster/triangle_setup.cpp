@@ -1,4 +1,4 @@
-#include "triangle_setup.h"
+#include "shadowkit/raster/triangle_setup.h"
 
 #include <tbb/parallel_for.h>
 

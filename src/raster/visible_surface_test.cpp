@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit {
 namespace {

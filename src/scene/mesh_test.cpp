@@ -3,7 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <numbers>
 
-#include "../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 #include "shadowkit/scene/triangulate.h"
 
 namespace shadowkit {

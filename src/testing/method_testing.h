@@ -4,7 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "shadowkit/app/mask_compare.h"
+#include "shadowkit/methods/mask_compare.h"
+#include "shadowkit/methods/registry.h"
 #include "shadowkit/methods/shadow_method.h"
 #include "shadowkit/scene/scene_file.h"
 

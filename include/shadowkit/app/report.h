@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-#include "shadowkit/app/mask_compare.h"
+#include "shadowkit/methods/mask_compare.h"
 #include "shadowkit/app/pipeline.h"
 #include "shadowkit/scene/scene.h"
 

@@ -10,15 +10,6 @@
 
 namespace shadowkit {
 
-/// The ambient share of the light in shaded images.
-inline constexpr double kAmbient = 0.18;
-
-/// The base colour of object \p object in shaded images.
-Vec3 object_colour(std::uint32_t object);
-
-/// A colour with channels in [0, 1] (clamped) as 8-bit RGB.
-Rgb8 to_rgb8(Vec3 colour);
-
 /// \p masks holds one mask per light, in the order of scene.lights.
 Image<Rgb8> shade_image(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
                         const std::vector<const ShadowMask*>& masks);

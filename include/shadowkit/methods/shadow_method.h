@@ -87,10 +87,4 @@ inline bool faces_light(const Plane& plane, Vec3 eye, const Light& light) {
 void shade_each_pixel(const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
                       const std::function<bool(std::size_t)>& classify);
 
-/// Names of the available methods, in the order compare shows them.
-std::vector<std::string> method_names();
-
-/// Creates a method by name; InputError for an unknown name or option.
-std::unique_ptr<ShadowMethod> make_method(std::string_view name, const MethodOptions& options);
-
 }  // namespace shadowkit

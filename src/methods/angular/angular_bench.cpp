@@ -7,10 +7,10 @@
 #include <map>
 #include <string>
 
-#include "../../testing/method_testing.h"
+#include "testing/method_testing.h"
 #include "angular_method.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 using Fixture = testing::RenderedScene;
@@ -64,4 +64,4 @@ BENCHMARK_CAPTURE(BM_Shade, raytrace, "raytrace")
     ->MeasureProcessCPUTime();
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

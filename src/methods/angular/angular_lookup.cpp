@@ -5,7 +5,7 @@
 #include <limits>
 #include <numbers>
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const LookupQuery& query) {
   const double phi = query.phi;
@@ -107,4 +107,4 @@ LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
   return {false, next_x, 2};
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -5,7 +5,7 @@
 #include "angular_table.h"
 #include "scan_line_run.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 /// \brief The answer of one lookup and the column where it may stop holding (nextX).
 struct LookupResult {
@@ -51,4 +51,4 @@ inline constexpr double kGrazingSine = 0.07;
 LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
                             const ScanLineRun& run, const LookupQuery& query, int k);
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

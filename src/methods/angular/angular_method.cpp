@@ -10,9 +10,10 @@
 #include "occluders.h"
 #include "ridge_edges.h"
 #include "scan_line_run.h"
+#include "shadowkit/methods/angular.h"
 #include "shadowkit/core/error.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 AngularMethod::AngularMethod(const MethodOptions& options) {
   options.expect_only("angular", {"resolution", "saturated"});
@@ -118,4 +119,8 @@ MethodCounters AngularMethod::counters() const {
           {"lookup_calls", lookup_calls_}};
 }
 
-}  // namespace shadowkit
+std::unique_ptr<ShadowMethod> make_method(const MethodOptions& options) {
+  return std::make_unique<AngularMethod>(options);
+}
+
+}  // namespace shadowkit::angular

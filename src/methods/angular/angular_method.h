@@ -8,7 +8,7 @@
 #include "scan_line_run.h"
 #include "shadowkit/methods/shadow_method.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 /// \brief Per light: the RE loops sliced into a table indexed by the scan-line angle theta
 /// (option `resolution` = R, 0 or absent: eq. 4; `saturated` = 0 keeps covered pairs, Sec.
@@ -42,4 +42,4 @@ class AngularMethod final : public ShadowMethod {
   double lookup_calls_ = 0;
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

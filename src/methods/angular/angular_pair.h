@@ -1,7 +1,7 @@
 #pragma once
 #include <cstdint>
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 /// \brief Two (phi, r) points of one table entry where shadow begins and ends (Sec. 3). With
 /// hidden edges inserted in duplicate (Sec. 5) every pair is the cut of one hidden face by
@@ -12,4 +12,4 @@ struct AngularPair {
   std::uint32_t hidden = 0;  ///< index into AngularTable::hidden()
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -16,7 +16,7 @@
 #include "parallel_each.h"
 #include "view_theta.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -531,4 +531,4 @@ std::vector<AngularPair> AngularTable::compact(const std::vector<std::uint32_t>&
   return pairs;
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -13,7 +13,7 @@
 #include "ridge_edges.h"
 #include "shadowkit/core/context.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 /// \brief An occluding face in light-frame coordinates: the depth of its pairs (Sec. 5).
 struct HiddenFace {
@@ -178,4 +178,4 @@ class AngularTable {
   RidgeEdgeStats loop_stats_;
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -8,15 +8,15 @@
 #include <map>
 #include <numbers>
 
-#include "../../testing/method_testing.h"
-#include "../../testing/test_scenes.h"
-#include "../raytrace/raytrace_method.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 #include "angular_method.h"
 #include "loop_slicer.h"
 #include "occluders.h"
+#include "shadowkit/methods/raytrace.h"
 #include "shadowkit/scene/scene_file.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 // A camera at the origin looking down -z: the light frame's axes are the world's axes with
@@ -304,10 +304,10 @@ TEST(AngularTable, AHoleLetsTheLightThroughAndDepthIsExactInsideSpans) {
   ASSERT_TRUE(scene.objects[1].mesh.consistently_oriented());
   const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
   AngularMethod angular({});
-  RaytraceMethod reference({});
+  const auto reference = raytrace::make_method({});
   const ShadowMask mask = testing::method_mask(angular, scene, vsb, 0);
   const MaskComparison c =
-      compare_masks(testing::method_mask(reference, scene, vsb, 0), mask, vsb.object_ids());
+      compare_masks(testing::method_mask(*reference, scene, vsb, 0), mask, vsb.object_ids());
   EXPECT_EQ(c.interior_mismatched, 0u);
   int hole = 0, under_frame = 0;
   for (std::size_t i = 0; i < mask.size(); ++i) {
@@ -454,4 +454,4 @@ TEST(AngularTable, BuffersOfAnEarlierBuildLeaveTheTableAsItWas) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 LightFrame::LightFrame(const Light& light, const Camera& camera, Vec3 scene_center)
     : point_(light.type == Light::Type::point) {
@@ -49,4 +49,4 @@ FrameAffine LightFrame::ray_plane(Vec3 a, Vec3 b) const {
   return {n, -dot(n, a)};
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

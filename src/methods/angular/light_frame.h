@@ -5,7 +5,7 @@
 
 #include "shadowkit/scene/scene.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 /// \brief A point in angular coordinates: distance r, scan-line angle theta, and phi along
 /// the constant-theta plane, kept as tan(phi) for a point light (eq. 3 before its arctangent:
@@ -69,4 +69,4 @@ class LightFrame {
   Vec3 axis_[3];
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -5,7 +5,7 @@
 #include <limits>
 #include <numbers>
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -315,4 +315,4 @@ double axis_piercing(const SlicedMesh& m, std::uint32_t f) {
   return dot(normal, m.local[m.mesh.face_vertex(f, 0)]) / normal.x;
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -10,7 +10,7 @@
 #include "angular_table.h"
 #include "ridge_edges.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 /// \brief The constant-theta plane at the centre of one table entry. Its tests are linear
 /// forms whose coefficients hold the light's kind, so that the walks, which evaluate them
@@ -98,4 +98,4 @@ void slice_from_axis(const SlicedMesh& mesh, std::uint32_t f, std::span<const Th
 /// Where the light's X axis pierces face \p f (its X), if it does: NaN otherwise.
 double axis_piercing(const SlicedMesh& mesh, std::uint32_t f);
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -10,7 +10,7 @@
 #include "occluders.h"
 #include "shadowkit/scene/scene_file.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 // One object's RE loops in a light's frame, as AngularTable::build prepares them.
@@ -93,4 +93,4 @@ TEST(LoopSlicer, RepeatedWalksGiveTheirEntriesPairsBitForBit) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

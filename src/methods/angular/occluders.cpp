@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 // Slab test of the segment origin + t dir, t in [0, t_max], against \p box grown by a margin.
@@ -44,4 +44,4 @@ std::vector<FarSheets> occluding_sheets(const Scene& scene, const Light& light) 
   return sheets;
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -5,7 +5,7 @@
 #include "ridge_edges.h"
 #include "shadowkit/scene/scene.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 /// \brief Per object: its faces' far sheets for \p light (see FarSheets).
 ///
@@ -18,4 +18,4 @@ namespace shadowkit {
 /// thin solid.
 std::vector<FarSheets> occluding_sheets(const Scene& scene, const Light& light);
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

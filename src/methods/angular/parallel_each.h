@@ -5,7 +5,7 @@
 
 #include <cstddef>
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 /// Below this many indices a loop is not worth a task.
 constexpr std::size_t kParallelGrain = 512;
@@ -26,4 +26,4 @@ void parallel_each(Index n, const Body& body) {
                     });
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -6,7 +6,7 @@
 #include <limits>
 #include <numeric>
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 constexpr std::size_t kBucketsPerPair = 4;  // 2 and 8 sorted cubes:2000 no faster
@@ -64,4 +64,4 @@ std::span<const AngularPair> PhiBeginSort::operator()(std::span<const AngularPai
   return sorted_;
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

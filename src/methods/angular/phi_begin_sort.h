@@ -6,7 +6,7 @@
 
 #include "angular_pair.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 /// \brief A stable sort of one entry's pairs by phi_begin, whose buffers serve one entry
 /// after another. The pairs arrive in the order of their loops' least phi, not of their
@@ -27,4 +27,4 @@ class PhiBeginSort {
   std::vector<AngularPair> sorted_;
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -87,4 +87,4 @@ TEST(PhiBeginSort, KeepsEveryFieldOfAPair) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

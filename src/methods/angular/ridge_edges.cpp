@@ -5,7 +5,7 @@
 #include "parallel_each.h"
 #include "shadowkit/methods/shadow_method.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 // HRE when a vertex of the hidden face \p h off the edge lies on the light's side of the
@@ -101,4 +101,4 @@ std::vector<std::uint32_t> hidden_edges_at_loops(const Mesh& mesh, const FarShee
   return hidden;
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -8,7 +8,7 @@
 #include "shadowkit/scene/edge_loops.h"
 #include "shadowkit/scene/scene.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 /// \brief Which faces of one mesh bound the shadow volume for one light, as sheets.
 ///
@@ -68,4 +68,4 @@ struct RidgeEdgeStats {
   double ridge_edges = 0, loops = 0, open_loops = 0;
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -4,10 +4,10 @@
 
 #include <map>
 
-#include "../../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 #include "shadowkit/scene/scene_file.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 Mesh build(const PolygonSoup& soup) {
@@ -15,12 +15,12 @@ Mesh build(const PolygonSoup& soup) {
 }
 
 std::vector<RidgeEdge> find_ridge_edges(const Mesh& mesh, const Light& light) {
-  return shadowkit::find_ridge_edges(mesh, far_sheets(mesh, light, one_solid(mesh)));
+  return angular::find_ridge_edges(mesh, far_sheets(mesh, light, one_solid(mesh)));
 }
 
 std::vector<std::uint32_t> hidden_edges_at_loops(const Mesh& mesh, const Light& light,
                                                  std::span<const RidgeEdge> edges) {
-  return shadowkit::hidden_edges_at_loops(mesh, far_sheets(mesh, light, one_solid(mesh)), edges);
+  return angular::hidden_edges_at_loops(mesh, far_sheets(mesh, light, one_solid(mesh)), edges);
 }
 
 // Sec. 2: at every vertex as many REs leave as arrive, so every loop closes.
@@ -123,4 +123,4 @@ TEST(RidgeEdges, EveryLoopClosesOnEveryExampleMesh) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -7,7 +7,7 @@
 #include <limits>
 #include <numbers>
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
@@ -108,4 +108,4 @@ double max_run_end(const ScanLineRun& run, const ThetaBoundaries& bounds, int k,
   return std::min(run.crossing(bounds.lower(k), c0), run.crossing(bounds.lower(k + 1), c0));
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

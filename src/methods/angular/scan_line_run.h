@@ -6,7 +6,7 @@
 #include "angular_table.h"
 #include "light_frame.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 /// \brief The visible points of one receiver face along one scan line. The point seen at
 /// column c is W(c) / D(c) in light-frame coordinates, with W and D linear in c, so every
@@ -59,4 +59,4 @@ class ThetaBoundaries {
 /// (crosses the constant-theta plane at either end of the entry).
 double max_run_end(const ScanLineRun& run, const ThetaBoundaries& bounds, int k, double c0);
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "../../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 // A receiver through the origin tilted against the scan lines, so theta changes along them.
@@ -151,4 +151,4 @@ TEST(ThetaBoundaries, LocateAgreesWithTheArctangent) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "../../testing/method_testing.h"
-#include "../../testing/test_scenes.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 #include "angular_method.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/scene/scene_file.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 Scene reduced(Scene scene) {
@@ -224,7 +224,7 @@ TEST(AngularScenes, EveryExampleAgreesWithTheReference) {
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     if (entry.path().extension() != ".json") continue;
     // A finely tessellated open curved surface (the subdivision example's open box) loses
-    // most to the half-entry reach of its own far sheet's pairs (docs/design.md, angular):
+    // most to the half-entry reach of its own far sheet's pairs (docs/methods/angular.md):
     // 0.22% at 480x270 with the automatic R, 0.04% at its own 1280x720, so it is checked at
     // its own resolution.
     Scene scene = load_scene_file(entry.path(), {});
@@ -236,4 +236,4 @@ TEST(AngularScenes, EveryExampleAgreesWithTheReference) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -13,7 +13,7 @@
 #include "shadowkit/raster/projection.h"
 #include "shadowkit/raster/view_frustum.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 // The camera's view, with the near plane of the camera pass.
@@ -109,4 +109,4 @@ int automatic_resolution(const Scene& scene, double scan_line, double theta_rang
   return int(std::clamp(theta_range / scan_line, 1.0, 8.0 * scene.camera.height));
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

@@ -6,7 +6,7 @@
 #include "light_frame.h"
 #include "shadowkit/scene/scene.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 
 /// \brief The theta the camera can see: every visible point lies in the view frustum and in
 /// the scene's bounding box, so its theta lies in [lo, hi] unless \p bounded is false (the
@@ -29,4 +29,4 @@ double scan_line_theta(const Scene& scene, const LightFrame& frame);
 /// the number of scan lines when no vertex is in view.
 int automatic_resolution(const Scene& scene, double scan_line, double theta_range);
 
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

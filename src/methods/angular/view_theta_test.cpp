@@ -4,12 +4,12 @@
 
 #include <algorithm>
 
-#include "../../testing/method_testing.h"
-#include "../../testing/test_scenes.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 #include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/scene_file.h"
 
-namespace shadowkit {
+namespace shadowkit::angular {
 namespace {
 
 Scene reduced(Scene scene) {
@@ -82,4 +82,4 @@ TEST(ViewTheta, AutomaticResolutionFollowsTheScanLines) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::angular

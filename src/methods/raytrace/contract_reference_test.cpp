@@ -10,10 +10,10 @@
 #include <numbers>
 
 #include "raytrace_method.h"
-#include "shadowkit/app/mask_compare.h"
+#include "shadowkit/methods/mask_compare.h"
 #include "shadowkit/scene/scene_file.h"
 
-namespace shadowkit {
+namespace shadowkit::raytrace {
 namespace {
 
 struct ReferenceImage {
@@ -149,4 +149,4 @@ TEST(ContractReference, AgreesOnTheBuiltInScenes) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::raytrace

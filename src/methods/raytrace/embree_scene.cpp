@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace shadowkit {
+namespace shadowkit::raytrace {
 namespace {
 
 bool track_memory(void* user, ssize_t bytes, bool /*post*/) {
@@ -68,4 +68,4 @@ EmbreeScene::~EmbreeScene() {
   if (device_) rtcReleaseDevice(device_);
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::raytrace

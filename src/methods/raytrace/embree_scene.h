@@ -4,7 +4,7 @@
 
 #include "shadowkit/scene/scene.h"
 
-namespace shadowkit {
+namespace shadowkit::raytrace {
 
 /// \brief One Embree device and one committed scene; triangle primID i is the scene's
 /// triangle i, so primID maps to a face through TriangleList::triangle_face. Embree works in
@@ -30,4 +30,4 @@ class EmbreeScene {
   Vec3 origin_;
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::raytrace

@@ -5,10 +5,10 @@
 
 #include <limits>
 
-#include "../../testing/method_testing.h"
+#include "testing/method_testing.h"
 #include "raytrace_method.h"
 
-namespace shadowkit {
+namespace shadowkit::raytrace {
 namespace {
 
 using Fixture = testing::RenderedScene;
@@ -65,4 +65,4 @@ void BM_RaytraceMethod(benchmark::State& state) {
 BENCHMARK(BM_RaytraceMethod)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::raytrace

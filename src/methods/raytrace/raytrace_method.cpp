@@ -7,7 +7,9 @@
 #include <cmath>
 #include <limits>
 
-namespace shadowkit {
+#include "shadowkit/methods/raytrace.h"
+
+namespace shadowkit::raytrace {
 namespace {
 
 constexpr int kTile = 16;  // 16x16 pixel tiles, one 16-wide packet per tile row
@@ -188,4 +190,8 @@ MethodCounters RaytraceMethod::counters() const {
   return {{"shadow_rays", rays_}};
 }
 
-}  // namespace shadowkit
+std::unique_ptr<ShadowMethod> make_method(const MethodOptions& options) {
+  return std::make_unique<RaytraceMethod>(options);
+}
+
+}  // namespace shadowkit::raytrace

@@ -6,7 +6,7 @@
 #include "embree_scene.h"
 #include "shadowkit/methods/shadow_method.h"
 
-namespace shadowkit {
+namespace shadowkit::raytrace {
 
 /// \brief Shadow rays in 16-wide packets (rtcOccluded16) over 16x16 pixel tiles, with the
 /// contract's two-sided rule and a self-intersection offset along the face normal. The BVH
@@ -48,4 +48,4 @@ double face_offset(const Mesh& mesh, std::size_t face, Vec3 origin);
 /// coordinate.
 double shadow_ray_offset(Vec3 p, double face_part);
 
-}  // namespace shadowkit
+}  // namespace shadowkit::raytrace

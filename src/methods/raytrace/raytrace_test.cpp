@@ -2,10 +2,10 @@
 
 #include <cmath>
 
-#include "../../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 #include "raytrace_method.h"
 
-namespace shadowkit {
+namespace shadowkit::raytrace {
 namespace {
 
 ShadowMask shade(const Scene& scene, std::size_t light = 0) {
@@ -154,4 +154,4 @@ TEST(Raytrace, PrecisionDoesNotDependOnWhereTheSceneSits) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::raytrace

@@ -5,9 +5,10 @@
 #include <functional>
 #include <string>
 
+#include "shadowkit/methods/shadowmap.h"
 #include "shadowkit/core/error.h"
 
-namespace shadowkit {
+namespace shadowkit::shadowmap {
 namespace {
 
 constexpr double kDefaultBiasPerDiagonal = 1e-3;
@@ -133,4 +134,8 @@ MethodCounters ShadowMapMethod::counters() const {
       {"faces", point_light ? 6.0 : 1.0}};
 }
 
-}  // namespace shadowkit
+std::unique_ptr<ShadowMethod> make_method(const MethodOptions& options) {
+  return std::make_unique<ShadowMapMethod>(options);
+}
+
+}  // namespace shadowkit::shadowmap

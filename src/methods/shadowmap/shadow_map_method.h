@@ -9,7 +9,7 @@
 #include "depth_map.h"
 #include "shadowkit/methods/shadow_method.h"
 
-namespace shadowkit {
+namespace shadowkit::shadowmap {
 
 /// \brief Shadow maps: build() renders the scene's depth from the light with the shared
 /// ScanConverter, shade() transforms each visible point into the light's view and compares
@@ -74,4 +74,4 @@ class ShadowMapMethod final : public ShadowMethod {
 /// eye behind all of them (Williams 1978's view from a light at infinity).
 RasterProjection directional_light_view(const Bounds3& bounds, Vec3 direction, int resolution);
 
-}  // namespace shadowkit
+}  // namespace shadowkit::shadowmap

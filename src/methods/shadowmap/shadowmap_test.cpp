@@ -15,7 +15,7 @@
 #include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/mesh.h"
 
-namespace shadowkit {
+namespace shadowkit::shadowmap {
 namespace {
 
 using shadowmap::CubeMap;
@@ -353,4 +353,4 @@ TEST(ShadowMap, MemoryAndCounters) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::shadowmap

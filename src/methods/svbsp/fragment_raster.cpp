@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <atomic>
 
-#include "../../raster/triangle_setup.h"
+#include "shadowkit/raster/triangle_setup.h"
 
 namespace shadowkit::svbsp {
 namespace {

@@ -2,7 +2,9 @@
 
 #include <fstream>
 
+#include "scene_bsp.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/methods/svbsp.h"
 
 namespace shadowkit::svbsp {
 namespace {
@@ -90,6 +92,16 @@ nlohmann::json fragment_areas_json(const Scene& scene, const MultiLightFragments
                              {"shadowed_area", shadowed[face]}});
   }
   return j;
+}
+
+FragmentsWritten write_fragments(const Scene& scene, const std::filesystem::path& ply,
+                                 const std::filesystem::path& json) {
+  const MultiLightFragments result = generate_multi_light_shadows(SceneBsp::build(scene), scene);
+  write_fragments_ply(ply, scene, result);
+  std::ofstream out(json);
+  out << fragment_areas_json(scene, result).dump(2) << "\n";
+  if (!out) throw InputError(json.string(), "cannot write");
+  return {result.fragments.size()};
 }
 
 }  // namespace shadowkit::svbsp

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "../../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/scene/scene_file.h"
 #include "svbsp_test_support.h"
@@ -12,8 +12,6 @@
 namespace shadowkit::svbsp {
 namespace {
 
-using testing::face_area;
-using testing::face_areas;
 
 TEST(SvbspMultiLight, ThreeLightsConserveAreaAndMatchSingleLightRuns) {
   const Scene scene = load_scene("three-lights", {});

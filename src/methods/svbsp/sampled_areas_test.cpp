@@ -1,6 +1,5 @@
 // Per-polygon shadowed areas against an independent estimate (the criterion):
 // stratified points on a polygon, each tested with an Embree shadow ray.
-#include <embree3/rtcore.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,8 +7,8 @@
 #include <limits>
 #include <random>
 
-#include "../raytrace/embree_scene.h"
 #include "multi_light.h"
+#include "shadowkit/methods/raytrace.h"
 #include "shadowkit/scene/scene_file.h"
 #include "svbsp_test_support.h"
 
@@ -17,23 +16,6 @@ namespace shadowkit::svbsp {
 namespace {
 
 constexpr int kGrid = 200;  // 200 x 200 strata over the polygon's bounding rectangle
-
-// Whether the segment from \p p (already off its surface) toward \p light hits anything.
-bool occluded(const EmbreeScene& embree, Vec3 p, const Light& light) {
-  const Vec3 o = p - embree.origin();
-  const bool point = light.type == Light::Type::point;
-  const Vec3 d = point ? light.position - p : -light.direction;
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
-  RTCRay ray{};
-  ray.org_x = float(o.x), ray.org_y = float(o.y), ray.org_z = float(o.z);
-  ray.dir_x = float(d.x), ray.dir_y = float(d.y), ray.dir_z = float(d.z);
-  ray.tnear = 0;
-  ray.tfar = point ? 1 - 1e-6f : std::numeric_limits<float>::infinity();
-  ray.mask = ~0u;
-  rtcOccluded1(embree.handle(), &context, &ray);
-  return ray.tfar < 0;
-}
 
 // Crossing-number test in the polygon's 2D frame.
 bool inside(const std::vector<std::pair<double, double>>& poly, double x, double y) {
@@ -48,7 +30,7 @@ bool inside(const std::vector<std::pair<double, double>>& poly, double x, double
 
 // Shadowed fraction of global face \p face for \p light from stratified samples, each
 // lifted off the face toward the light by a tiny fraction of the scene's size.
-double sampled_shadowed_fraction(const Scene& scene, const EmbreeScene& embree, std::uint32_t face,
+double sampled_shadowed_fraction(const Scene& scene, const raytrace::ShadowRays& rays, std::uint32_t face,
                                  const Light& light) {
   const Mesh& mesh = scene.objects[scene.object_of_face(face)].mesh;
   const std::uint32_t f = scene.local_face(face);
@@ -76,14 +58,14 @@ double sampled_shadowed_fraction(const Scene& scene, const EmbreeScene& embree, 
       const double y = y0 + (y1 - y0) * (j + jitter(rng)) / kGrid;
       if (!inside(poly, x, y)) continue;
       ++in;
-      shadowed += occluded(embree, origin + u * x + v * y + lift, light);
+      shadowed += rays.occluded(origin + u * x + v * y + lift, light);
     }
   }
   return double(shadowed) / double(in);
 }
 
 // The faces a light shadows partly, most evenly split first: where an error would show.
-std::vector<std::uint32_t> partly_shadowed(const std::map<std::uint32_t, testing::FaceAreas>& a,
+std::vector<std::uint32_t> partly_shadowed(const std::map<std::uint32_t, FaceAreas>& a,
                                            std::size_t count) {
   std::vector<std::pair<double, std::uint32_t>> split;
   for (const auto& [face, areas] : a) {
@@ -100,15 +82,15 @@ class SampledAreas : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SampledAreas, ShadowedAreasAgreeWithin0_5PercentOfThePolygon) {
   const Scene scene = load_scene(GetParam(), {});
-  const EmbreeScene embree(scene);
+  const raytrace::ShadowRays rays(scene);
   const MultiLightFragments multi = generate_multi_light_shadows(SceneBsp::build(scene), scene);
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
-    const auto areas = testing::face_areas(multi.fragments, l);
+    const auto areas = face_areas(multi.fragments, l);
     const std::vector<std::uint32_t> faces = partly_shadowed(areas, 4);
     ASSERT_FALSE(faces.empty()) << "light " << l;
     for (const std::uint32_t face : faces) {
-      const double total = testing::face_area(scene, face);
-      const double sampled = sampled_shadowed_fraction(scene, embree, face, scene.lights[l]);
+      const double total = face_area(scene, face);
+      const double sampled = sampled_shadowed_fraction(scene, rays, face, scene.lights[l]);
       EXPECT_NEAR(areas.at(face).shadowed / total, sampled, 0.005)
           << GetParam() << " light " << l << " face " << face;
     }

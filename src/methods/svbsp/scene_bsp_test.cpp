@@ -4,7 +4,7 @@
 
 #include <map>
 
-#include "../../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 #include "shadowkit/scene/scene_file.h"
 
 namespace shadowkit::svbsp {

@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "shadowkit/app/mask_compare.h"
+#include "shadowkit/methods/mask_compare.h"
+#include "shadowkit/methods/registry.h"
 #include "shadowkit/scene/scene_file.h"
 #include "svbsp_method.h"
 
-namespace shadowkit {
+namespace shadowkit::svbsp {
 namespace {
 
 ShadowMask mask_of(ShadowMethod& method, const Scene& scene, const VisibleSurfaceBuffer& vsb,
@@ -86,4 +87,4 @@ TEST(SvbspScenes, EveryExampleAgreesWithTheReference) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::svbsp

@@ -3,9 +3,10 @@
 #include <algorithm>
 
 #include "fragment_raster.h"
+#include "shadowkit/methods/svbsp.h"
 #include "shadowkit/core/error.h"
 
-namespace shadowkit {
+namespace shadowkit::svbsp {
 
 SvbspMethod::SvbspMethod(const MethodOptions& options) {
   options.expect_only("svbsp", {"shadowed_only", "merge_siblings"});
@@ -65,4 +66,8 @@ MethodCounters SvbspMethod::counters() const {
           {"lit_fragments", double(lit)}};
 }
 
-}  // namespace shadowkit
+std::unique_ptr<ShadowMethod> make_method(const MethodOptions& options) {
+  return std::make_unique<SvbspMethod>(options);
+}
+
+}  // namespace shadowkit::svbsp

@@ -7,7 +7,7 @@
 #include "shadow_generator.h"
 #include "shadowkit/methods/shadow_method.h"
 
-namespace shadowkit {
+namespace shadowkit::svbsp {
 
 /// \brief Chin & Feiner 1989: a scene BSP tree built once (prepare), per light an SVBSP
 /// tree grown from the light-facing pieces in front-to-back order, which splits every piece
@@ -42,4 +42,4 @@ class SvbspMethod final : public ShadowMethod {
   svbsp::FrontFacing front_facing_;
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::svbsp

@@ -5,7 +5,7 @@
 #include "multi_light.h"
 #include "shadow_generator.h"
 
-namespace shadowkit::testing {
+namespace shadowkit::svbsp {
 
 /// Lit and shadowed area of one face.
 struct FaceAreas {
@@ -44,4 +44,4 @@ inline double face_area(const Scene& scene, std::uint32_t face) {
   return scene.objects[scene.object_of_face(face)].mesh.areas[scene.local_face(face)];
 }
 
-}  // namespace shadowkit::testing
+}  // namespace shadowkit::svbsp

@@ -3,15 +3,13 @@
 #include <map>
 #include <string>
 
-#include "../../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 #include "shadowkit/scene/scene_file.h"
 #include "svbsp_test_support.h"
 
 namespace shadowkit::svbsp {
 namespace {
 
-using testing::face_areas;
-using testing::light_fragments;
 
 const Camera kCamera = testing::camera({0, 9, 6}, {0, 0, 0}, 64, 48);
 
@@ -119,7 +117,7 @@ TEST(Svbsp, FragmentsOfEveryFaceSumToItsArea) {
 // Fragment count and per-face lit and shadowed areas of a scene, one light.
 struct Totals {
   std::size_t fragments = 0;
-  std::map<std::uint32_t, testing::FaceAreas> areas;
+  std::map<std::uint32_t, FaceAreas> areas;
 };
 Totals totals(const Scene& scene, std::size_t light, bool merge) {
   const LightFragments r =
@@ -164,7 +162,7 @@ TEST(Svbsp, MergingSiblingsKeepsAreasAndReducesFragments) {
       const Totals split = totals(scene, l, false), merged = totals(scene, l, true);
       ASSERT_EQ(split.areas.size(), merged.areas.size()) << name;
       for (const auto& [face, a] : split.areas) {
-        const testing::FaceAreas& b = merged.areas.at(face);
+        const FaceAreas& b = merged.areas.at(face);
         const double tolerance = 1e-9 * (1 + a.lit + a.shadowed);
         EXPECT_NEAR(a.lit, b.lit, tolerance) << name << " " << face;
         EXPECT_NEAR(a.shadowed, b.shadowed, tolerance) << name << " " << face;
@@ -181,7 +179,7 @@ TEST(Svbsp, ClosedCubeGetsPlanesForItsContourAndOnePerInteriorEdge) {
   // Three faces of the cube see the light: six contour edges, three interior ones, twelve
   // edges in all. A face filtered after its neighbour finds their common edge already in a
   // plane of its cell and adds none for it; the first face of each pair still needs that
-  // plane, as what is filtered after it is not shadowed beyond the edge (docs/svbsp.md:
+  // plane, as what is filtered after it is not shadowed beyond the edge (docs/methods/svbsp.md:
   // contour-only planes are unsound in a capless SVBSP tree).
   const Scene scene = testing::make_scene(kCamera, {testing::point_light({4, 9, 5})},
                                           {testing::box({-1, 1, -1}, {1, 3, 1})});

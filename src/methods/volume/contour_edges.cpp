@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 int sign(double v) {
@@ -49,4 +49,4 @@ std::vector<ContourLoop> chain_contour_loops(std::span<const ContourEdge> edges)
   return chain_edge_loops(edges);
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

@@ -8,7 +8,7 @@
 #include "shadowkit/scene/edge_loops.h"
 #include "shadowkit/scene/scene.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 
 /// The direction in which a shadow polygon leaves vertex \p v: away from a point light, or
 /// the travel direction of a directional light (then every ray is parallel).
@@ -46,4 +46,4 @@ std::vector<ContourEdge> find_contour_edges(const Mesh& mesh, const Light& light
 /// starts at its end vertex (Crow Fig. 2). On a closed manifold every loop closes.
 std::vector<ContourLoop> chain_contour_loops(std::span<const ContourEdge> edges);
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

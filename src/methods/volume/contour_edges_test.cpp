@@ -2,9 +2,9 @@
 
 #include <gtest/gtest.h>
 
-#include "../../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 Mesh mesh_of(const PolygonSoup& soup) {
@@ -108,4 +108,4 @@ TEST(ContourEdges, NonManifoldEdgeWeighsTheSumOfItsFaces) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

@@ -10,7 +10,7 @@
 #include <emmintrin.h>
 #endif
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 using raster::FixedPoint;
@@ -260,4 +260,4 @@ std::size_t ConvexVolume::count_cell(const VisibleFrame& frame, int band, int c,
   return tested;
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

@@ -8,12 +8,12 @@
 #include <utility>
 #include <vector>
 
-#include "../../raster/convex_polygon.h"
+#include "shadowkit/raster/screen_polygon.h"
 #include "counting_tile.h"
 #include "shadow_polygon.h"
 #include "volume_culling.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 
 /// \brief The shadow volume of a closed convex sub-object: the points on the volume's side
 /// of every plane of its light-facing faces and contour edges' shadow polygons.
@@ -100,4 +100,4 @@ class ConvexVolumes {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> polygons_of_;
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

@@ -4,12 +4,12 @@
 
 #include <cmath>
 
-#include "../../testing/method_testing.h"
-#include "../../testing/test_scenes.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 #include "sub_objects.h"
 #include "volume_method.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 // An octahedron whose top vertex is pushed down through its centre: closed, not convex.
@@ -136,4 +136,4 @@ TEST(OutlineColumns, HoldEveryColumnTheOutlineCoversWidenedByAPixel) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

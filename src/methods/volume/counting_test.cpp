@@ -2,15 +2,15 @@
 
 #include <algorithm>
 
-#include "../../testing/method_testing.h"
-#include "../../testing/test_scenes.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 #include "contour_edges.h"
 #include "eye_count.h"
 #include "shadowkit/core/error.h"
 #include "shadow_polygon.h"
 #include "volume_method.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 // The side polygons' jumps for the open square of square_over_plane seen from \p eye.
@@ -146,4 +146,4 @@ TEST(Counting, ForcedDepthPassRefusesAnEyeWithoutACount) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

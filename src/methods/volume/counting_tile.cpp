@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <limits>
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 }  // namespace
@@ -162,4 +162,4 @@ void CountingTile::finish_uncounted(const VisibleFrame& frame, int x0, int y0, i
   }
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

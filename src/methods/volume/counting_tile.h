@@ -6,12 +6,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "../../raster/tile_bins.h"
+#include "shadowkit/raster/tile_bins.h"
 #include "depth_keys.h"
 #include "shadowkit/methods/shadow_method.h"
 #include "sub_objects.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 
 inline constexpr int kTile = raster::TileBins::kTile;
 /// A cell is kBand rows by kBlock columns: the unit of the depth-key and receiver tests.
@@ -132,4 +132,4 @@ struct CountingTile {
   void load_band(const VisibleFrame& frame, int band);
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

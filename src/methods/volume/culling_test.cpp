@@ -2,13 +2,13 @@
 
 #include <cmath>
 
-#include "../../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 #include "contour_edges.h"
 #include "shadow_polygon.h"
 #include "sub_objects.h"
 #include "volume_culling.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 // Two boxes in one mesh, an open square and a bow tie of two triangles sharing one vertex.
@@ -115,4 +115,4 @@ TEST(ShadowFrustum, DegenerateLightsAndScales) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

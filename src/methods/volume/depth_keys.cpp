@@ -1,6 +1,6 @@
 #include "depth_keys.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -43,4 +43,4 @@ Bounds3 view_piece(const RayGrid& rays, int x0, int y0, int x1, int y1, const Ke
   return {box.lo - margin, box.hi + margin};
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

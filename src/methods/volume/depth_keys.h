@@ -7,7 +7,7 @@
 
 #include "shadowkit/scene/scene.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 
 /// Relative slack of the depth-key bounds. Rounding in the keys and in the exact plane test
 /// is about 1e-15 relative; keys closer than this fall back to the exact test.
@@ -71,4 +71,4 @@ inline Crossing classify_rectangle(const KeyPlane& key, int xa, int xb, int ya, 
 /// keys in \p keys (widened, not empty, positive): the corners of that piece of the view.
 Bounds3 view_piece(const RayGrid& rays, int x0, int y0, int x1, int y1, const KeyRange& keys);
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

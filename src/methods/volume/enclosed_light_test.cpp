@@ -4,12 +4,12 @@
 #include <filesystem>
 #include <functional>
 
-#include "../../testing/method_testing.h"
-#include "../../testing/test_scenes.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 #include "shadowkit/scene/mesh_io.h"
 #include "volume_method.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 // A point light inside a closed mesh: the mesh has no contour edges, and its shadow volume
@@ -177,4 +177,4 @@ TEST(EnclosedLight, OpenBoxLetsTheLightOutThroughItsHole) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

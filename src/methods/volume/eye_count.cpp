@@ -6,7 +6,7 @@
 #include "contour_edges.h"
 #include "segment_distance.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 enum class Inside { no, yes, unsure };
@@ -56,4 +56,4 @@ std::optional<int> faces_between_eye_and_light(const Mesh& mesh, Vec3 eye, const
   return count;
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

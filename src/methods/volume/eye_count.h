@@ -4,7 +4,7 @@
 
 #include "shadowkit/scene/scene.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 
 /// How many of \p mesh's faces lie between the eye and the light (for a directional light:
 /// along the ray from the eye toward it): the number of per-face shadow volumes holding the
@@ -12,4 +12,4 @@ namespace shadowkit {
 /// or the eye too close to a face plane to tell; the caller then counts depth-fail.
 std::optional<int> faces_between_eye_and_light(const Mesh& mesh, Vec3 eye, const Light& light);
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

@@ -7,7 +7,7 @@
 #include <limits>
 #include <numeric>
 
-namespace shadowkit {
+namespace shadowkit::volume {
 
 using raster::ScreenPolygon;
 
@@ -77,4 +77,4 @@ PolygonBins::PolygonBins(const std::vector<ScreenPolygon>& polygons, int width, 
   }
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

@@ -3,10 +3,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "../../raster/convex_polygon.h"
+#include "shadowkit/raster/screen_polygon.h"
 #include "counting_tile.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 
 /// Whether polygon \p s may own a pixel centre of the pixels [x0, x1] x [y0, y1]: no edge
 /// has all four corner centres outside. Long thin shadow polygons cross few of the tiles
@@ -31,4 +31,4 @@ struct PolygonBins {
   int tile_count() const { return tiles_x * tiles_y; }
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

@@ -3,12 +3,12 @@
 #include <cmath>
 #include <filesystem>
 
-#include "../../testing/method_testing.h"
-#include "../../testing/test_scenes.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 #include "shadowkit/scene/scene_file.h"
 #include "volume_method.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 // The analytic shadow of the square on the ground; pixels within 1e-4 of its edge skipped.
@@ -106,4 +106,4 @@ TEST(VolumeScenes, EveryExampleAgreesWithTheReference) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

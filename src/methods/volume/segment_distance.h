@@ -3,7 +3,7 @@
 
 #include "shadowkit/core/vec.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 
 /// Distance from \p p to the segment [a, b].
 inline double segment_distance(Vec3 p, Vec3 a, Vec3 b) {
@@ -13,4 +13,4 @@ inline double segment_distance(Vec3 p, Vec3 a, Vec3 b) {
   return length(p - (a + ab * t));
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

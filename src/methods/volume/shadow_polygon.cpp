@@ -4,7 +4,7 @@
 #include <cmath>
 #include <tuple>
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 using raster::HomogeneousPoint;
@@ -143,4 +143,4 @@ void cap_polygons(const Scene& scene, std::uint32_t t, std::uint32_t sub_object,
   out.push_back(dark);
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

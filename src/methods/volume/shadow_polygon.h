@@ -5,12 +5,12 @@
 #include <optional>
 #include <vector>
 
-#include "../../raster/triangle_setup.h"
+#include "shadowkit/raster/triangle_setup.h"
 #include "contour_edges.h"
 #include "shadowkit/raster/scan_converter.h"
 #include "shadowkit/scene/scene.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 
 /// \brief The region in which every counted crossing lies: the scene and the eye. It lies in
 /// the ball of radius `limit` around a point light, or in the half-space
@@ -62,4 +62,4 @@ void cap_polygons(const Scene& scene, std::uint32_t t, std::uint32_t sub_object,
 /// The plane of a side polygon, unit normal: the light and the edge lie in it.
 Plane side_plane(const Mesh& mesh, const ContourEdge& edge, const Light& light);
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

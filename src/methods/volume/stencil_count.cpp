@@ -9,12 +9,12 @@
 #include <limits>
 #include <optional>
 
-#include "../../raster/convex_polygon.h"
+#include "shadowkit/raster/screen_polygon.h"
 #include "convex_volume.h"
 #include "counting_tile.h"
 #include "polygon_tiles.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 using raster::ScreenPolygon;
@@ -449,4 +449,4 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   return {fill.load(), negative.load(), culled.load(), volumes.size(), shadowed.load()};
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

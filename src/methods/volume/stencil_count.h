@@ -3,13 +3,13 @@
 #include <cstddef>
 #include <vector>
 
-#include "../../raster/convex_polygon.h"
+#include "shadowkit/raster/screen_polygon.h"
 #include "shadow_polygon.h"
 #include "shadowkit/methods/shadow_method.h"
 #include "sub_objects.h"
 #include "volume_culling.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 
 /// \brief What one counting pass touched.
 struct StencilStats {
@@ -49,4 +49,4 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
                                    const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
                                    StencilBuffers& buffers);
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

@@ -6,7 +6,7 @@
 #include <numeric>
 #include <tuple>
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 constexpr std::uint32_t kUnnumbered = std::numeric_limits<std::uint32_t>::max();
@@ -117,4 +117,4 @@ SubObjects SubObjects::of(const Scene& scene) {
   return s;
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

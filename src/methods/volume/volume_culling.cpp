@@ -7,7 +7,7 @@
 #include <emmintrin.h>
 #endif
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 Vec3 corner(const Bounds3& b, int c) {
@@ -175,4 +175,4 @@ bool ShadowFrustum::misses(const Bounds3& r) const {
 #endif
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

@@ -7,7 +7,7 @@
 #include "shadowkit/raster/view_frustum.h"
 #include "shadowkit/scene/scene.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 
 /// \brief A convex region holding the shadow volume of anything inside a box, up to the
 /// reach: the box swept away from the light (Crow's bounding box, Sec. VI). It is the space
@@ -65,4 +65,4 @@ class ShadowFrustum {
   void sync_lanes();
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

@@ -7,10 +7,11 @@
 
 #include "contour_edges.h"
 #include "eye_count.h"
+#include "shadowkit/methods/volume.h"
 #include "shadowkit/core/error.h"
 #include "stencil_count.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 namespace {
 
 // What one caster contributes for the current light.
@@ -223,4 +224,8 @@ MethodCounters VolumeMethod::counters() const {
       {"shadowed_cells", shadowed_cells_}};
 }
 
-}  // namespace shadowkit
+std::unique_ptr<ShadowMethod> make_method(const MethodOptions& options) {
+  return std::make_unique<VolumeMethod>(options);
+}
+
+}  // namespace shadowkit::volume

@@ -8,7 +8,7 @@
 #include "sub_objects.h"
 #include "volume_culling.h"
 
-namespace shadowkit {
+namespace shadowkit::volume {
 
 /// \brief Crow's third class (Sec. VII): per light, contour edges chained into loops, one
 /// shadow polygon per contour edge, and a per-pixel count of the shadow polygons between
@@ -44,4 +44,4 @@ class VolumeMethod final : public ShadowMethod {
          shadowed_cells_ = 0;
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::volume

@@ -6,7 +6,7 @@
 
 namespace shadowkit::voxel {
 
-/// The bound rule (docs/voxel.md): S = the scene's triangles clipped to the camera's view
+/// The bound rule (docs/methods/voxel.md): S = the scene's triangles clipped to the camera's view
 /// frustum; for each light, the triangles clipped to the box of S and the light (a point
 /// light) or of S swept toward the light across the scene (a directional light) are the
 /// casters that can shadow S. The bound is the box of S and every light's casters.

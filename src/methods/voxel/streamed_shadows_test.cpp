@@ -8,12 +8,12 @@
 #include <map>
 #include <string>
 
-#include "../../testing/method_testing.h"
-#include "../../testing/test_scenes.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 #include "shadowkit/core/error.h"
 #include "voxel_method.h"
 
-namespace shadowkit {
+namespace shadowkit::voxel {
 namespace {
 
 using testing::worst_interior_mismatch;
@@ -119,4 +119,4 @@ TEST(StreamedShadows, TheTopologyTestIsAnInputError) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::voxel

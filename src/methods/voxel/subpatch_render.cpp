@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "shadowkit/app/shading.h"
+#include "shadowkit/core/palette.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/raster/visible_surface.h"
 
@@ -139,7 +139,7 @@ void SubpatchView::draw(const Camera& camera,
 }
 
 Frame::Frame(const Camera& camera)
-    : image(camera.width, camera.height, Rgb8{24, 26, 32}),
+    : image(camera.width, camera.height, kBackground),
       depth(image.pixels.size(), std::numeric_limits<float>::infinity()) {}
 
 SubpatchImage::SubpatchImage(const Scene& scene, const PatchSet& patches,

@@ -7,6 +7,7 @@
 
 #include "crack_free_tessellation.h"
 #include "shadowkit/core/image.h"
+#include "shadowkit/methods/voxel.h"
 #include "shadowkit/scene/scene.h"
 #include "voxel_method.h"
 
@@ -83,12 +84,6 @@ class SubpatchImage {
 /// §5 for a whole scene: the shadowed corners of each light kept (from the frame buffer,
 /// §5.2, or on the fly, §5.1), the subpatches tessellated once.
 SubpatchImage make_subpatch_image(const Scene& scene, VoxelMethod& method, const Context& ctx);
-
-/// \brief §5.1's one still image and how it was drawn.
-struct StillImage {
-  Image<Rgb8> image;
-  std::size_t triangles = 0, batches = 0;
-};
 
 /// §5.1 for a whole scene, in little memory: the shadowed corners of each light, then the
 /// tessellation drawn batch by batch (tessellate_in_batches(), \p batch_triangles) as it is

@@ -8,9 +8,10 @@
 #include <cstdio>
 #include <map>
 
-#include "../../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 #include "crack_free_tessellation.h"
 #include "frame_bound.h"
+#include "shadowkit/core/palette.h"
 
 namespace shadowkit::voxel {
 namespace {
@@ -199,7 +200,6 @@ TEST(StreamedRender, ResolutionTwoThousandFortyEightInLittleMemory) {
   EXPECT_EQ(streamed.image.render(scene.camera).width, 64);
 }
 
-constexpr Rgb8 kBackground{24, 26, 32};
 
 // Polygon boxes (12 patches each) and a Catmull-Clark box on a ground, in front of and
 // behind each other from the camera.

@@ -6,11 +6,11 @@
 
 #include <cmath>
 
-#include "../../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 #include "subpatch_render.h"
 #include "voxel_method.h"
 
-namespace shadowkit {
+namespace shadowkit::voxel {
 namespace {
 
 // A box whose faces are each split into n x n quads: 6 n^2 faces, eight extraordinary
@@ -119,4 +119,4 @@ void BM_NewViewFromTheFrameBuffer(benchmark::State& state) {
 BENCHMARK(BM_NewViewFromTheFrameBuffer)->Arg(256)->Unit(benchmark::kMillisecond);
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::voxel

@@ -6,7 +6,7 @@
 #include "frame_bound.h"
 #include "shadowkit/core/error.h"
 
-namespace shadowkit {
+namespace shadowkit::voxel {
 namespace {
 
 constexpr int kMinResolution = 16, kMaxResolution = 2048;
@@ -172,4 +172,4 @@ MethodCounters VoxelMethod::counters() const {
           {"blocker_records", double(stats_.blocker_records)}};
 }
 
-}  // namespace shadowkit
+}  // namespace shadowkit::voxel

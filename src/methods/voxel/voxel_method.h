@@ -16,7 +16,7 @@
 #include "surface_voxels.h"
 #include "voxelizer.h"
 
-namespace shadowkit {
+namespace shadowkit::voxel {
 
 /// \brief Options (`--set voxel.KEY=VALUE`):
 /// - `resolution` M (default 256): voxels along the longest side of the frame buffer's box,
@@ -34,7 +34,7 @@ namespace shadowkit {
 class VoxelMethod final : public ShadowMethod {
  public:
   /// The default bound on the subpatches: every structure but the frame buffer grows with
-  /// them (about 140 bytes a subpatch at the peak of prepare, docs/voxel.md).
+  /// them (about 140 bytes a subpatch at the peak of prepare, docs/methods/voxel.md).
   static constexpr std::size_t kMaxSubpatches = std::size_t(1) << 25;
 
   /// \p max_subpatches: the bound when the `max_subpatches` setting is not given.
@@ -80,4 +80,4 @@ class VoxelMethod final : public ShadowMethod {
   Light light_;
 };
 
-}  // namespace shadowkit
+}  // namespace shadowkit::voxel

@@ -11,12 +11,12 @@
 #include <ostream>
 #include <string>
 
-#include "../../testing/method_testing.h"
-#include "../../testing/test_scenes.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/scene/scene_file.h"
 
-namespace shadowkit {
+namespace shadowkit::voxel {
 namespace {
 
 using testing::worst_interior_mismatch;
@@ -199,4 +199,4 @@ TEST(VoxelOptions, BadValuesAreInputErrors) {
 }
 
 }  // namespace
-}  // namespace shadowkit
+}  // namespace shadowkit::voxel

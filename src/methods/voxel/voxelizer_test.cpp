@@ -9,7 +9,7 @@
 #include <limits>
 #include <vector>
 
-#include "../../testing/test_scenes.h"
+#include "testing/test_scenes.h"
 #include "cubic_frame_buffer.h"
 #include "frame_bound.h"
 #include "patch_set.h"
@@ -277,7 +277,7 @@ TEST(SharedSides, SubdivisionPatchesAgreeOnEverySharedSide) {
 }
 
 // On a curved surface the N = 6 voxelization is 6-connected but may let a 26-path through
-// where the surface turns diagonally between voxels (docs/voxel.md); it still stops
+// where the surface turns diagonally between voxels (docs/methods/voxel.md); it still stops
 // 18-paths.
 TEST(Separability, NoLeakFromInsideACatmullClarkSurface) {
   const Scene scene = subdivision_scene();

@@ -1,4 +1,4 @@
-#include "convex_polygon.h"
+#include "shadowkit/raster/screen_polygon.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "shadowkit/app/mask_compare.h"
+#include "shadowkit/methods/mask_compare.h"
 
 #include <algorithm>
 

@@ -6,7 +6,7 @@
 
 #include "shadowkit/core/error.h"
 #include "shadowkit/raster/scan_converter.h"
-#include "triangle_setup.h"
+#include "shadowkit/raster/triangle_setup.h"
 
 namespace shadowkit::raster {
 

@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include "triangle_setup.h"
+#include "shadowkit/raster/triangle_setup.h"
 
 namespace shadowkit::raster {
 
