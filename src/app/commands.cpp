@@ -7,11 +7,11 @@
 #include <optional>
 
 #include "progress.h"
-#include "shadowkit/methods/mask_compare.h"
 #include "shadowkit/app/pipeline.h"
 #include "shadowkit/app/report.h"
 #include "shadowkit/app/shading.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/methods/mask_compare.h"
 #include "shadowkit/methods/registry.h"
 #include "shadowkit/scene/scene_file.h"
 
@@ -54,14 +54,10 @@ LoadedScene timed_load(const std::string& spec, const Context& ctx) {
 
 nlohmann::json run_json(const MethodRun& run, double load_ms, double scan_ms) {
   if (run.failed()) return {{"method", run.method}, {"light", run.light}, {"failed", run.failure}};
-  nlohmann::json j = {{"method", run.method},
-                      {"light", run.light},
-                      {"prepare_ms", run.prepare_ms},
-                      {"build_ms", run.build_ms},
-                      {"shade_ms", run.shade_ms},
-                      {"load_ms", load_ms},
-                      {"scan_ms", scan_ms},
-                      {"memory_bytes", run.memory_bytes}};
+  nlohmann::json j = {{"method", run.method},         {"light", run.light},
+                      {"prepare_ms", run.prepare_ms}, {"build_ms", run.build_ms},
+                      {"shade_ms", run.shade_ms},     {"load_ms", load_ms},
+                      {"scan_ms", scan_ms},           {"memory_bytes", run.memory_bytes}};
   for (const auto& [key, value] : run.counters) j["counters"][key] = value;
   return j;
 }
@@ -99,8 +95,7 @@ void print_header(const LoadedScene& loaded, const CameraPass& pass, bool with_m
       "scene %s: %u polygons, %zu triangles, %zu light(s), %dx%d; loading %.2f ms, scan "
       "conversion %.2f ms\n",
       scene.name.c_str(), scene.face_count(), scene.triangles().triangles.size(),
-      scene.lights.size(), pass.surfaces.width, pass.surfaces.height, loaded.load_ms,
-      pass.scan_ms);
+      scene.lights.size(), pass.surfaces.width, pass.surfaces.height, loaded.load_ms, pass.scan_ms);
   std::printf("%-10s %-4s %10s %10s %10s %10s", "method", "light", "prepare_ms", "build_ms",
               "shade_ms", "memory_MB");
   if (with_mismatch) std::printf(" %11s %11s", "mismatch_%", "interior_%");

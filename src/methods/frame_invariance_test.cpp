@@ -18,8 +18,8 @@
 #include <tuple>
 #include <vector>
 
-#include "shadowkit/methods/mask_compare.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/methods/mask_compare.h"
 #include "shadowkit/methods/registry.h"
 #include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/generators.h"

@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <random>
 
-#include "testing/test_scenes.h"
 #include "shadowkit/core/image.h"
 #include "shadowkit/raster/triangle_setup.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <numbers>
 
-#include "testing/test_scenes.h"
 #include "shadowkit/scene/triangulate.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit {
 namespace {

@@ -4,8 +4,8 @@
 #include <optional>
 #include <vector>
 
-#include "shadowkit/methods/mask_compare.h"
 #include "shadowkit/app/pipeline.h"
+#include "shadowkit/methods/mask_compare.h"
 #include "shadowkit/scene/scene.h"
 
 namespace shadowkit {

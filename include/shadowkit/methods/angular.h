@@ -1,5 +1,6 @@
 #pragma once
-/// \brief Thakur, Cheng & Miura: the ridge-edge loops of the scene sliced into an angular lookup table around the light, queried scan line by scan line.
+/// \brief Thakur, Cheng & Miura: the ridge-edge loops of the scene sliced into an angular lookup
+/// table around the light, queried scan line by scan line.
 #include <memory>
 
 #include "shadowkit/methods/shadow_method.h"

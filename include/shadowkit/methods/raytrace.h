@@ -1,9 +1,9 @@
 #pragma once
-/// \brief Embree shadow rays, one per visible point: the exact reference every other method is compared with.
+/// \brief Embree shadow rays, one per visible point: the exact reference every other method is
+/// compared with.
 #include <memory>
 
 #include "shadowkit/core/vec.h"
-
 #include "shadowkit/methods/shadow_method.h"
 #include "shadowkit/scene/scene.h"
 

@@ -1,5 +1,6 @@
 #pragma once
-/// \brief Williams 1978 shadow maps: a depth image from the light (a cube map for a point light), looked up per visible point.
+/// \brief Williams 1978 shadow maps: a depth image from the light (a cube map for a point light),
+/// looked up per visible point.
 #include <memory>
 
 #include "shadowkit/methods/shadow_method.h"

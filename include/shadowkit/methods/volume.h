@@ -1,5 +1,6 @@
 #pragma once
-/// \brief Crow 1977 shadow volumes: shadow polygons on the light's contour edges, counted per pixel between the eye and the visible point.
+/// \brief Crow 1977 shadow volumes: shadow polygons on the light's contour edges, counted per pixel
+/// between the eye and the visible point.
 #include <memory>
 
 #include "shadowkit/methods/shadow_method.h"

@@ -7,8 +7,8 @@
 #include <map>
 #include <string>
 
-#include "testing/method_testing.h"
 #include "angular_method.h"
+#include "testing/method_testing.h"
 
 namespace shadowkit::angular {
 namespace {

@@ -10,8 +10,8 @@
 #include "occluders.h"
 #include "ridge_edges.h"
 #include "scan_line_run.h"
-#include "shadowkit/methods/angular.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/methods/angular.h"
 
 namespace shadowkit::angular {
 

@@ -8,13 +8,13 @@
 #include <map>
 #include <numbers>
 
-#include "testing/method_testing.h"
-#include "testing/test_scenes.h"
 #include "angular_method.h"
 #include "loop_slicer.h"
 #include "occluders.h"
 #include "shadowkit/methods/raytrace.h"
 #include "shadowkit/scene/scene_file.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit::angular {
 namespace {

@@ -6,11 +6,11 @@
 #include <string>
 #include <vector>
 
-#include "testing/method_testing.h"
-#include "testing/test_scenes.h"
 #include "angular_method.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/scene/scene_file.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit::angular {
 namespace {

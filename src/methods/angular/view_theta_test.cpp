@@ -4,10 +4,10 @@
 
 #include <algorithm>
 
-#include "testing/method_testing.h"
-#include "testing/test_scenes.h"
 #include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/scene_file.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit::angular {
 namespace {

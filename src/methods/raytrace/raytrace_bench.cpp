@@ -5,8 +5,8 @@
 
 #include <limits>
 
-#include "testing/method_testing.h"
 #include "raytrace_method.h"
+#include "testing/method_testing.h"
 
 namespace shadowkit::raytrace {
 namespace {

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "testing/test_scenes.h"
 #include "raytrace_method.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit::raytrace {
 namespace {

@@ -5,8 +5,8 @@
 #include <functional>
 #include <string>
 
-#include "shadowkit/methods/shadowmap.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/methods/shadowmap.h"
 
 namespace shadowkit::shadowmap {
 namespace {

@@ -4,14 +4,13 @@
 
 #include <algorithm>
 
-#include "testing/test_scenes.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/scene/scene_file.h"
 #include "svbsp_test_support.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit::svbsp {
 namespace {
-
 
 TEST(SvbspMultiLight, ThreeLightsConserveAreaAndMatchSingleLightRuns) {
   const Scene scene = load_scene("three-lights", {});

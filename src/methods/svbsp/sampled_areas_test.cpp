@@ -30,8 +30,8 @@ bool inside(const std::vector<std::pair<double, double>>& poly, double x, double
 
 // Shadowed fraction of global face \p face for \p light from stratified samples, each
 // lifted off the face toward the light by a tiny fraction of the scene's size.
-double sampled_shadowed_fraction(const Scene& scene, const raytrace::ShadowRays& rays, std::uint32_t face,
-                                 const Light& light) {
+double sampled_shadowed_fraction(const Scene& scene, const raytrace::ShadowRays& rays,
+                                 std::uint32_t face, const Light& light) {
   const Mesh& mesh = scene.objects[scene.object_of_face(face)].mesh;
   const std::uint32_t f = scene.local_face(face);
   const Plane& plane = scene.face_plane(face);

@@ -4,8 +4,8 @@
 
 #include <map>
 
-#include "testing/test_scenes.h"
 #include "shadowkit/scene/scene_file.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit::svbsp {
 namespace {

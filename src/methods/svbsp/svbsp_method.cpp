@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "fragment_raster.h"
-#include "shadowkit/methods/svbsp.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/methods/svbsp.h"
 
 namespace shadowkit::svbsp {
 

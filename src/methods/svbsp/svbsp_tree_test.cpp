@@ -3,13 +3,12 @@
 #include <map>
 #include <string>
 
-#include "testing/test_scenes.h"
 #include "shadowkit/scene/scene_file.h"
 #include "svbsp_test_support.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit::svbsp {
 namespace {
-
 
 const Camera kCamera = testing::camera({0, 9, 6}, {0, 0, 0}, 64, 48);
 

@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
-#include "shadowkit/raster/screen_polygon.h"
 #include "counting_tile.h"
 #include "shadow_polygon.h"
+#include "shadowkit/raster/screen_polygon.h"
 #include "volume_culling.h"
 
 namespace shadowkit::volume {

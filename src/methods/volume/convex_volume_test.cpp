@@ -4,9 +4,9 @@
 
 #include <cmath>
 
+#include "sub_objects.h"
 #include "testing/method_testing.h"
 #include "testing/test_scenes.h"
-#include "sub_objects.h"
 #include "volume_method.h"
 
 namespace shadowkit::volume {

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 
-#include "testing/method_testing.h"
-#include "testing/test_scenes.h"
 #include "contour_edges.h"
 #include "eye_count.h"
-#include "shadowkit/core/error.h"
 #include "shadow_polygon.h"
+#include "shadowkit/core/error.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 #include "volume_method.h"
 
 namespace shadowkit::volume {

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "shadowkit/raster/tile_bins.h"
 #include "depth_keys.h"
 #include "shadowkit/methods/shadow_method.h"
+#include "shadowkit/raster/tile_bins.h"
 #include "sub_objects.h"
 
 namespace shadowkit::volume {

@@ -2,10 +2,10 @@
 
 #include <cmath>
 
-#include "testing/test_scenes.h"
 #include "contour_edges.h"
 #include "shadow_polygon.h"
 #include "sub_objects.h"
+#include "testing/test_scenes.h"
 #include "volume_culling.h"
 
 namespace shadowkit::volume {

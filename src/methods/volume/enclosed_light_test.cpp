@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <functional>
 
+#include "shadowkit/scene/mesh_io.h"
 #include "testing/method_testing.h"
 #include "testing/test_scenes.h"
-#include "shadowkit/scene/mesh_io.h"
 #include "volume_method.h"
 
 namespace shadowkit::volume {
@@ -116,8 +116,8 @@ TEST(EnclosedLight, ClosedNonConvexPebbleShadowsEverythingOutsideIt) {
   // The pebble (about 0.52 x 0.28 x 0.52, squashed, with dents) scaled by 4 over the ground.
   const PolygonSoup pebble = placed(
       read_mesh_file(std::filesystem::path(SHADOWKIT_SOURCE_DIR) / "examples/models/pebble.obj", {})
-          .soup, 4,
-      {0, 1.5, 0});
+          .soup,
+      4, {0, 1.5, 0});
   const Scene scene =
       testing::make_scene(kOutside, {testing::point_light({0.05, 1.45, 0.1})}, {kGround, pebble});
   const auto [shadowed, lit] = ground_pixels(volume_mask(scene), kMaskShadow);

@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "shadowkit/raster/screen_polygon.h"
 #include "counting_tile.h"
+#include "shadowkit/raster/screen_polygon.h"
 
 namespace shadowkit::volume {
 

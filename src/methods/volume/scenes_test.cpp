@@ -3,9 +3,9 @@
 #include <cmath>
 #include <filesystem>
 
+#include "shadowkit/scene/scene_file.h"
 #include "testing/method_testing.h"
 #include "testing/test_scenes.h"
-#include "shadowkit/scene/scene_file.h"
 #include "volume_method.h"
 
 namespace shadowkit::volume {

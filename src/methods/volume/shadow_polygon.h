@@ -5,9 +5,9 @@
 #include <optional>
 #include <vector>
 
-#include "shadowkit/raster/triangle_setup.h"
 #include "contour_edges.h"
 #include "shadowkit/raster/scan_converter.h"
+#include "shadowkit/raster/triangle_setup.h"
 #include "shadowkit/scene/scene.h"
 
 namespace shadowkit::volume {

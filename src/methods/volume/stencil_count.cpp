@@ -9,10 +9,10 @@
 #include <limits>
 #include <optional>
 
-#include "shadowkit/raster/screen_polygon.h"
 #include "convex_volume.h"
 #include "counting_tile.h"
 #include "polygon_tiles.h"
+#include "shadowkit/raster/screen_polygon.h"
 
 namespace shadowkit::volume {
 namespace {

@@ -3,9 +3,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "shadowkit/raster/screen_polygon.h"
 #include "shadow_polygon.h"
 #include "shadowkit/methods/shadow_method.h"
+#include "shadowkit/raster/screen_polygon.h"
 #include "sub_objects.h"
 #include "volume_culling.h"
 

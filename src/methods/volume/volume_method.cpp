@@ -7,8 +7,8 @@
 
 #include "contour_edges.h"
 #include "eye_count.h"
-#include "shadowkit/methods/volume.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/methods/volume.h"
 #include "stencil_count.h"
 
 namespace shadowkit::volume {

@@ -8,9 +8,9 @@
 #include <map>
 #include <string>
 
+#include "shadowkit/core/error.h"
 #include "testing/method_testing.h"
 #include "testing/test_scenes.h"
-#include "shadowkit/core/error.h"
 #include "voxel_method.h"
 
 namespace shadowkit::voxel {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "shadowkit/core/palette.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/core/palette.h"
 #include "shadowkit/raster/visible_surface.h"
 
 namespace shadowkit::voxel {

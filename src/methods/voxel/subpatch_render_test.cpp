@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <map>
 
-#include "testing/test_scenes.h"
 #include "crack_free_tessellation.h"
 #include "frame_bound.h"
 #include "shadowkit/core/palette.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit::voxel {
 namespace {
@@ -199,7 +199,6 @@ TEST(StreamedRender, ResolutionTwoThousandFortyEightInLittleMemory) {
   EXPECT_LT(streamed.method_bytes * 20, kept.method_bytes);
   EXPECT_EQ(streamed.image.render(scene.camera).width, 64);
 }
-
 
 // Polygon boxes (12 patches each) and a Catmull-Clark box on a ground, in front of and
 // behind each other from the camera.

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "testing/test_scenes.h"
 #include "subpatch_render.h"
+#include "testing/test_scenes.h"
 #include "voxel_method.h"
 
 namespace shadowkit::voxel {

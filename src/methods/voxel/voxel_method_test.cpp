@@ -11,10 +11,10 @@
 #include <ostream>
 #include <string>
 
-#include "testing/method_testing.h"
-#include "testing/test_scenes.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/scene/scene_file.h"
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit::voxel {
 namespace {

@@ -62,10 +62,16 @@ FrameBufferImage::FrameBufferImage(FrameBufferImage&&) noexcept = default;
 FrameBufferImage& FrameBufferImage::operator=(FrameBufferImage&&) noexcept = default;
 FrameBufferImage::~FrameBufferImage() = default;
 
-Image<Rgb8> FrameBufferImage::render(const Camera& camera) { return parts_->image.render(camera); }
+Image<Rgb8> FrameBufferImage::render(const Camera& camera) {
+  return parts_->image.render(camera);
+}
 
-std::size_t FrameBufferImage::triangle_count() const { return parts_->image.triangle_count(); }
+std::size_t FrameBufferImage::triangle_count() const {
+  return parts_->image.triangle_count();
+}
 
-std::size_t FrameBufferImage::shadow_bytes() const { return parts_->method.memory_bytes(); }
+std::size_t FrameBufferImage::shadow_bytes() const {
+  return parts_->method.memory_bytes();
+}
 
 }  // namespace shadowkit::voxel

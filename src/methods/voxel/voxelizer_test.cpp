@@ -9,11 +9,11 @@
 #include <limits>
 #include <vector>
 
-#include "testing/test_scenes.h"
 #include "cubic_frame_buffer.h"
 #include "frame_bound.h"
 #include "patch_set.h"
 #include "surface_voxels.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit::voxel {
 namespace {
