@@ -6,7 +6,8 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
 build=${BUILD_DIR:-$root/build-asan}
-BUILD_DIR=$build BUILD_TYPE=RelWithDebInfo "$root/scripts/build.sh" -DSHADOWKIT_SANITIZE=ON
+BUILD_DIR=$build BUILD_TYPE=RelWithDebInfo "$root/scripts/build.sh" -DSHADOWKIT_SANITIZE=ON \
+  -DSHADOWKIT_WARNINGS_AS_ERRORS=ON
 fuzz_build=${FUZZ_BUILD_DIR:-$root/build-fuzz-asan}
 SHADOWKIT_FUZZ_BUILD_DIR=$fuzz_build "$root/scripts/fuzz.sh" build asan
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
