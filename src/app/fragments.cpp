@@ -4,6 +4,7 @@
 
 #include "shadowkit/app/commands.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/core/files.h"
 #include "shadowkit/methods/svbsp.h"
 #include "shadowkit/scene/scene_file.h"
 
@@ -24,6 +25,7 @@ int run_fragments(const FragmentsOptions& options, const Context& ctx) {
   json.replace_extension(".json");
   if (json == ply) throw InputError("--out " + options.out, "the PLY file cannot end in .json");
   const Scene scene = load_scene(options.scene, ctx);
+  create_parent_directories(ply);
   const svbsp::FragmentsWritten written = svbsp::write_fragments(scene, ply, json);
   std::printf("%zu fragments of %u polygons, %zu light(s): %s, %s\n", written.fragments,
               scene.face_count(), scene.lights.size(), ply.c_str(), json.c_str());

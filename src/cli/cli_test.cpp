@@ -237,12 +237,12 @@ TEST_F(Cli, AMethodThatRefusesTheSceneDoesNotStopTheOthers) {
 }
 
 TEST_F(Cli, FragmentsWritesPlyAndAreasThatSumToEachPolygon) {
-  const fs::path ply = dir_ / "square.ply";
+  const fs::path ply = dir_ / "new" / "folder" / "square.ply";  // folders made as for PNGs
   const Result r = run("fragments square --threads 1 --out " + ply.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(slurp(ply).rfind("ply\nformat ascii 1.0\n", 0), 0u);
   EXPECT_THAT(slurp(ply), HasSubstr("property uint polygon\nproperty uchar lit_L0\n"));
-  const auto j = nlohmann::json::parse(slurp(dir_ / "square.json"));
+  const auto j = nlohmann::json::parse(slurp(ply.parent_path() / "square.json"));
   double ground_shadowed = 0;
   for (const auto& p : j["polygons"]) {
     const double area = p["area"];

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "shadowkit/core/error.h"
+#include "shadowkit/core/files.h"
 
 namespace shadowkit {
 namespace {
@@ -13,10 +14,7 @@ namespace {
 using File = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
 
 File open_file(const std::filesystem::path& path, const char* mode) {
-  if (mode[0] == 'w' && path.has_parent_path()) {
-    std::error_code ignored;  // a failure shows up as fopen's below, with the path
-    std::filesystem::create_directories(path.parent_path(), ignored);
-  }
+  if (mode[0] == 'w') create_parent_directories(path);
   File file(std::fopen(path.c_str(), mode), &std::fclose);
   if (!file) throw InputError(path.string(), "cannot open file");
   return file;
