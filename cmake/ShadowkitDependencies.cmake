@@ -9,6 +9,11 @@ find_package(TinyGLTF REQUIRED)
 find_package(assimp 5 REQUIRED)
 find_package(absl REQUIRED)
 
+# ERFA, the IAU SOFA astrometry routines, for the sun's position (src/scene/sun/sun_position.cpp
+# says why this library); Debian's liberfa-dev installs erfa.pc and no CMake package file.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(ERFA REQUIRED IMPORTED_TARGET erfa)
+
 # Debian 12's OpenSubdivConfig.cmake names a static library the package does not ship,
 # so the headers and libosdCPU.so are found directly.
 find_path(OPENSUBDIV_INCLUDE_DIR opensubdiv/far/topologyRefiner.h REQUIRED)

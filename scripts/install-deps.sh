@@ -5,7 +5,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libembree-dev libtbb-dev libosd-dev
   nlohmann-json3-dev libcli11-dev libpng-dev
-  libtinygltf-dev libassimp-dev assimp-utils assimp-testmodels libabsl-dev
+  libtinygltf-dev libassimp-dev assimp-utils assimp-testmodels libabsl-dev liberfa-dev
   libgtest-dev libgmock-dev libbenchmark-dev python3 clang-format-14  # tests: layering, format
   clang-14 libfuzzer-14-dev libclang-rt-14-dev  # fuzz/: docs/fuzzing.md
 )
