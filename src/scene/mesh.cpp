@@ -181,6 +181,7 @@ Mesh Mesh::build(const PolygonSoup& soup, const std::string& name, const Context
   mesh.planes.reserve(soup.face_count());
   mesh.areas.reserve(soup.face_count());
   mesh.convex.reserve(soup.face_count());
+  mesh.input_faces.reserve(soup.face_count());
   std::vector<std::uint32_t> loop;
   auto add_face = [&mesh](std::span<const std::uint32_t> face, const Plane& plane, double area) {
     mesh.face_vertices.insert(mesh.face_vertices.end(), face.begin(), face.end());
@@ -205,6 +206,7 @@ Mesh Mesh::build(const PolygonSoup& soup, const std::string& name, const Context
     const Plane plane = plane_of(mesh.vertices, loop, newell);
     if (is_planar(mesh.vertices, loop, plane, size)) {
       add_face(loop, plane, area);
+      mesh.input_faces.push_back(std::uint32_t(f));
       continue;
     }
     // A warped polygon has no single plane: keep its surface as triangles.
@@ -216,6 +218,7 @@ Mesh Mesh::build(const PolygonSoup& soup, const std::string& name, const Context
       const double tsize = diameter(mesh.vertices, t);
       if (0.5 * length(tn) > kDegenerateArea * tsize * tsize) {
         add_face(t, plane_of(mesh.vertices, t, tn), 0.5 * length(tn));
+        mesh.input_faces.push_back(std::uint32_t(f));
       }
     }
   }
@@ -225,6 +228,7 @@ Mesh Mesh::build(const PolygonSoup& soup, const std::string& name, const Context
   }
   mesh.split_faces_ = split;
   mesh.dropped_faces_ = degenerate;
+  mesh.input_face_count_ = soup.face_count();
   mesh.build_adjacency();
   return mesh;
 }

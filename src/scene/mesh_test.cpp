@@ -162,5 +162,19 @@ TEST(Mesh, ConvexFacesAreMarkedWhicheverWayTheyTurn) {
   EXPECT_EQ(Mesh::build(reversed, "reversed", {}).convex, std::vector<char>{1});
 }
 
+TEST(Mesh, FacesMapBackToTheSoupFacesTheyCameFrom) {
+  PolygonSoup soup;
+  soup.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {1, 1, 1}, {2, 0, 0}};
+  soup.add_face({0, 1});        // 0: two vertices, dropped
+  soup.add_face({0, 1, 2, 3});  // 1: planar, kept whole
+  soup.add_face({0, 1, 2, 1});  // 2: no area, dropped
+  soup.add_face({0, 1, 4, 3});  // 3: not planar, kept as two triangles
+  soup.add_face({1, 5, 2});     // 4: a triangle
+  soup.add_face({0, 0, 0});     // 5: one distinct vertex, dropped
+  const Mesh m = Mesh::build(soup, "mapped", {});
+  EXPECT_EQ(m.input_face_count(), 6u);
+  EXPECT_EQ(m.input_faces, (std::vector<std::uint32_t>{1, 3, 3, 4}));
+}
+
 }  // namespace
 }  // namespace shadowkit

@@ -126,9 +126,12 @@ Scene assemble_scene(SceneSource source, const Context& ctx) {
     scene.lights.push_back(light);
   }
   PolygonBudget budget;
-  for (ObjectSource& object : source.objects) {
+  for (std::size_t i = 0; i < source.objects.size(); ++i) {
+    ObjectSource& object = source.objects[i];
     for (Vec3& p : object.soup.positions) p = scene.frame.to_working(p);
     scene.objects.push_back(build_object(object, budget, ctx));
+    scene.objects.back().input_object = object.input_object.value_or(std::uint32_t(i));
+    scene.objects.back().input_first_face = object.input_first_face;
   }
   scene.finalize();
   return scene;

@@ -126,6 +126,8 @@ int tessellation_segments(const JsonCursor& c) {
 
 void read_objects(const JsonCursor& list, const fs::path& dir, SceneSource& scene,
                   const Context& ctx, const std::string& file) {
+  // A root generator's objects come first, one input object each; the file's entries follow.
+  const auto first_entry = std::uint32_t(scene.objects.size());
   for (std::size_t i = 0; i < list.array_size(); ++i) {
     const JsonCursor c = list[i];
     if (!c.value().is_object()) c.fail("expected an object with \"mesh\" or \"generator\"");
@@ -141,10 +143,13 @@ void read_objects(const JsonCursor& list, const fs::path& dir, SceneSource& scen
     }
     const int segments = tessellation_segments(c);
     const std::string name = c.has("name") ? c["name"].string() : "";
+    std::uint32_t first_face = 0;
     for (GeneratedObject& part : parts) {
       apply_object_transform(c, part.soup.positions);
-      scene.objects.push_back(
-          {name.empty() ? part.name : name, std::move(part.soup), segments, c.where()});
+      const auto faces = std::uint32_t(part.soup.face_count());
+      scene.objects.push_back({name.empty() ? part.name : name, std::move(part.soup), segments,
+                               c.where(), first_entry + std::uint32_t(i), first_face});
+      first_face += faces;
     }
   }
 }

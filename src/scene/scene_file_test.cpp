@@ -199,5 +199,28 @@ TEST_F(SceneFileTest, UnknownKeysAreWarnedAbout) {
   EXPECT_THAT(warnings[0], HasSubstr("key 'camra' is not part of the scene format"));
 }
 
+// The sun study names polygons by the scene file's objects entry and the face as read.
+TEST_F(SceneFileTest, ObjectsKnowTheirEntryAndFirstInputFace) {
+  write("two.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2\nf 1 2 3\n");
+  const fs::path p =
+      write("scene.json", scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                                R"({"type": "point", "position": [3, 10, 4]})",
+                                R"({"mesh": "two.obj"}, {"generator": "cubes", "count": 2},
+                             {"generator": "box"})"));
+  const Scene s = load_scene_file(p, quiet_);
+  // two.obj; the cubes scene's cubes and ground; the box.
+  ASSERT_EQ(s.objects.size(), 4u);
+  EXPECT_EQ(s.objects[0].input_object, 0u);
+  EXPECT_EQ(s.objects[0].mesh.input_faces, std::vector<std::uint32_t>{1});
+  EXPECT_EQ(s.objects[0].mesh.input_face_count(), 2u);
+  EXPECT_EQ(s.objects[1].input_object, 1u);
+  EXPECT_EQ(s.objects[1].input_first_face, 0u);
+  EXPECT_EQ(s.objects[2].input_object, 1u);
+  EXPECT_EQ(s.objects[2].input_first_face, s.objects[1].mesh.input_face_count());
+  EXPECT_EQ(s.objects[3].input_object, 2u);
+  EXPECT_EQ(s.objects[3].input_first_face, 0u);
+  EXPECT_EQ(s.objects[3].mesh.input_face_count(), 6u);
+}
+
 }  // namespace
 }  // namespace shadowkit

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "shadowkit/methods/shadow_method.h"
 #include "shadowkit/scene/scene.h"
@@ -25,5 +26,31 @@ struct FragmentsWritten {
 /// coordinates and units. InputError when a file cannot be written.
 FragmentsWritten write_fragments(const Scene& scene, const std::filesystem::path& ply,
                                  const std::filesystem::path& json);
+
+class SceneBsp;
+
+/// \brief The lit area of every scene face for one directional light after another, as the
+/// sun study needs it: the scene BSP tree is built once (Chin & Feiner §3: its front-to-back
+/// walk serves any light) and each call grows one light's SVBSP tree from it (§4).
+class SunlitAreas {
+ public:
+  explicit SunlitAreas(const Scene& scene);
+  ~SunlitAreas();
+  SunlitAreas(const SunlitAreas&) = delete;
+  SunlitAreas& operator=(const SunlitAreas&) = delete;
+
+  /// Per global face id of the scene, the area of the face that a directional light
+  /// arriving from \p toward_light (a unit vector toward the light) reaches, in world units
+  /// (scene units squared). Surfaces are two-sided: every face casts shadows, whichever side
+  /// the light sees, and the lit area is that of the side facing the light; a face whose
+  /// plane holds the light has none. The sum runs over the face's lit fragments in a fixed
+  /// order, so the result does not depend on threads. Thread-safe: calls share the scene
+  /// BSP tree read-only.
+  std::vector<double> lit_areas(Vec3 toward_light) const;
+
+ private:
+  const Scene& scene_;
+  std::unique_ptr<const SceneBsp> bsp_;
+};
 
 }  // namespace shadowkit::svbsp

@@ -62,6 +62,10 @@ class Mesh {
   /// Per face: 1 when it turns the same way about its normal at every corner, so that a
   /// plane cuts it in one segment at most.
   std::vector<char> convex;
+  /// Per face: the index of the soup face it was built from. Faces keep the soup's order; a
+  /// non-planar soup face gives several (its triangles), a degenerate one none. What the
+  /// sun-study contract's polygons (the faces as read from the file) map back through.
+  std::vector<std::uint32_t> input_faces;
 
   std::vector<MeshEdge> edges;
   std::vector<EdgeUse> edge_uses;
@@ -87,6 +91,8 @@ class Mesh {
   std::size_t split_face_count() const { return split_faces_; }
   /// Input polygons dropped as degenerate (fewer than 3 distinct vertices, or no area).
   std::size_t dropped_face_count() const { return dropped_faces_; }
+  /// The soup's face count, dropped faces included.
+  std::size_t input_face_count() const { return input_face_count_; }
 
  private:
   void build_adjacency();
@@ -94,6 +100,7 @@ class Mesh {
   std::size_t nonmanifold_edges_ = 0;
   std::size_t split_faces_ = 0;
   std::size_t dropped_faces_ = 0;
+  std::size_t input_face_count_ = 0;
   bool consistently_oriented_ = true;
 };
 

@@ -62,6 +62,14 @@ struct SceneObject {
   /// Set when the object is a Catmull-Clark surface: `mesh` is then its crack-free
   /// tessellation, and methods that work on the limit surface itself (voxel) use this.
   std::shared_ptr<const SubdivisionSurface> subdivision;
+  /// Where the object's input faces sit in the scene's description, for outputs that name
+  /// a face as read (the sun-study contract's polygons): its entry in the scene file's
+  /// `objects` (for a built-in scene, its place among the scene's objects) and the index,
+  /// among that entry's faces, of its mesh's input face 0 (an entry whose generator makes
+  /// several objects numbers their faces one after another). Mesh::input_faces goes on from
+  /// there.
+  std::uint32_t input_object = 0;
+  std::uint32_t input_first_face = 0;
 };
 
 /// \brief Every face of every object, triangulated once for the scan converter and Embree.

@@ -1,6 +1,8 @@
 #pragma once
 /// \brief Turning what a scene file or a generator describes into a Scene: range checks, the
 /// working frame, meshes and tessellations.
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,10 @@ struct ObjectSource {
   int tessellation = 0;
   /// Labels the object's errors and warnings ("scene.json: key 'objects[2]'").
   std::string where;
+  /// SceneObject::input_object; none: the object's place in SceneSource::objects.
+  std::optional<std::uint32_t> input_object = std::nullopt;
+  /// SceneObject::input_first_face.
+  std::uint32_t input_first_face = 0;
 };
 
 /// \brief A scene as described, before its working frame is chosen.

@@ -1,0 +1,58 @@
+// SunlitAreas: per-face lit areas for one directional light after another from one scene
+// BSP tree, equal to the single-light run's fragments.
+#include <gtest/gtest.h>
+
+#include "shadowkit/methods/svbsp.h"
+#include "shadowkit/scene/generators.h"
+#include "svbsp_test_support.h"
+
+namespace shadowkit::svbsp {
+namespace {
+
+TEST(SunlitAreas, EqualTheLitFragmentsOfEachLightInWorldUnits) {
+  const Scene scene = make_builtin_scene("table", {});
+  const SunlitAreas sunlit(scene);
+  const SceneBsp bsp = SceneBsp::build(scene);
+  const double scale2 = scene.frame.scale * scene.frame.scale;
+  for (const Vec3 toward : {Vec3{0.3, 1, 0.2}, Vec3{-0.7, 0.4, 0.1}, Vec3{0, 0.2, -1}}) {
+    const Vec3 t = normalize(toward);
+    const std::vector<double> lit = sunlit.lit_areas(t);
+    const auto expected =
+        face_areas(generate_shadows(bsp, scene, Light::directional(-t)).fragments);
+    ASSERT_EQ(lit.size(), scene.face_count());
+    double total = 0;
+    for (std::uint32_t face = 0; face < scene.face_count(); ++face) {
+      const auto it = expected.find(face);
+      const double want = it == expected.end() ? 0.0 : it->second.lit * scale2;
+      EXPECT_NEAR(lit[face], want, 1e-12 * face_area(scene, face) * scale2) << face;
+      EXPECT_LE(lit[face], face_area(scene, face) * scale2 * (1 + 1e-12)) << face;
+      total += lit[face];
+    }
+    EXPECT_GT(total, 0);
+    EXPECT_EQ(lit, sunlit.lit_areas(t));  // the same sums, in the same order
+  }
+}
+
+// The `square` scene (a 2 x 2 square one unit above a larger ground), the light straight
+// above: the ground loses exactly the square's area, the square is wholly lit.
+TEST(SunlitAreas, SquareAboveGroundShadowsExactlyItsArea) {
+  const Scene scene = make_builtin_scene("square", {});
+  const SunlitAreas sunlit(scene);
+  const std::vector<double> lit = sunlit.lit_areas({0, 1, 0});
+  double lit_total = 0, area_total = 0;
+  for (std::uint32_t face = 0; face < scene.face_count(); ++face) {
+    lit_total += lit[face];
+    area_total += face_area(scene, face) * scene.frame.scale * scene.frame.scale;
+  }
+  ASSERT_GT(area_total, 0);
+  // Lit: everything but the square's shadow on the ground, which is as large as the square.
+  double square = area_total;
+  for (std::uint32_t face = 0; face < scene.face_count(); ++face) {
+    const double a = face_area(scene, face) * scene.frame.scale * scene.frame.scale;
+    square = std::min(square, a);
+  }
+  EXPECT_NEAR(lit_total, area_total - square, 1e-9 * area_total);
+}
+
+}  // namespace
+}  // namespace shadowkit::svbsp
