@@ -269,4 +269,58 @@ TEST_F(Cli, DegenerateFacesAreAWarningNotAnError) {
   EXPECT_THAT(r.err, HasSubstr("degenerate"));
 }
 
+// The sun-study contract's command line: the four files, shards joined by sun-study-merge
+// into the same bytes with any thread count, and bad options named in one line (exit 2).
+TEST_F(Cli, SunStudyShardsMergeIntoOneRunsFiles) {
+  const std::string study =
+      "sun-study table --lat 48.1 --lon 11.6 --utc-offset 1 --from 2025-06-21T04:00 "
+      "--to 2025-06-21T21:30 --step 90 --north 20 --out ";
+  const Result whole = run(study + (dir_ / "whole").string() + " --threads 2");
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  std::string merge = "sun-study-merge";
+  for (int i = 0; i < 3; ++i) {
+    const fs::path out = dir_ / ("shard" + std::to_string(i));
+    const Result r = run(study + out.string() + " --threads 1 --shard " + std::to_string(i) + "/3");
+    ASSERT_EQ(r.status, 0) << r.err;
+    merge += " " + out.string();
+  }
+  const Result merged = run(merge + " --out " + (dir_ / "merged").string());
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  for (const char* f : {"times.csv", "polygons.csv", "sunlit_fraction.f32", "sun_hours.csv"}) {
+    const std::string bytes = slurp(dir_ / "whole" / f);
+    EXPECT_FALSE(bytes.empty()) << f;
+    EXPECT_TRUE(bytes == slurp(dir_ / "merged" / f)) << f;
+  }
+  const std::string times = slurp(dir_ / "whole" / "times.csv");
+  EXPECT_EQ(times.rfind("index,time_utc,azimuth_deg,elevation_deg\n0,2025-06-21T03:00:00Z,", 0),
+            0u);
+  // 12 steps of 90 minutes from 04:00 to 20:30 local time.
+  EXPECT_EQ(fs::file_size(dir_ / "whole" / "sunlit_fraction.f32") % (12 * 4), 0u);
+  expect_bad_input(merge + " --out " + (dir_ / "m2").string() + " " + (dir_ / "shard0").string(),
+                   "shard");
+}
+
+TEST_F(Cli, SunStudyBadOptionsExitWith2NamingTheOption) {
+  const std::string out = " --out " + (dir_ / "out").string();
+  auto study = [&](const std::string& lat, const std::string& from, const std::string& to,
+                   const std::string& step) {
+    return "sun-study square --lat " + lat + " --lon 0 --utc-offset 0 --from " + from + " --to " +
+           to + " --step " + step + out;
+  };
+  const std::string day = "2025-06-01T00:00", noon = "2025-06-01T12:00";
+  expect_bad_input(study("95", day, noon, "60"), "--lat");
+  expect_bad_input(study("45", noon, day, "60"), "--from");
+  expect_bad_input(study("45", day, noon, "0"), "--step");
+  expect_bad_input(study("45", day, noon, "-5"), "--step");
+  expect_bad_input(study("45", day, noon, "60") + " --shard 3/3", "--shard");
+  expect_bad_input(study("45", day, noon, "60") + " --shard 1/0", "--shard");
+  expect_bad_input(study("45", "2025-02-30T10:00", noon, "60"), "--from");
+  expect_bad_input(study("45", day, "'2025-06-01 12:00'", "60"), "--to");
+  expect_bad_input(study("45", day, "2025-13-01T12:00", "60"), "--to");
+  expect_bad_input(study("45", day, noon, "60") + " --north 400", "--north");
+  expect_bad_input(
+      study("45", day, noon, "60").substr(0, study("45", day, noon, "60").find(" --out")), "--out");
+  EXPECT_FALSE(fs::exists(dir_ / "out"));  // refused before the folder is made
+}
+
 }  // namespace

@@ -102,6 +102,37 @@ int main(int argc, char** argv) {
   voxel_render_cmd->add_option("--turn", voxel_render.turn_deg,
                                "degrees the second view turns around the camera's target");
 
+  SunStudyOptions sun_study;
+  auto* sun_study_cmd = app.add_subcommand(
+      "sun-study",
+      "the sunlit fraction of every polygon at each time step, and its sun hours "
+      "(the sun-study contract)");
+  add_shared(sun_study_cmd, sun_study, shared);
+  sun_study_cmd->add_option("--lat", sun_study.latitude_deg, "latitude, degrees north")->required();
+  sun_study_cmd->add_option("--lon", sun_study.longitude_deg, "longitude, degrees east")
+      ->required();
+  sun_study_cmd
+      ->add_option("--utc-offset", sun_study.utc_offset_hours,
+                   "hours: local standard time is UTC + this (no daylight saving)")
+      ->required();
+  sun_study_cmd->add_option("--from", sun_study.from, "first step, YYYY-MM-DDTHH:MM local time")
+      ->required();
+  sun_study_cmd->add_option("--to", sun_study.to, "last step at most, YYYY-MM-DDTHH:MM local time")
+      ->required();
+  sun_study_cmd->add_option("--step", sun_study.step_minutes, "minutes between steps")->required();
+  sun_study_cmd->add_option("--out", sun_study.out, "folder of the output files")->required();
+  sun_study_cmd->add_option("--north", sun_study.north_deg,
+                            "degrees north turns clockwise from -Z, seen from above (default 0)");
+  sun_study_cmd->add_option("--shard", sun_study.shard,
+                            "I/N: only the I-th of N contiguous blocks of steps");
+
+  SunStudyMergeOptions sun_study_merge;
+  auto* sun_study_merge_cmd = app.add_subcommand(
+      "sun-study-merge", "join the folders of a sharded sun study into one study's files");
+  sun_study_merge_cmd->add_option("DIR", sun_study_merge.shards, "the shards' folders")->required();
+  sun_study_merge_cmd->add_option("--out", sun_study_merge.out, "folder of the merged files")
+      ->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -140,6 +171,11 @@ int main(int argc, char** argv) {
       voxel_render.settings = settings;
       return run_voxel_render(voxel_render, ctx);
     }
+    if (*sun_study_cmd) {
+      sun_study.settings = settings;
+      return run_sun_study(sun_study, ctx);
+    }
+    if (*sun_study_merge_cmd) return run_sun_study_merge(sun_study_merge, ctx);
     info.settings = settings;
     return run_info(info, ctx);
   } catch (const InputError& e) {

@@ -52,6 +52,25 @@ struct VoxelRenderOptions : CommandOptions {
   double turn_deg = 30;
 };
 
+/// \brief The sun study (the sun-study contract, sun-study.md): the sunlit fraction of every
+/// input polygon at each time step, with the sun as the only light, and its sun hours.
+struct SunStudyOptions : CommandOptions {
+  double latitude_deg = 0;      ///< `--lat`
+  double longitude_deg = 0;     ///< `--lon`
+  double utc_offset_hours = 0;  ///< `--utc-offset`
+  double north_deg = 0;         ///< `--north`
+  std::string from, to;         ///< `--from`, `--to`: YYYY-MM-DDTHH:MM, local standard time
+  double step_minutes = 0;      ///< `--step`
+  std::string out;              ///< `--out`: the folder of the four files
+  std::string shard;            ///< `--shard I/N`; empty: every step
+};
+
+/// \brief Joins the folders of a sharded sun study into the files one unsharded run writes.
+struct SunStudyMergeOptions {
+  std::vector<std::string> shards;  ///< the shards' folders, in any order
+  std::string out;
+};
+
 /// Parses "method.key=value" settings into per-method options; InputError if malformed.
 std::map<std::string, MethodOptions> parse_settings(const std::vector<std::string>& settings);
 
@@ -61,5 +80,7 @@ int run_bench(const BenchOptions& options, const Context& ctx);
 int run_info(const CommandOptions& options, const Context& ctx);
 int run_fragments(const FragmentsOptions& options, const Context& ctx);
 int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx);
+int run_sun_study(const SunStudyOptions& options, const Context& ctx);
+int run_sun_study_merge(const SunStudyMergeOptions& options, const Context& ctx);
 
 }  // namespace shadowkit
