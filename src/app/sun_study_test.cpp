@@ -116,6 +116,7 @@ class SunStudy : public ::testing::Test {
 std::string quad(int first_vertex, double y, double x0, double x1, double z0, double z1,
                  bool up = true) {
   std::ostringstream s;
+  s.precision(17);
   s << "v " << x0 << ' ' << y << ' ' << z0 << "\nv " << x0 << ' ' << y << ' ' << z1 << "\nv " << x1
     << ' ' << y << ' ' << z1 << "\nv " << x1 << ' ' << y << ' ' << z0 << "\n";
   const int v = first_vertex;
@@ -312,6 +313,51 @@ TEST_F(SunStudy, FractionsAgreeWithShadowRaysUnderOverhangs) {
     checked += this_step;
   }
   EXPECT_GE(checked, 6u);
+}
+
+// The contract's numbers: plain decimals with a dot, no exponent, at least 6 significant
+// digits, for tiny and huge areas alike.
+TEST_F(SunStudy, CsvNumbersArePlainDecimalsWithSixSignificantDigits) {
+  write("tiny.obj", quad(1, 0, 0, 0.001, 0, 0.0001));
+  write("huge.obj", quad(1, 0, 0, 10000, 0, 1234.56789));
+  const fs::path scene =
+      write("scene.json", R"({"camera": {"position": [0, 5, 9], "look_at": [0, 0, 0]},
+      "objects": [{"mesh": "tiny.obj", "transform": {"translate": [0, 5, 0]}},
+                  {"mesh": "huge.obj"}]})");
+  run(study(scene.string(), 10, "2025-06-21T05:00", "2025-06-21T19:00", 120, "out"));
+  const Table polygons = read_csv(dir_ / "out" / "polygons.csv");
+  ASSERT_EQ(polygons.size(), 3u);
+  // Within rounding of the working frame, which is centred on both objects.
+  EXPECT_NEAR(std::stod(polygons[1][3]), 1e-7, 1e-16);
+  EXPECT_NEAR(std::stod(polygons[2][3]), 12345678.9, 1e-6);
+  auto check = [](const std::string& cell) {
+    ASSERT_FALSE(cell.empty());
+    std::size_t significant = 0, dots = 0;
+    bool started = false;
+    for (std::size_t i = 0; i < cell.size(); ++i) {
+      const char c = cell[i];
+      if (c == '.') {
+        ++dots;
+        continue;
+      }
+      if (c == '-' && i == 0) continue;
+      ASSERT_TRUE(c >= '0' && c <= '9') << cell;
+      started = started || c != '0';
+      significant += started;
+    }
+    EXPECT_LE(dots, 1u) << cell;
+    EXPECT_TRUE(significant >= 6 ||
+                (cell.find_first_not_of("-0.") == std::string::npos && cell.size() >= 8))
+        << cell;
+  };
+  for (const char* file : {"times.csv", "polygons.csv", "sun_hours.csv"}) {
+    const Table rows = read_csv(dir_ / "out" / file);
+    for (std::size_t r = 1; r < rows.size(); ++r) {
+      for (std::size_t c = 0; c < rows[r].size(); ++c) {
+        if (c == 3 || (std::string(file) == "times.csv" && c == 2)) check(rows[r][c]);
+      }
+    }
+  }
 }
 
 }  // namespace
