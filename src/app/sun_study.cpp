@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "shadowkit/app/commands.h"
@@ -48,6 +49,7 @@ constexpr const char* kPolygons = "polygons.csv";
 constexpr const char* kFractions = "sunlit_fraction.f32";
 constexpr const char* kSunHours = "sun_hours.csv";
 constexpr const char* kManifest = "sun_study.json";
+constexpr const char* kTimesHeader = "index,time_utc,azimuth_deg,elevation_deg\n";
 
 // The contract's numbers: plain decimals with a dot, no exponent, at least 6 significant
 // digits. The shortest text that reads back as the same double, in fixed notation, then
@@ -336,7 +338,8 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
   const std::size_t P = polygons.rows.size();
   const std::string polygons_text = polygons_csv(polygons);
   AtomicFile fractions_file(dir / kFractions);
-  std::string times_text = "index,time_utc,azimuth_deg,elevation_deg\n";
+  AtomicFile times_file(dir / kTimes);
+  times_file.stream() << kTimesHeader;
   std::vector<double> hours(P, 0.0);
   const std::size_t block = std::max<std::size_t>(1, kBlockValues / std::max<std::size_t>(P, 1));
   std::vector<float> values;
@@ -360,7 +363,7 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
     bytes.clear();
     for (std::size_t i = 0; i < n; ++i) {
       const std::int64_t k = first + std::int64_t(i);
-      times_text += times_row(k, steps.at(k), angles[i]);
+      times_file.stream() << times_row(k, steps.at(k), angles[i]);
       daytime += angles[i].elevation_deg > 0;
       add_sun_hours(values.data() + i * P, steps.step_hours(), hours);
       append_float32_le(values.data() + i * P, P, bytes);
@@ -370,7 +373,7 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
   const Clock::time_point steps_end = Clock::now();
 
   std::vector<std::string> keys = row_keys(polygons_text, kPolygons);
-  write_file(dir / kTimes, times_text);
+  times_file.commit();
   write_file(dir / kPolygons, polygons_text);
   fractions_file.commit();
   write_file(dir / kSunHours, sun_hours_csv(keys, hours));
@@ -471,7 +474,8 @@ int merge_shards(const SunStudyMergeOptions& options) {
     fs::remove(dir / name, ec);
   }
   const double step_hours = double(first["study"]["step_seconds"].get<std::int64_t>()) / 3600.0;
-  std::string times_text = "index,time_utc,azimuth_deg,elevation_deg\n";
+  AtomicFile times_file(dir / kTimes);
+  times_file.stream() << kTimesHeader;
   std::vector<double> hours(P, 0.0);
   AtomicFile fractions_file(dir / kFractions);
   std::vector<float> row(P);
@@ -480,11 +484,11 @@ int merge_shards(const SunStudyMergeOptions& options) {
     const auto count = part.manifest["step_count"].get<std::int64_t>();
     const std::string times = read_file(part.dir / kTimes);
     const std::size_t header_end = times.find('\n');
-    if (header_end == std::string::npos ||
+    if (times.rfind(kTimesHeader, 0) != 0 ||
         std::count(times.begin(), times.end(), '\n') != count + 1) {
       throw InputError((part.dir / kTimes).string(), "does not hold the shard's steps");
     }
-    times_text += times.substr(header_end + 1);
+    times_file.stream() << std::string_view(times).substr(header_end + 1);
     const fs::path f32 = part.dir / kFractions;
     if (fs::file_size(f32, ec) != std::uintmax_t(count) * P * 4) {
       throw InputError(f32.string(), "does not hold the shard's " + std::to_string(count) + " x " +
@@ -501,7 +505,7 @@ int merge_shards(const SunStudyMergeOptions& options) {
                                     std::streamsize(raw.size()));
     }
   }
-  write_file(dir / kTimes, times_text);
+  times_file.commit();
   write_file(dir / kPolygons, polygons_text);
   fractions_file.commit();
   write_file(dir / kSunHours, sun_hours_csv(keys, hours));
