@@ -468,6 +468,12 @@ int merge_shards(const SunStudyMergeOptions& options) {
 
   const fs::path dir = options.out;
   std::error_code ec;
+  // The merged files replace the folder's own: a shard's folder cannot receive them.
+  for (const Part& part : parts) {
+    if (fs::equivalent(part.dir, dir, ec)) {
+      throw InputError("--out " + options.out, "is one of the shards' folders");
+    }
+  }
   fs::create_directories(dir, ec);
   if (!fs::is_directory(dir)) throw InputError("--out " + options.out, "cannot create the folder");
   for (const char* name : {kTimes, kPolygons, kFractions, kSunHours, kManifest}) {
