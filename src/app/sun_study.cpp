@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 // The study's size in steps is bounded so that indices and the file of fractions stay in
-// reach: a century at 5-minute steps.
+// reach: 19 years at one-minute steps.
 constexpr std::int64_t kMaxSteps = 10'000'000;
 // The most shards a study is cut into.
 constexpr std::int64_t kMaxShards = 1'000'000;
