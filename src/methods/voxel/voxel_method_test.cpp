@@ -1,31 +1,19 @@
-// The voxel method's masks against raytrace, the paper's Fig. 1 case, degenerate input and
-// bad options.
+// The voxel method: the paper's Fig. 1 case, degenerate input, coincident copies, the bound
+// on subpatches and bad options. Its masks against raytrace are rows of the conformance table.
 #include "voxel_method.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <cctype>
-#include <cstdio>
 #include <map>
-#include <ostream>
 #include <string>
 
 #include "shadowkit/core/error.h"
-#include "shadowkit/scene/scene_file.h"
 #include "testing/method_testing.h"
 #include "testing/test_scenes.h"
 
 namespace shadowkit::voxel {
 namespace {
-
-using testing::worst_interior_mismatch;
-
-Scene reduced(Scene scene) {
-  scene.camera.width = 240;
-  scene.camera.height = 135;
-  return scene;
-}
 
 MethodOptions voxel_options(std::map<std::string, std::string> values) {
   return MethodOptions("voxel", std::move(values));
@@ -42,50 +30,6 @@ double lit_fraction(ShadowMethod& method, const Scene& scene, std::uint32_t obje
     lit += mask.pixels[i] == kMaskLit;
   }
   return covered > 0 ? lit / covered : -1;
-}
-
-struct SceneCase {
-  const char* scene;
-  double topology_pct, offset_pct;  // tolerated interior mismatch at M = 128
-};
-
-void PrintTo(const SceneCase& c, std::ostream* os) {
-  *os << c.scene;
-}
-
-class VoxelBuiltInScene : public ::testing::TestWithParam<SceneCase> {};
-
-TEST_P(VoxelBuiltInScene, AgreesWithTheReference) {
-  const SceneCase c = GetParam();
-  const Scene scene = reduced(load_scene(c.scene, {}));
-  const double topology =
-      worst_interior_mismatch(scene, "voxel", voxel_options({{"resolution", "128"}}));
-  const double offset = worst_interior_mismatch(
-      scene, "voxel", voxel_options({{"resolution", "128"}, {"test", "offset"}}));
-  std::printf("%s: topology %.3f%%, offset %.3f%%\n", c.scene, topology, offset);
-  EXPECT_LE(topology, c.topology_pct);
-  EXPECT_LE(offset, c.offset_pct);
-}
-
-INSTANTIATE_TEST_SUITE_P(Voxel, VoxelBuiltInScene,
-                         ::testing::Values(SceneCase{"square", 0.5, 0.5},
-                                           SceneCase{"cubes:125", 1, 8},
-                                           SceneCase{"tetra:3", 0.3, 1}, SceneCase{"room", 0.1, 3},
-                                           SceneCase{"three-lights", 0.5, 1.5},
-                                           SceneCase{"table", 0.4, 4}),
-                         [](const ::testing::TestParamInfo<SceneCase>& param_info) {
-                           std::string name = param_info.param.scene;
-                           for (char& c : name) {
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           }
-                           return name;
-                         });
-
-// Catmull-Clark objects (extraordinary vertices, an open box) over a subdivision ground.
-TEST(VoxelSubdivision, TheExampleSceneAgreesWithTheReference) {
-  const std::string path = std::string(SHADOWKIT_SOURCE_DIR) + "/examples/subdivision.json";
-  const Scene scene = reduced(load_scene(path, {}));
-  EXPECT_LE(worst_interior_mismatch(scene, "voxel", voxel_options({{"resolution", "128"}})), 0.5);
 }
 
 // Fig. 1: a plane lit at a grazing angle (3 degrees). Every point of it is lit; a depth
@@ -111,21 +55,6 @@ TEST(VoxelDegenerate, LightInAFacesPlane) {
                                                  testing::point_light({3, 0, 0}));
   VoxelMethod voxel(voxel_options({{"resolution", "64"}}));
   EXPECT_EQ(lit_fraction(voxel, scene, 0), 0.0);
-  EXPECT_EQ(worst_interior_mismatch(scene, "voxel", voxel_options({{"resolution", "64"}})), 0.0);
-}
-
-// The square over the plane (open meshes) at 1e-6 and 1e6 times its size: the grid is
-// relative to the bound, so the mismatch does not change with the units.
-TEST(VoxelDegenerate, TinyAndHugeCoordinates) {
-  for (double scale : {1e-6, 1.0, 1e6}) {
-    const Scene scene = testing::make_scene(
-        testing::camera(Vec3{0, 6, 8} * scale, {0, 0, 0}, 160, 90),
-        {testing::point_light(Vec3{0.3, 4, 0.2} * scale)},
-        {testing::horizontal_quad(-10 * scale, 10 * scale, -10 * scale, 10 * scale, 0),
-         testing::horizontal_quad(-scale, scale, -scale, scale, scale)});
-    EXPECT_LE(worst_interior_mismatch(scene, "voxel", voxel_options({{"resolution", "128"}})), 0.3)
-        << scale;
-  }
 }
 
 // Ten copies of a box on one spot: a triangle with the corners of an earlier one is one
