@@ -2,18 +2,21 @@
 # Regenerates docs/benchmarks.md and docs/benchmarks-summary.md: every method on every built-in
 # scene and example scene at 1920x1080, timed with `shadowkit bench` (PASSES passes over the
 # scenes, REPEATS timed runs each) and compared with raytrace by `shadowkit compare`.
-#   bash scripts/benchmarks.sh [--quick] [--repeats N] [--warmup N] [--passes P]
-#                              [--out FILE] [--summary FILE]
+#   bash scripts/benchmarks.sh [--quick] [--repeats N] [--warmup N] [--passes P] [--threads N]
+#                              [--out FILE] [--summary FILE] [--keep DIR]
 #   --quick     one pass of one timed run, no warm-up, written to /tmp/benchmarks-quick.md
 #               (and -summary.md) unless --out/--summary say otherwise: checks the script
-#   defaults    --repeats 9 --warmup 1 --passes 3 --out docs/benchmarks.md
+#               (under a minute)
+#   --threads   passed to every shadowkit command (default: all cores)
+#   --keep      keep the raw JSON (bench, compare, info per scene) in DIR
+#   defaults    --repeats 9 --warmup 1 --passes 5 --out docs/benchmarks.md
 #               --summary docs/benchmarks-summary.md (about 10 minutes on 2 cores)
 # Needs build/shadowkit (BUILD_DIR=build bash scripts/build.sh) or SHADOWKIT=path, and python3.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 shadowkit=${SHADOWKIT:-$root/build/shadowkit}
-repeats=9 warmup=1 passes=3 quick=0
-out= summary=
+repeats=9 warmup=1 passes=5 quick=0
+out= summary= keep= threads=()
 args=("$@")
 while (($#)); do
   case $1 in
@@ -23,7 +26,9 @@ while (($#)); do
     --passes) passes=$2; shift ;;
     --out) out=$2; shift ;;
     --summary) summary=$2; shift ;;
-    -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --threads) threads=(--threads "$2"); shift ;;
+    --keep) keep=$2; shift ;;
+    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "benchmarks.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
@@ -41,8 +46,13 @@ scenes=(cubes:125 cubes:2000 cubes:8000 tetra:3 tetra:4 room table three-lights 
         hole-like examples/default.json examples/subdivision.json examples/room.json
         examples/open-meshes.json examples/formats.json)
 helper=$root/scripts/benchmarks_report.py
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+if [[ -n $keep ]]; then
+  mkdir -p "$keep"
+  work=$(cd "$keep" && pwd)
+else
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+fi
 start=$(date +%s)
 load_start=$(cut -d' ' -f1 /proc/loadavg)
 
@@ -61,7 +71,7 @@ done
 # Runs shadowkit; status 3 (a method failed on a light: a `failed` row) is a result, not an error.
 run() {
   local status=0
-  "$shadowkit" "$@" || status=$?
+  "$shadowkit" "$@" "${threads[@]}" || status=$?
   if ((status != 0 && status != 3)); then
     echo "benchmarks.sh: shadowkit $* ended with status $status" >&2
     exit 1
@@ -108,8 +118,9 @@ json.dump({
     "cores": $(nproc), "memory_gb": f"{mem / 2**20:.0f}", "os": os_name,
     "build": "${build_type:-unknown} ($flags), ${compiler:-unknown compiler}, Embree ${embree:-3}, built by scripts/build.sh",
     "command": "$command",
-    "bench_command": "build/shadowkit bench SCENE --methods $methods --repeats $repeats --warmup $warmup --json",
-    "compare_command": "build/shadowkit compare SCENE --methods $methods --json",
+    "bench_command": "build/shadowkit bench SCENE --methods $methods --repeats $repeats --warmup $warmup${threads[*]:+ ${threads[*]}} --json",
+    "compare_command": "build/shadowkit compare SCENE --methods $methods${threads[*]:+ ${threads[*]}} --json",
+    "threads": "${threads[1]:-}",
     "elapsed_min": ($(date +%s) - $start) / 60, "load_start": "$load_start",
     "load_end": "$(cut -d' ' -f1 /proc/loadavg)",
 }, open(sys.argv[1], "w"), indent=1)
