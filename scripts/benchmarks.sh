@@ -17,16 +17,18 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 shadowkit=${SHADOWKIT:-$root/build/shadowkit}
 repeats=9 warmup=1 passes=5 quick=0
 out= summary= keep= threads=()
-args=("$@")
+shown=()  # the options that change what is measured, for the page's command line
 while (($#)); do
   case $1 in
-    --quick) quick=1 repeats=1 warmup=0 passes=1 ;;
+    --quick) quick=1 repeats=1 warmup=0 passes=1; shown+=("$1") ;;
+    --repeats|--warmup|--passes|--threads) (($# > 1)) || { echo "benchmarks.sh: $1 needs a value" >&2; exit 2; }
+      shown+=("$1" "$2") ;;&
     --repeats) repeats=$2; shift ;;
     --warmup) warmup=$2; shift ;;
     --passes) passes=$2; shift ;;
+    --threads) threads=(--threads "$2"); shift ;;
     --out) out=$2; shift ;;
     --summary) summary=$2; shift ;;
-    --threads) threads=(--threads "$2"); shift ;;
     --keep) keep=$2; shift ;;
     -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "benchmarks.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
@@ -104,7 +106,7 @@ flags=$(cache_value "CMAKE_CXX_FLAGS_${build_type^^}")
 compiler=$("$(cache_value CMAKE_CXX_COMPILER)" --version 2>/dev/null | head -1 || true)
 embree=$(cache_value embree_DIR | sed -n 's/.*embree-\([0-9.]*\).*/\1/p')
 command="bash scripts/benchmarks.sh"
-((${#args[@]})) && command+=" ${args[*]}"
+((${#shown[@]})) && command+=" ${shown[*]}"
 python3 - "$work/meta.json" <<EOF
 import json, sys
 scenes = """${scenes[*]}""".split()
