@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates docs/benchmarks.md and docs/benchmarks-summary.md: every method on every built-in
 # scene and example scene at 1920x1080, timed with `shadowkit bench` (PASSES passes over the
-# scenes, REPEATS timed runs each) and compared with raytrace by `shadowkit compare`.
+# scenes; per scene each method in its own process between two timings of raytrace, REPEATS
+# timed runs each) and compared with raytrace by `shadowkit compare`.
 #   bash scripts/benchmarks.sh [--quick] [--repeats N] [--warmup N] [--passes P] [--threads N]
 #                              [--out FILE] [--summary FILE] [--keep DIR]
 #   --quick     one pass of one timed run, no warm-up, written to /tmp/benchmarks-quick.md
@@ -9,13 +10,13 @@
 #               (under a minute)
 #   --threads   passed to every shadowkit command (default: all cores)
 #   --keep      keep the raw JSON (bench, compare, info per scene) in DIR
-#   defaults    --repeats 9 --warmup 1 --passes 5 --out docs/benchmarks.md
-#               --summary docs/benchmarks-summary.md (about 10 minutes on 2 cores)
+#   defaults    --repeats 9 --warmup 1 --passes 3 --out docs/benchmarks.md
+#               --summary docs/benchmarks-summary.md (about 15 minutes on 2 cores)
 # Needs build/shadowkit (BUILD_DIR=build bash scripts/build.sh) or SHADOWKIT=path, and python3.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 shadowkit=${SHADOWKIT:-$root/build/shadowkit}
-repeats=9 warmup=1 passes=5 quick=0
+repeats=9 warmup=1 passes=3 quick=0
 out= summary= keep= threads=()
 shown=()  # the options that change what is measured, for the page's command line
 while (($#)); do
@@ -85,11 +86,15 @@ for i in "${!scenes[@]}"; do
   read -r w h < <(python3 -c 'import json, sys; c = json.load(open(sys.argv[1]))["camera"]; print(c["width"], c["height"])' "$work/info.$i.json")
   [[ "${w}x${h}" == "${width}x${height}" ]] || { echo "benchmarks.sh: ${scenes[$i]} is ${w}x${h}" >&2; exit 1; }
 done
+# Each method in its own process, between two timings of raytrace (the ratio's reference).
 for ((p = 0; p < passes; p++)); do
   for i in "${!scenes[@]}"; do
     echo "benchmarks.sh: pass $((p + 1))/$passes: bench ${scenes[$i]}" >&2
-    run bench "${paths[$i]}" --methods "$methods" --repeats "$repeats" --warmup "$warmup" \
-      --json > "$work/bench.$p.$i.json"
+    for m in ${methods//,/ }; do
+      [[ $m == raytrace ]] && continue
+      run bench "${paths[$i]}" --methods "raytrace,$m,raytrace" --repeats "$repeats" \
+        --warmup "$warmup" --json > "$work/bench.$p.$i.$m.json"
+    done
   done
 done
 for i in "${!scenes[@]}"; do
@@ -120,7 +125,7 @@ json.dump({
     "cores": $(nproc), "memory_gb": f"{mem / 2**20:.0f}", "os": os_name,
     "build": "${build_type:-unknown} ($flags), ${compiler:-unknown compiler}, Embree ${embree:-3}, built by scripts/build.sh",
     "command": "$command",
-    "bench_command": "build/shadowkit bench SCENE --methods $methods --repeats $repeats --warmup $warmup${threads[*]:+ ${threads[*]}} --json",
+    "bench_command": "build/shadowkit bench SCENE --methods raytrace,METHOD,raytrace --repeats $repeats --warmup $warmup${threads[*]:+ ${threads[*]}} --json",
     "compare_command": "build/shadowkit compare SCENE --methods $methods${threads[*]:+ ${threads[*]}} --json",
     "threads": "${threads[1]:-}",
     "elapsed_min": ($(date +%s) - $start) / 60, "load_start": "$load_start",

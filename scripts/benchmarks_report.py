@@ -92,11 +92,15 @@ class Cell:
         self.shade = sum(r["shade_ms"] for r in ok) if ok else None
         self.frame = self.build + self.shade if ok else None
         self.memory = max(r["memory_bytes"] for r in ok) if ok else None
-        # raytrace's shade on the same lights, in the same process.
-        ref = {r["light"]: r for r in reference if "failed" not in r}
+        # raytrace's shade on the same lights, in the same process: the mean of its runs there
+        # (one before the method and one after).
+        ref = {}
+        for r in reference:
+            if "failed" not in r:
+                ref.setdefault(r["light"], []).append(r["shade_ms"])
         lights = [r["light"] for r in ok]
         if ok and all(l in ref for l in lights):
-            rt = sum(ref[l]["shade_ms"] for l in lights)
+            rt = sum(statistics.mean(ref[l]) for l in lights)
             self.shade_ratio = self.shade / rt if rt > 0 else None
             self.frame_ratio = self.frame / rt if rt > 0 else None
         else:
@@ -150,20 +154,42 @@ def report(work, out, summary_path):
     meta = load(os.path.join(work, "meta.json"))
     scenes = meta["scenes"]
     passes = meta["passes"]
-    bench = {}  # (pass, scene) -> rows
+    bench = {}  # (pass, scene, method) -> rows of the process that timed the method
     for p in range(passes):
         for i, scene in enumerate(scenes):
-            path = os.path.join(work, f"bench.{p}.{i}.json")
-            bench[(p, scene)] = load(path) if os.path.getsize(path) else []
+            for m in METHODS[1:]:
+                path = os.path.join(work, f"bench.{p}.{i}.{m}.json")
+                bench[(p, scene, m)] = load(path) if os.path.getsize(path) else []
     compare = {s: load(os.path.join(work, f"compare.{i}.json")) for i, s in enumerate(scenes)}
     info = {s: load(os.path.join(work, f"info.{i}.json")) for i, s in enumerate(scenes)}
 
-    def rows_of(p, scene, method):
-        return [r for r in bench[(p, scene)] if r.get("method") == method]
+    def rows_of(p, scene, process, method):
+        return [r for r in bench[(p, scene, process)] if r.get("method") == method]
+
+    def all_rows(p, scene):
+        return [r for m in METHODS[1:] for r in bench[(p, scene, m)]]
+
+    def raytrace_rows(p, scene):
+        """raytrace per light in a pass: the median of its runs in every process of the pass."""
+        rows = [r for r in all_rows(p, scene) if r.get("method") == "raytrace"]
+        out = []
+        for light in sorted({r["light"] for r in rows}):
+            mine = [r for r in rows if r["light"] == light]
+            ok = [r for r in mine if "failed" not in r]
+            if not ok:
+                out.append(mine[0])
+                continue
+            out.append({"method": "raytrace", "light": light,
+                        **{k: median([r[k] for r in ok]) for k in
+                           ("prepare_ms", "build_ms", "shade_ms", "memory_bytes")},
+                        "counters": ok[0].get("counters", {})})
+        return out
 
     # cells[method][scene] = [Cell per pass]
-    cells = {m: {s: [Cell(rows_of(p, s, m), rows_of(p, s, "raytrace")) for p in range(passes)]
-                 for s in scenes} for m in METHODS}
+    cells = {m: {s: [Cell(rows_of(p, s, m, m), rows_of(p, s, m, "raytrace"))
+                      for p in range(passes)] for s in scenes} for m in METHODS[1:]}
+    cells["raytrace"] = {s: [Cell(raytrace_rows(p, s), raytrace_rows(p, s))
+                             for p in range(passes)] for s in scenes}
 
     lines = []
     w = lines.append
@@ -187,14 +213,16 @@ def report(work, out, summary_path):
       f"`cubes:2000` and `three-lights` at a smaller size.")
     w(f"- **Resolution**: {size} on every scene. The built-in scenes are {size} already; the "
       f"example files (1280x720) run from copies whose camera is {size}, the same view.")
-    w(f"- **Timing**: for each scene, {passes} pass{'es' if passes > 1 else ''} of "
-      f"`{meta['bench_command']}` (the scenes in turn, pass after pass): each stage (scan "
-      f"conversion, and per method and light build and shade) runs {meta['warmup']} "
-      f"time{'s' if meta['warmup'] != 1 else ''} untimed, then {meta['repeats']} "
-      f"time{'s' if meta['repeats'] != 1 else ''} timed; `bench` reports the median of the "
-      f"timed runs, and the tables give the median over the passes. *prepare* is timed once "
-      f"per pass. Every method runs "
-      f"at its default settings ([commands.md](commands.md#method-settings)).")
+    w(f"- **Timing**: {passes} pass{'es' if passes > 1 else ''} over the scenes; in each, per "
+      f"scene and per method but `raytrace`, one process "
+      f"`{meta['bench_command']}`, so that `raytrace` is timed just before and just after the "
+      f"method, in the same process. Each stage (scan conversion, and per method and light "
+      f"build and shade) runs {meta['warmup']} time{'s' if meta['warmup'] != 1 else ''} "
+      f"untimed, then {meta['repeats']} time{'s' if meta['repeats'] != 1 else ''} timed; "
+      f"`bench` reports the median of the timed runs. A method's ratio to `raytrace` divides "
+      f"by the mean of the two `raytrace` shades of its process; the tables give the median "
+      f"over the passes. *prepare* is timed once per process. Every method runs at its "
+      f"default settings ([commands.md](commands.md#method-settings)).")
     w(f"- **Mismatch**: `{meta['compare_command']}`, once per scene (the masks do not depend "
       f"on timing); `bench` reports no mismatch.")
     w(f"- The whole script took {meta['elapsed_min']:.1f} min; load average (1 min) "
@@ -205,15 +233,17 @@ def report(work, out, summary_path):
     rt_swing = max((max(v) / min(v) for v in (
         [c.shade for c in cells["raytrace"][s] if c.shade] for s in MAIN_SCENES if s in scenes)
         if v), default=1)
+    swing = f" (`raytrace`'s shade below by up to {rt_swing:.1f}x)" if passes > 1 else ""
     w(f"This machine's {meta['cores']} cores are shared with other work, so absolute times move "
-      f"from pass to pass (`raytrace`'s shade below by up to {rt_swing:.1f}x) and the ms columns "
+      f"from pass to pass{swing} and the ms columns "
       "are only this run's. What to compare is the **ratio to `raytrace`'s shade in the same "
       "process**, which cancels much of the machine's load. Even the ratio moves: below, its "
       f"range over the {passes} pass{'es' if passes > 1 else ''} of this run for the frame "
-      "(build + shade over raytrace's shade, same pass), and `raytrace`'s own shade ms. A "
+      "(build + shade over raytrace's shade, same process), and `raytrace`'s own shade ms. A "
       "difference between two methods smaller than that range is not a measured one. The ratio "
-      "cancels the load only when it stays the same through the process and the method's "
-      "stages use every core as `raytrace`'s shade does. A stage that runs on one core does not "
+      "cancels the load only when the load changes little within the process (timing "
+      "`raytrace` before and after the method halves a steady drift) and the method's stages "
+      "use every core as `raytrace`'s shade does. A stage that runs on one core does not "
       "slow down when another process takes the second core, while `raytrace` does: `svbsp`'s "
       "build (only its shade is parallel) therefore measures up to 2x fewer times `raytrace` on "
       "a busy machine than on a quiet one. The load average above tells which this run was. "
@@ -243,7 +273,7 @@ def report(work, out, summary_path):
     w("| scene | polygons | triangles | lights | load ms | scan ms |")
     w("|---|---:|---:|---:|---:|---:|")
     for s in scenes:
-        rows = [bench[(p, s)][0] for p in range(passes) if bench[(p, s)]]
+        rows = [r for p in range(passes) for m in METHODS[1:] for r in bench[(p, s, m)][:1]]
         load_ms = median([r.get("load_ms") for r in rows])
         scan_ms = median([r.get("scan_ms") for r in rows])
         w(f"| {code(s)} | {fmt_count(info[s]['polygons'])} | {fmt_count(info[s]['triangles'])} | "
@@ -259,15 +289,15 @@ def report(work, out, summary_path):
         w(METHOD_NOTES[m])
         w("")
         if m == "raytrace":
-            raytrace_table(w, scenes, cells, bench, passes)
+            raytrace_table(w, scenes, cells, raytrace_rows, passes)
             summary += summary_lines(m, scenes, cells, compare)
             continue
         columns = "Per scene, summed over its lights: "
         if has_prepare:
             columns += "*prepare* ms (once per scene, not per light), "
         columns += ("*build* and *shade* ms, *frame* = build + shade; *shade ×* and *frame ×*: "
-                    "shade and frame over `raytrace`'s shade in the same pass (below 1: faster "
-                    "than `raytrace`); *memory*: the method's structures after a light's build "
+                    "shade and frame over `raytrace`'s shade in the same process (below 1: "
+                    "faster than `raytrace`); *memory*: the method's structures after a light's build "
                     "(largest over the lights); *interior* and *surface mismatch*: % of interior "
                     "pixels (3x3 neighbourhood uniform in the reference) and of all surface "
                     "pixels whose mask differs from `raytrace`'s.")
@@ -313,12 +343,13 @@ def report(work, out, summary_path):
     print("\n".join(summary))
 
 
-def raytrace_table(w, scenes, cells, bench, passes):
+def raytrace_table(w, scenes, cells, raytrace_rows, passes):
     w("Per scene, summed over its lights: *prepare* ms (the BVH, once per scene), *build* "
       "and *shade* ms, *frame* = build + shade, *memory* (the BVH as Embree reports it, plus 8 "
       "bytes a face), *shadow rays* traced per frame, and *ns per ray*: shade time over rays "
-      "(both cores at work). The other tables divide by this table's shade time of the same "
-      "pass; against itself the ratio is 1 and the mismatch 0.")
+      "(every core at work). Medians over the five processes of each pass (two runs each), "
+      "then over the passes. The other tables divide by `raytrace`'s shade in their own "
+      "process; against itself the ratio is 1 and the mismatch 0.")
     w("")
     head = ["scene", "prepare ms", "build ms", "shade ms", "frame ms", "memory MB",
             "shadow rays", "ns per ray"]
@@ -330,8 +361,8 @@ def raytrace_table(w, scenes, cells, bench, passes):
             failed = sorted({f for c in cs for f in c.failed})
             w(f"| {code(s)} | failed: {'; '.join(failed)} |" + " |" * (len(head) - 2))
             continue
-        rays = median([sum(r.get("counters", {}).get("shadow_rays", 0) for r in bench[(p, s)]
-                           if r.get("method") == "raytrace" and "failed" not in r)
+        rays = median([sum(r.get("counters", {}).get("shadow_rays", 0)
+                           for r in raytrace_rows(p, s) if "failed" not in r)
                        for p in range(passes)])
         shade = median([c.shade for c in cs])
         per_ray = [c.shade * 1e6 / rays for c in cs if c.shade is not None] if rays else []
