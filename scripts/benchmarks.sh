@@ -10,6 +10,7 @@
 #               (under a minute)
 #   --threads   passed to every shadowkit command (default: all cores)
 #   --keep      keep the raw JSON (bench, compare, info per scene) in DIR
+#   --from      measure nothing: write the page again from the raw JSON a --keep run left in DIR
 #   defaults    --repeats 9 --warmup 1 --passes 3 --out docs/benchmarks.md
 #               --summary docs/benchmarks-summary.md (about 15 minutes on 2 cores)
 # Needs build/shadowkit (BUILD_DIR=build bash scripts/build.sh) or SHADOWKIT=path, and python3.
@@ -17,7 +18,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 shadowkit=${SHADOWKIT:-$root/build/shadowkit}
 repeats=9 warmup=1 passes=3 quick=0
-out= summary= keep= threads=()
+out= summary= keep= from= threads=()
 shown=()  # the options that change what is measured, for the page's command line
 while (($#)); do
   case $1 in
@@ -31,7 +32,8 @@ while (($#)); do
     --out) out=$2; shift ;;
     --summary) summary=$2; shift ;;
     --keep) keep=$2; shift ;;
-    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --from) from=$2; shift ;;
+    -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "benchmarks.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
@@ -40,6 +42,10 @@ if ((quick)); then
   out=${out:-/tmp/benchmarks-quick.md} summary=${summary:-/tmp/benchmarks-quick-summary.md}
 else
   out=${out:-$root/docs/benchmarks.md} summary=${summary:-$root/docs/benchmarks-summary.md}
+fi
+if [[ -n $from ]]; then
+  python3 "$root/scripts/benchmarks_report.py" report "$from" "$out" "$summary"
+  exit
 fi
 [[ -x $shadowkit ]] || { echo "benchmarks.sh: no $shadowkit; run scripts/build.sh" >&2; exit 2; }
 

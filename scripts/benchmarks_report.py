@@ -243,11 +243,14 @@ def report(work, out, summary_path):
       "difference between two methods smaller than that range is not a measured one. The ratio "
       "cancels the load only when the load changes little within the process (timing "
       "`raytrace` before and after the method halves a steady drift) and the method's stages "
-      "use every core as `raytrace`'s shade does. A stage that runs on one core does not "
-      "slow down when another process takes the second core, while `raytrace` does: `svbsp`'s "
-      "build (only its shade is parallel) therefore measures up to 2x fewer times `raytrace` on "
-      "a busy machine than on a quiet one. The load average above tells which this run was. "
-      "Mismatch does not depend on timing: it is the same in every run.")
+      "use every core as `raytrace`'s shade does. When another process takes one of the two "
+      "cores, `raytrace`'s shade takes up to twice as long, but a stage that runs on one core "
+      "does not slow down: `svbsp`'s prepare and build (only its shade is parallel) then "
+      "measure up to 2x fewer times `raytrace` than on a quiet machine. `shadowmap`'s build "
+      "(depth maps of 100 MB) keeps about the same time in both cases, so its frame ratio "
+      "moves the same way. Shade ratios move least: typically by under 10% between two runs of "
+      "this script. The load average above tells how busy this run was. Mismatch does not "
+      "depend on timing: it is the same in every run.")
     w("")
     w("| scene | raytrace shade ms | " + " | ".join(f"{m} frame / raytrace" for m in METHODS[1:])
       + " |")
@@ -295,7 +298,8 @@ def report(work, out, summary_path):
         columns = "Per scene, summed over its lights: "
         if has_prepare:
             columns += "*prepare* ms (once per scene, not per light), "
-        columns += ("*build* and *shade* ms, *frame* = build + shade; *shade ×* and *frame ×*: "
+        columns += ("*build* and *shade* ms, *frame* = build + shade (each column is a median "
+                    "over the passes, so they need not add up exactly); *shade ×* and *frame ×*: "
                     "shade and frame over `raytrace`'s shade in the same process (below 1: "
                     "faster than `raytrace`); *memory*: the method's structures after a light's build "
                     "(largest over the lights); *interior* and *surface mismatch*: % of interior "
