@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Measures the angular method the way Thakur, Cheng & Miura report it and writes CSV files
-for docs/benchmarks.md and scripts/plot_svg.py (standard library only).
+for docs/methods/angular.md and scripts/plot_svg.py (standard library only).
 
   python3 scripts/angular_measure.py [--shadowkit build/shadowkit] [--out docs/images]
 
