@@ -18,6 +18,7 @@
 #include "shadowkit/methods/raytrace.h"
 #include "shadowkit/scene/scene_file.h"
 #include "shadowkit/scene/sun_position.h"
+#include "testing/sampled_shadow.h"
 
 namespace shadowkit {
 namespace {
@@ -242,49 +243,11 @@ TEST_F(SunStudy, MergedShardsEqualOneRun) {
   expect_same_files("whole", "merged");
 }
 
-// Fractions against an independent estimate: stratified points on each partly sunlit
-// polygon, each tested with an Embree shadow ray toward the program's own sun.
+// Fractions against an independent estimate (testing/sampled_shadow.h), toward the
+// program's own sun: the sampled points are lifted off the polygon's front, which faces it.
 double sampled_sunlit_fraction(const Scene& scene, const raytrace::ShadowRays& rays,
                                std::uint32_t face, Vec3 toward) {
-  constexpr int kGrid = 200;
-  const Mesh& mesh = scene.objects[scene.object_of_face(face)].mesh;
-  const std::uint32_t f = scene.local_face(face);
-  const Plane& plane = scene.face_plane(face);
-  const Vec3 origin = mesh.vertices[mesh.face_vertex(f, 0)];
-  const Vec3 u = normalize(mesh.vertices[mesh.face_vertex(f, 1)] - origin);
-  const Vec3 v = cross(plane.normal, u);
-  std::vector<std::pair<double, double>> poly;
-  double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
-  for (std::uint32_t k = 0; k < mesh.face_size(f); ++k) {
-    const Vec3 p = mesh.vertices[mesh.face_vertex(f, k)] - origin;
-    poly.push_back({dot(p, u), dot(p, v)});
-    x0 = std::min(x0, poly.back().first), x1 = std::max(x1, poly.back().first);
-    y0 = std::min(y0, poly.back().second), y1 = std::max(y1, poly.back().second);
-  }
-  auto inside = [&](double x, double y) {
-    bool in = false;
-    for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-      const auto [xi, yi] = poly[i];
-      const auto [xj, yj] = poly[j];
-      if ((yi > y) != (yj > y) && x < xi + (y - yi) * (xj - xi) / (yj - yi)) in = !in;
-    }
-    return in;
-  };
-  const Light sun = Light::directional(-toward);
-  const Vec3 lift = plane.normal * (1e-7 * scene.bounds().diagonal());  // the front faces it
-  std::mt19937 rng(face);
-  std::uniform_real_distribution<double> jitter(0, 1);
-  std::size_t in = 0, lit = 0;
-  for (int i = 0; i < kGrid; ++i) {
-    for (int j = 0; j < kGrid; ++j) {
-      const double x = x0 + (x1 - x0) * (i + jitter(rng)) / kGrid;
-      const double y = y0 + (y1 - y0) * (j + jitter(rng)) / kGrid;
-      if (!inside(x, y)) continue;
-      ++in;
-      lit += !rays.occluded(origin + u * x + v * y + lift, sun);
-    }
-  }
-  return double(lit) / double(in);
+  return 1 - testing::sampled_shadowed_fraction(scene, rays, face, Light::directional(-toward));
 }
 
 class SunStudyAgainstShadowRays : public SunStudy,
