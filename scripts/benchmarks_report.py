@@ -32,7 +32,7 @@ METHOD_NOTES = {
               "*shade* counts them per pixel.",
     "svbsp": "Chin & Feiner 1989: *prepare* builds the scene BSP tree (once per scene), *build* "
              "the light's SVBSP tree and lit/shadowed fragments, *shade* scan-converts the "
-             "fragments into the mask ([svbsp.md](svbsp.md)).",
+             "fragments into the mask ([methods/svbsp.md](methods/svbsp.md)).",
     "angular": "Thakur, Cheng & Miura at automatic R (eq. 4): *build* is the angular lookup "
                "table, *shade* its lookups scan line by scan line.",
     "voxel": "Lai & Cheng 2007 at its defaults (M = 256, N = 26, topology test, frame buffer "
@@ -41,7 +41,7 @@ METHOD_NOTES = {
              "scene runs: polygons are voxelized as bilinear patches. Only "
              "`examples/subdivision.json` holds Catmull-Clark surfaces, which `voxel` alone "
              "voxelizes on the limit surface while the others (`raytrace` too) see their "
-             "tessellation ([voxel.md](voxel.md)).",
+             "tessellation ([methods/voxel.md](methods/voxel.md)).",
 }
 
 
