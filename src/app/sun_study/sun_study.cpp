@@ -1,0 +1,147 @@
+// The sun-study command: the contract's time steps, polygons and files (sun-study.md). The
+// sunlit areas are svbsp's; the sun's position is the scene layer's.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "contract_files.h"
+#include "shadowkit/app/commands.h"
+#include "shadowkit/core/error.h"
+#include "shadowkit/methods/svbsp.h"
+#include "shadowkit/scene/scene_file.h"
+#include "shadowkit/scene/sun_position.h"
+#include "study_polygons.h"
+#include "study_steps.h"
+
+namespace shadowkit {
+namespace {
+
+using namespace sun_study;
+using Clock = std::chrono::steady_clock;
+
+// Fractions held in memory at once: steps are computed in blocks of about this many values
+// and written in step order, so memory does not grow with the study's length.
+constexpr std::size_t kBlockValues = std::size_t(1) << 22;
+
+// What the merge checks shards against: every setting that changes the four files.
+nlohmann::json study_settings(const SunStudyOptions& options, const Steps& steps) {
+  return {{"lat", options.latitude_deg},
+          {"lon", options.longitude_deg},
+          {"utc_offset", options.utc_offset_hours},
+          {"north", options.north_deg},
+          {"from", options.from},
+          {"to", options.to},
+          {"step_seconds", steps.step_seconds},
+          {"steps", steps.count}};
+}
+
+void refuse_subdivision(const Scene& scene, const std::string& where) {
+  for (const SceneObject& object : scene.objects) {
+    if (object.subdivision) {
+      throw InputError(
+          where + ": object " + std::to_string(object.input_object) + " (" + object.name + ")",
+          "is a subdivision surface; sun-study v1 covers plain meshes only");
+    }
+  }
+}
+
+}  // namespace
+
+int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
+  // Every option is checked before the scene is read and before DIR is touched.
+  sun::validate(
+      {options.latitude_deg, options.longitude_deg, options.utc_offset_hours, options.north_deg});
+  const Steps steps = study_steps(options);
+  const Shard shard = study_shard(options.shard, steps.count);
+  if (options.out.empty()) throw InputError("--out", "needs a folder");
+  const sun::Site site{options.latitude_deg, options.longitude_deg, options.utc_offset_hours,
+                       options.north_deg};
+
+  const Clock::time_point load_start = Clock::now();
+  const Scene scene = load_scene(options.scene, ctx);  // its lights are ignored
+  refuse_subdivision(scene, options.scene);
+  const Polygons polygons = input_polygons(scene);
+  const Clock::time_point bsp_start = Clock::now();
+  const svbsp::SunlitAreas sunlit(scene);
+  const Clock::time_point steps_start = Clock::now();
+
+  const fs::path dir = options.out;
+  prepare_folder(dir, "--out");
+
+  const std::size_t P = polygons.rows.size();
+  const std::string polygons_text = polygons_csv(polygons);
+  AtomicFile fractions_file(dir / kFractions);
+  AtomicFile times_file(dir / kTimes);
+  times_file.stream() << kTimesHeader;
+  std::vector<double> hours(P, 0.0);
+  const std::size_t block = std::max<std::size_t>(1, kBlockValues / std::max<std::size_t>(P, 1));
+  std::vector<float> values;
+  std::vector<sun::SunAngles> angles;
+  std::string bytes;
+  std::int64_t daytime = 0;
+  for (std::int64_t first = shard.first; first < shard.end; first += std::int64_t(block)) {
+    const auto n = std::size_t(std::min<std::int64_t>(std::int64_t(block), shard.end - first));
+    values.assign(n * P, 0.0f);
+    angles.assign(n, {});
+    // Each step is computed whole by one thread, so its values never depend on threads.
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1), [&](const auto& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        angles[i] = sun::sun_position(site, steps.at(first + std::int64_t(i)));
+        // At or below the horizon every fraction is 0: nothing to compute.
+        if (angles[i].elevation_deg <= 0) continue;
+        const Vec3 toward_sun = sun::toward_sun(angles[i], site.north_deg);
+        sunlit_fractions(polygons, sunlit.lit_areas(toward_sun), toward_sun, values.data() + i * P);
+      }
+    });
+    bytes.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::int64_t k = first + std::int64_t(i);
+      times_file.stream() << times_row(k, steps.at(k), angles[i]);
+      daytime += angles[i].elevation_deg > 0;
+      add_sun_hours(values.data() + i * P, steps.step_hours(), hours);
+      append_float32_le(values.data() + i * P, P, bytes);
+    }
+    fractions_file.stream().write(bytes.data(), std::streamsize(bytes.size()));
+  }
+  const Clock::time_point steps_end = Clock::now();
+
+  std::vector<std::string> keys = row_keys(polygons_text, kPolygons);
+  times_file.commit();
+  write_file(dir / kPolygons, polygons_text);
+  fractions_file.commit();
+  write_file(dir / kSunHours, sun_hours_csv(keys, hours));
+
+  auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
+  const double steps_ms = ms(steps_end - steps_start);
+  const double per_step = daytime > 0 ? steps_ms / double(daytime) : 0.0;
+  nlohmann::json manifest = {{"format", "shadowkit sun-study"},
+                             {"contract", 1},
+                             {"scene", options.scene},
+                             {"study", study_settings(options, steps)},
+                             {"polygons", P},
+                             {"shard", shard.index},
+                             {"shards", shard.count},
+                             {"first_step", shard.first},
+                             {"step_count", shard.end - shard.first},
+                             {"timing",
+                              {{"load_ms", ms(bsp_start - load_start)},
+                               {"scene_bsp_ms", ms(steps_start - bsp_start)},
+                               {"steps_ms", steps_ms},
+                               {"daytime_steps", daytime},
+                               {"ms_per_daytime_step", per_step}}}};
+  write_file(dir / kManifest, manifest.dump(2) + "\n");
+  std::printf(
+      "%lld of %lld steps (%lld with the sun up), %zu polygons: %.1f ms per daytime step "
+      "(scene BSP %.0f ms): %s\n",
+      static_cast<long long>(shard.end - shard.first), static_cast<long long>(steps.count),
+      static_cast<long long>(daytime), P, per_step, ms(steps_start - bsp_start), dir.c_str());
+  return 0;
+}
+
+}  // namespace shadowkit
