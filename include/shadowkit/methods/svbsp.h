@@ -51,6 +51,7 @@ class SunlitAreas {
  private:
   const Scene& scene_;
   std::unique_ptr<const SceneBsp> bsp_;
+  std::vector<char> outward_solid_faces_;  ///< per face: skipped when turned from the light
 };
 
 }  // namespace shadowkit::svbsp

@@ -5,6 +5,7 @@
 #include "shadowkit/methods/svbsp.h"
 #include "shadowkit/scene/generators.h"
 #include "svbsp_test_support.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit::svbsp {
 namespace {
@@ -52,6 +53,42 @@ TEST(SunlitAreas, SquareAboveGroundShadowsExactlyItsArea) {
     square = std::min(square, a);
   }
   EXPECT_NEAR(lit_total, area_total - square, 1e-9 * area_total);
+}
+
+PolygonSoup turned_inside_out(PolygonSoup soup) {
+  for (std::size_t f = 0; f + 1 < soup.face_start.size(); ++f) {
+    std::reverse(soup.indices.begin() + soup.face_start[f],
+                 soup.indices.begin() + soup.face_start[f + 1]);
+  }
+  return soup;
+}
+
+// Faces of a solid turned from the light are skipped: the areas stay those of every face
+// filtered, for a box, a box turned inside out (whose faces toward the light are the ones
+// turned from it by their normals) and a box with a cavity lined by inward faces.
+TEST(SunlitAreas, SkippingTheFarSidesOfSolidsChangesNoArea) {
+  using namespace shadowkit::testing;
+  PolygonSoup hollow = box({3, 1, -1}, {6, 4, 2});
+  const PolygonSoup lining = turned_inside_out(box({4, 2, 0}, {5, 3, 1}));
+  hollow.append(lining);
+  const Scene scene =
+      make_scene(camera({0, 10, 20}, {0, 0, 0}, 64, 48), {},
+                 {horizontal_quad(-20, 20, -20, 20, 0), box({-4, 1, -1}, {-2, 3, 1}),
+                  turned_inside_out(box({-1, 1, -1}, {1, 3, 1})), hollow});
+  const SunlitAreas sunlit(scene);
+  const SceneBsp bsp = SceneBsp::build(scene);
+  const double scale2 = scene.frame.scale * scene.frame.scale;
+  for (const Vec3 toward : {Vec3{0.3, 1, 0.2}, Vec3{-0.7, 0.4, 0.1}, Vec3{0.5, 0.3, -1}}) {
+    const Vec3 t = normalize(toward);
+    const std::vector<double> lit = sunlit.lit_areas(t);
+    const auto expected =
+        face_areas(generate_shadows(bsp, scene, Light::directional(-t)).fragments);
+    for (std::uint32_t face = 0; face < scene.face_count(); ++face) {
+      const auto it = expected.find(face);
+      const double want = it == expected.end() ? 0.0 : it->second.lit * scale2;
+      EXPECT_NEAR(lit[face], want, 1e-12 * face_area(scene, face) * scale2) << face;
+    }
+  }
 }
 
 }  // namespace
