@@ -18,8 +18,8 @@ Vec3 crossing(Vec3 a, double da, Vec3 b, double db) {
 
 // Sutherland-Hodgman for one side s (+1 or -1), keeping the per-edge flags: each emitted
 // vertex carries the flag of the edge that leaves it.
-void clip_side(const ConvexPolygon& p, const std::vector<double>& d, const std::vector<int>& side,
-               int s, bool mark, ConvexPolygon& out) {
+void clip_side(const ConvexPolygon& p, std::span<const double> d, std::span<const int> side, int s,
+               bool mark, ConvexPolygon& out) {
   out.vertices.clear();
   out.edge_in_tree.clear();
   out.face = p.face;
@@ -44,12 +44,19 @@ void clip_side(const ConvexPolygon& p, const std::vector<double>& d, const std::
 
 }  // namespace
 
-ConvexPolygon make_polygon(std::vector<Vec3> vertices, std::uint32_t face) {
+ConvexPolygon make_polygon(std::span<const Vec3> vertices, std::uint32_t face) {
   ConvexPolygon p;
   p.edge_in_tree.assign(vertices.size(), 0);
-  p.vertices = std::move(vertices);
+  p.vertices.assign(vertices.begin(), vertices.end());
   p.face = face;
   return p;
+}
+
+std::size_t heap_bytes(const ConvexPolygon& p) {
+  const auto spilled = [](const auto& v) {
+    return v.capacity() > ConvexPolygon::kInlineCorners ? v.capacity() * sizeof(v[0]) : 0;
+  };
+  return spilled(p.vertices) + spilled(p.edge_in_tree);
 }
 
 double area(const ConvexPolygon& p) {
@@ -74,8 +81,8 @@ PlaneSides classify(const ConvexPolygon& p, const Plane& plane, double eps) {
 void split_polygon(const ConvexPolygon& p, const Plane& plane, double eps, bool mark_edges,
                    ConvexPolygon& negative, ConvexPolygon& positive) {
   const std::size_t n = p.vertices.size();
-  std::vector<double> d(n);
-  std::vector<int> side(n);
+  absl::InlinedVector<double, 8> d(n);
+  absl::InlinedVector<int, 8> side(n);
   bool any_negative = false, any_positive = false, any_on = false;
   for (std::size_t i = 0; i < n; ++i) {
     d[i] = plane.distance(p.vertices[i]);

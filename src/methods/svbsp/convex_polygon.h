@@ -1,8 +1,10 @@
 #pragma once
 // Convex polygons in world space and their splitting by a plane: the one clipping
 // operation of the SVBSP algorithm (§2: "clips a polygon against a plane").
+#include <absl/container/inlined_vector.h>
+
 #include <cstdint>
-#include <vector>
+#include <span>
 
 #include "shadowkit/core/vec.h"
 
@@ -11,16 +13,26 @@ namespace shadowkit::svbsp {
 /// \brief A convex piece of a scene face. Its plane is always the original face's plane
 /// (§7): it is never recomputed from the piece's vertices.
 struct ConvexPolygon {
-  std::vector<Vec3> vertices;
+  /// Corners held inline up to a hexagon's, so that splitting a polygon in the trees'
+  /// inner loops allocates nothing: a quadrilateral cut by two planes has six.
+  static constexpr std::size_t kInlineCorners = 6;
+  using Corners = absl::InlinedVector<Vec3, kInlineCorners>;
+  Corners vertices;
   /// Per edge (vertices[i] -> vertices[i + 1]): the edge lies in a shadow plane that already
   /// bounds the SVBSP cell the polygon has reached, so its own shadow plane would add
   /// nothing (§6: fewer planes, a smaller tree).
-  std::vector<std::uint8_t> edge_in_tree;
+  absl::InlinedVector<std::uint8_t, kInlineCorners> edge_in_tree;
   std::uint32_t face = 0;  ///< global id of the original face
 };
 
 /// A polygon with the given corners and no edge in the tree.
-ConvexPolygon make_polygon(std::vector<Vec3> vertices, std::uint32_t face);
+ConvexPolygon make_polygon(std::span<const Vec3> vertices, std::uint32_t face);
+inline ConvexPolygon make_polygon(std::initializer_list<Vec3> vertices, std::uint32_t face) {
+  return make_polygon(std::span<const Vec3>(vertices.begin(), vertices.size()), face);
+}
+
+/// The bytes \p p takes beyond sizeof(ConvexPolygon): its corners past the inline ones.
+std::size_t heap_bytes(const ConvexPolygon& p);
 
 /// Area of a convex (or any simple planar) polygon.
 double area(const ConvexPolygon& p);

@@ -1,5 +1,6 @@
 #include "convex_polygon.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 namespace shadowkit::svbsp {
@@ -50,7 +51,7 @@ TEST(ConvexPolygon, AnEdgeLyingInThePlaneIsFlaggedWithoutASplit) {
   split_polygon(unit_square(), x0, 1e-12, true, neg, pos);
   EXPECT_TRUE(neg.vertices.empty());
   ASSERT_EQ(pos.vertices.size(), 4u);
-  EXPECT_EQ(pos.edge_in_tree, (std::vector<std::uint8_t>{0, 0, 0, 1}));
+  EXPECT_THAT(pos.edge_in_tree, ::testing::ElementsAre(0, 0, 0, 1));
 }
 
 TEST(ConvexPolygon, NeighboursAreCutAtBitIdenticalPoints) {

@@ -93,9 +93,9 @@ std::vector<ConvexPolygon> convex_faces(const Scene& scene) {
       const std::span<const std::uint32_t> loop(&mesh.face_vertices[mesh.face_start[f]],
                                                 mesh.face_size(f));
       if (is_convex(mesh, f)) {
-        std::vector<Vec3> v;
+        ConvexPolygon::Corners v;
         for (std::uint32_t i : loop) v.push_back(mesh.vertices[i]);
-        out.push_back(make_polygon(std::move(v), face));
+        out.push_back(make_polygon(v, face));
         continue;
       }
       std::vector<std::array<std::uint32_t, 3>> triangles;
@@ -198,7 +198,7 @@ void SceneBsp::visit(std::int32_t node, const Light& light,
 std::size_t SceneBsp::memory_bytes() const {
   std::size_t bytes = nodes_.capacity() * sizeof(Node);
   for (const ConvexPolygon& p : pieces_) {
-    bytes += sizeof(p) + p.vertices.capacity() * sizeof(Vec3) + p.edge_in_tree.capacity();
+    bytes += sizeof(p) + heap_bytes(p);
   }
   return bytes;
 }

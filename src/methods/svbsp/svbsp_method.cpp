@@ -45,8 +45,7 @@ void SvbspMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces
 std::size_t SvbspMethod::memory_bytes() const {
   std::size_t bytes = (bsp_ ? bsp_->memory_bytes() : 0) + result_.svbsp_bytes;
   for (const svbsp::Fragment& f : result_.fragments) {
-    bytes += sizeof(f) + f.polygon.vertices.capacity() * sizeof(Vec3) +
-             f.polygon.edge_in_tree.capacity();
+    bytes += sizeof(f) + heap_bytes(f.polygon);
   }
   return bytes;
 }
