@@ -125,6 +125,9 @@ int main(int argc, char** argv) {
                             "degrees north turns clockwise from -Z, seen from above (default 0)");
   sun_study_cmd->add_option("--shard", sun_study.shard,
                             "I/N: only the I-th of N contiguous blocks of steps");
+  sun_study_cmd->add_option("--heat-map-width", sun_study.heat_map_width,
+                            "pixels across the heat map from the scene's camera (default 960; "
+                            "0: none)");
 
   SunStudyMergeOptions sun_study_merge;
   auto* sun_study_merge_cmd = app.add_subcommand(

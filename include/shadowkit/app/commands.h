@@ -63,6 +63,7 @@ struct SunStudyOptions : CommandOptions {
   double step_minutes = 0;      ///< `--step`
   std::string out;              ///< `--out`: the folder of the four files
   std::string shard;            ///< `--shard I/N`; empty: every step
+  int heat_map_width = 960;     ///< `--heat-map-width`, the camera's aspect; 0: no heat map
 };
 
 /// \brief Joins the folders of a sharded sun study into the files one unsharded run writes.

@@ -28,6 +28,7 @@ FragmentsWritten write_fragments(const Scene& scene, const std::filesystem::path
                                  const std::filesystem::path& json);
 
 class SceneBsp;
+struct Fragment;
 
 /// \brief The lit area of every scene face for one directional light after another, as the
 /// sun study needs it: the scene BSP tree is built once (Chin & Feiner §3: its front-to-back
@@ -48,7 +49,16 @@ class SunlitAreas {
   /// BSP tree read-only.
   std::vector<double> lit_areas(Vec3 toward_light) const;
 
+  /// The same, and in \p mask the light's shadow mask for \p surfaces (the scene camera's
+  /// visible surfaces, at any size): the svbsp method's camera pass over this light's lit
+  /// fragments. A pixel is lit where the sun reaches the visible point on the side the
+  /// camera sees.
+  std::vector<double> lit_areas(Vec3 toward_light, const VisibleSurfaceBuffer& surfaces,
+                                ShadowMask& mask) const;
+
  private:
+  std::vector<double> filter(Vec3 toward_light, std::vector<Fragment>* lit) const;
+
   const Scene& scene_;
   std::unique_ptr<const SceneBsp> bsp_;
   std::vector<char> outward_solid_faces_;  ///< per face: skipped when turned from the light

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "shadowkit/scene/sun_position.h"
 #include "study_polygons.h"
 #include "study_steps.h"
+#include "sunlit_steps.h"
 
 namespace shadowkit {
 namespace {
@@ -28,6 +30,8 @@ using Clock = std::chrono::steady_clock;
 // Fractions held in memory at once: steps are computed in blocks of about this many values
 // and written in step order, so memory does not grow with the study's length.
 constexpr std::size_t kBlockValues = std::size_t(1) << 22;
+// The widest heat map: 8K UHD.
+constexpr int kMaxHeatMapWidth = 7680;
 
 // What the merge checks shards against: every setting that changes the four files.
 nlohmann::json study_settings(const SunStudyOptions& options, const Steps& steps) {
@@ -38,7 +42,27 @@ nlohmann::json study_settings(const SunStudyOptions& options, const Steps& steps
           {"from", options.from},
           {"to", options.to},
           {"step_seconds", steps.step_seconds},
+          {"heat_map_width", options.heat_map_width},
           {"steps", steps.count}};
+}
+
+// The scene as the merge can load it again from another folder: a file by its absolute
+// path, a built-in scene by its name.
+std::string scene_reference(const std::string& scene) {
+  std::error_code ec;
+  return fs::is_regular_file(scene, ec) ? fs::absolute(scene).string() : scene;
+}
+
+nlohmann::json heat_map_entry(const Camera& camera, bool counted) {
+  if (!counted) return nullptr;
+  return {{"width", camera.width}, {"height", camera.height}, {"counts", kSunStepCounts}};
+}
+
+// The heat map's camera: the scene's, \p width pixels across, its aspect kept.
+void heat_map_size(int width, Camera& camera) {
+  const double aspect = double(camera.height) / camera.width;
+  camera.width = width;
+  camera.height = std::max(1, int(std::lround(width * aspect)));
 }
 
 void refuse_subdivision(const Scene& scene, const std::string& where) {
@@ -58,21 +82,28 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
   sun::validate(
       {options.latitude_deg, options.longitude_deg, options.utc_offset_hours, options.north_deg});
   const Steps steps = study_steps(options);
+  if (options.heat_map_width < 0 || options.heat_map_width > kMaxHeatMapWidth) {
+    throw InputError("--heat-map-width",
+                     "must be 0 (none) to " + std::to_string(kMaxHeatMapWidth) + " pixels");
+  }
   const Shard shard = study_shard(options.shard, steps.count);
   if (options.out.empty()) throw InputError("--out", "needs a folder");
   const sun::Site site{options.latitude_deg, options.longitude_deg, options.utc_offset_hours,
                        options.north_deg};
 
   const Clock::time_point load_start = Clock::now();
-  const Scene scene = load_scene(options.scene, ctx);  // its lights are ignored
+  Scene scene = load_scene(options.scene, ctx);  // its lights are ignored
+  if (options.heat_map_width > 0) heat_map_size(options.heat_map_width, scene.camera);
   refuse_subdivision(scene, options.scene);
   const Polygons polygons = input_polygons(scene);
   const Clock::time_point bsp_start = Clock::now();
   const svbsp::SunlitAreas sunlit(scene);
+  std::optional<SunlitStepCounts> heat_map;
+  if (options.heat_map_width > 0) heat_map.emplace(scene, ctx);
   const Clock::time_point steps_start = Clock::now();
 
   const fs::path dir = options.out;
-  prepare_folder(dir, "--out");
+  prepare_folder(dir, "--out", {kSunStepCounts});
 
   const std::size_t P = polygons.rows.size();
   const std::string polygons_text = polygons_csv(polygons);
@@ -96,7 +127,9 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
         // At or below the horizon every fraction is 0: nothing to compute.
         if (angles[i].elevation_deg <= 0) continue;
         const Vec3 toward_sun = sun::toward_sun(angles[i], site.north_deg);
-        sunlit_fractions(polygons, sunlit.lit_areas(toward_sun), toward_sun, values.data() + i * P);
+        const std::vector<double> lit =
+            heat_map ? heat_map->lit_areas(sunlit, toward_sun) : sunlit.lit_areas(toward_sun);
+        sunlit_fractions(polygons, lit, toward_sun, values.data() + i * P);
       }
     });
     bytes.clear();
@@ -116,19 +149,21 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
   write_file(dir / kPolygons, polygons_text);
   fractions_file.commit();
   write_file(dir / kSunHours, sun_hours_csv(keys, hours));
+  if (heat_map) write_counts(dir / kSunStepCounts, heat_map->counts());
 
   auto ms = [](Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); };
   const double steps_ms = ms(steps_end - steps_start);
   const double per_step = daytime > 0 ? steps_ms / double(daytime) : 0.0;
   nlohmann::json manifest = {{"format", "shadowkit sun-study"},
                              {"contract", 1},
-                             {"scene", options.scene},
+                             {"scene", scene_reference(options.scene)},
                              {"study", study_settings(options, steps)},
                              {"polygons", P},
                              {"shard", shard.index},
                              {"shards", shard.count},
                              {"first_step", shard.first},
                              {"step_count", shard.end - shard.first},
+                             {"heat_map", heat_map_entry(scene.camera, heat_map.has_value())},
                              {"timing",
                               {{"load_ms", ms(bsp_start - load_start)},
                                {"scene_bsp_ms", ms(steps_start - bsp_start)},

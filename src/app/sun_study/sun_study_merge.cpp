@@ -10,19 +10,34 @@
 #include "contract_files.h"
 #include "shadowkit/app/commands.h"
 #include "shadowkit/core/error.h"
+#include "sunlit_steps.h"
 
 namespace shadowkit {
 namespace {
 
 using namespace sun_study;
 
+struct Part {
+  fs::path dir;
+  nlohmann::json manifest;
+};
+
+// The heat map's counts of every shard, added (the shards share the camera: their settings
+// are equal).
+void merge_counts(const std::vector<Part>& parts, const fs::path& dir) {
+  const nlohmann::json& heat_map = parts.front().manifest["heat_map"];
+  if (heat_map.is_null()) return;
+  const auto pixels = heat_map["width"].get<std::size_t>() * heat_map["height"].get<std::size_t>();
+  std::vector<std::uint32_t> sum = read_counts(parts.front().dir / kSunStepCounts, pixels);
+  for (std::size_t i = 1; i < parts.size(); ++i) {
+    add_counts(read_counts(parts[i].dir / kSunStepCounts, pixels), sum);
+  }
+  write_counts(dir / kSunStepCounts, sum);
+}
+
 int merge_shards(const SunStudyMergeOptions& options) {
   if (options.shards.empty()) throw InputError("sun-study-merge", "give the shards' folders");
   if (options.out.empty()) throw InputError("--out", "needs a folder");
-  struct Part {
-    fs::path dir;
-    nlohmann::json manifest;
-  };
   std::vector<Part> parts;
   for (const std::string& d : options.shards) {
     const fs::path path = fs::path(d) / kManifest;
@@ -83,7 +98,7 @@ int merge_shards(const SunStudyMergeOptions& options) {
       throw InputError("--out " + options.out, "is one of the shards' folders");
     }
   }
-  prepare_folder(dir, "--out");
+  prepare_folder(dir, "--out", {kSunStepCounts});
   const double step_hours = double(first["study"]["step_seconds"].get<std::int64_t>()) / 3600.0;
   AtomicFile times_file(dir / kTimes);
   times_file.stream() << kTimesHeader;
@@ -120,6 +135,7 @@ int merge_shards(const SunStudyMergeOptions& options) {
   write_file(dir / kPolygons, polygons_text);
   fractions_file.commit();
   write_file(dir / kSunHours, sun_hours_csv(keys, hours));
+  merge_counts(parts, dir);
   nlohmann::json manifest = first;
   manifest["shard"] = 0;
   manifest["shards"] = 1;

@@ -25,7 +25,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* const kFiles[] = {"times.csv", "polygons.csv", "sunlit_fraction.f32", "sun_hours.csv"};
+// The contract's four files, and the heat map's counts.
+const char* const kFiles[] = {"times.csv", "polygons.csv", "sunlit_fraction.f32", "sun_hours.csv",
+                              "sun_steps.u32"};
 
 using Table = std::vector<std::vector<std::string>>;
 
@@ -215,6 +217,20 @@ TEST_F(SunStudy, UnobstructedRoofSunHoursAreTheDaylightSteps) {
   }
   EXPECT_GT(up, 50);  // about 15 hours of day at 40 degrees north in June
   EXPECT_DOUBLE_EQ(std::stod(read_csv(dir_ / "out" / "sun_hours.csv")[1][3]), expected);
+  // The heat map's counts: every pixel that sees the roof (from above) saw the sun each step
+  // it was up; the others see nothing.
+  const std::string counts = slurp(dir_ / "out" / "sun_steps.u32");
+  const int width = 960, height = 540;  // the default scene camera's 16:9 at 960 across
+  ASSERT_EQ(counts.size(), std::size_t(width) * height * 4);
+  std::size_t roof = 0;
+  for (std::size_t i = 0; i < counts.size() / 4; ++i) {
+    std::uint32_t c = 0;
+    std::memcpy(&c, &counts[4 * i], 4);  // little-endian, as this machine
+    if (c == 0xffffffffu) continue;
+    ASSERT_EQ(c, std::uint32_t(up)) << "pixel " << i;
+    ++roof;
+  }
+  EXPECT_GT(roof, 1000u);
 }
 
 TEST_F(SunStudy, FilesDoNotDependOnThreads) {

@@ -3,6 +3,7 @@
 #include <numeric>
 #include <span>
 
+#include "fragment_raster.h"
 #include "scene_bsp.h"
 #include "shadow_generator.h"
 #include "shadowkit/methods/svbsp.h"
@@ -56,6 +57,18 @@ SunlitAreas::SunlitAreas(const Scene& scene)
 SunlitAreas::~SunlitAreas() = default;
 
 std::vector<double> SunlitAreas::lit_areas(Vec3 toward_light) const {
+  return filter(toward_light, nullptr);
+}
+
+std::vector<double> SunlitAreas::lit_areas(Vec3 toward_light, const VisibleSurfaceBuffer& surfaces,
+                                           ShadowMask& mask) const {
+  std::vector<Fragment> lit_fragments;
+  std::vector<double> areas = filter(toward_light, &lit_fragments);
+  shade_fragments(scene_, Light::directional(-toward_light), lit_fragments, surfaces, false, mask);
+  return areas;
+}
+
+std::vector<double> SunlitAreas::filter(Vec3 toward_light, std::vector<Fragment>* lit_out) const {
   const Light light = Light::directional(-toward_light);
   std::vector<double> lit(scene_.face_count(), 0.0);
   ShadowGenerator generator(scene_, light);
@@ -80,8 +93,10 @@ std::vector<double> SunlitAreas::lit_areas(Vec3 toward_light) const {
                    [&](const ConvexPolygon& p) { return !turned_away(p); });
       generator.process(kept, fragments);
     }
-    for (const Fragment& f : fragments) {
-      if (f.lit) lit[f.polygon.face] += area(f.polygon);
+    for (Fragment& f : fragments) {
+      if (!f.lit) continue;
+      lit[f.polygon.face] += area(f.polygon);
+      if (lit_out) lit_out->push_back(std::move(f));
     }
   });
   // The working frame is the world scaled by frame.scale (a power of two: exact).
