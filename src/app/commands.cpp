@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
-#include "progress.h"
+#include "shadowkit/app/progress.h"
 #include "shadowkit/app/pipeline.h"
 #include "shadowkit/app/report.h"
 #include "shadowkit/app/shading.h"

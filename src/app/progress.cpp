@@ -1,4 +1,4 @@
-#include "progress.h"
+#include "shadowkit/app/progress.h"
 
 #include <unistd.h>
 

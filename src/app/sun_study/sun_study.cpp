@@ -13,6 +13,7 @@
 
 #include "contract_files.h"
 #include "shadowkit/app/commands.h"
+#include "shadowkit/app/progress.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/svbsp.h"
 #include "shadowkit/scene/scene_file.h"
@@ -30,6 +31,8 @@ using Clock = std::chrono::steady_clock;
 // Fractions held in memory at once: steps are computed in blocks of about this many values
 // and written in step order, so memory does not grow with the study's length.
 constexpr std::size_t kBlockValues = std::size_t(1) << 22;
+// Steps computed between two progress lines, at most.
+constexpr std::size_t kMaxBlockSteps = 64;
 // The widest heat map: 8K UHD.
 constexpr int kMaxHeatMapWidth = 7680;
 
@@ -44,6 +47,19 @@ nlohmann::json study_settings(const SunStudyOptions& options, const Steps& steps
           {"step_seconds", steps.step_seconds},
           {"heat_map_width", options.heat_map_width},
           {"steps", steps.count}};
+}
+
+// "sun study: 1200 of 8760 steps, 41 steps/s, 3 min left".
+std::string progress_line(std::int64_t done, std::int64_t total, Clock::duration elapsed) {
+  const double seconds = std::chrono::duration<double>(elapsed).count();
+  const double rate = seconds > 0 ? double(done) / seconds : 0;
+  const double left = rate > 0 ? double(total - done) / rate : 0;
+  char line[160];
+  std::snprintf(line, sizeof line, "sun study: %lld of %lld steps, %.0f steps/s, %s left",
+                static_cast<long long>(done), static_cast<long long>(total), rate,
+                left >= 90 ? (std::to_string(std::lround(left / 60)) + " min").c_str()
+                           : (std::to_string(std::lround(left)) + " s").c_str());
+  return line;
 }
 
 // The scene as the merge can load it again from another folder: a file by its absolute
@@ -111,7 +127,9 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
   AtomicFile times_file(dir / kTimes);
   times_file.stream() << kTimesHeader;
   std::vector<double> hours(P, 0.0);
-  const std::size_t block = std::max<std::size_t>(1, kBlockValues / std::max<std::size_t>(P, 1));
+  const std::size_t block =
+      std::clamp<std::size_t>(kBlockValues / std::max<std::size_t>(P, 1), 1, kMaxBlockSteps);
+  Progress progress;
   std::vector<float> values;
   std::vector<sun::SunAngles> angles;
   std::string bytes;
@@ -141,6 +159,8 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
       append_float32_le(values.data() + i * P, P, bytes);
     }
     fractions_file.stream().write(bytes.data(), std::streamsize(bytes.size()));
+    progress.step(progress_line(first + std::int64_t(n) - shard.first, shard.end - shard.first,
+                                Clock::now() - steps_start));
   }
   const Clock::time_point steps_end = Clock::now();
 
