@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
-#include "shadowkit/app/progress.h"
 #include "shadowkit/app/pipeline.h"
+#include "shadowkit/app/progress.h"
 #include "shadowkit/app/report.h"
 #include "shadowkit/app/shading.h"
 #include "shadowkit/core/error.h"
