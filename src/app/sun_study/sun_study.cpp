@@ -98,6 +98,11 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
   sun::validate(
       {options.latitude_deg, options.longitude_deg, options.utc_offset_hours, options.north_deg});
   const Steps steps = study_steps(options);
+  if (!options.settings.empty()) {
+    throw InputError("--set",
+                     "sun-study takes no method settings: its fractions are svbsp's exact "
+                     "fragments, whatever the settings");
+  }
   if (options.heat_map_width < 0 || options.heat_map_width > kMaxHeatMapWidth) {
     throw InputError("--heat-map-width",
                      "must be 0 (none) to " + std::to_string(kMaxHeatMapWidth) + " pixels");
