@@ -89,9 +89,6 @@ TEST_F(MeshIoErrorTest, ObjZeroAndMalformedIndices) {
                 HasSubstr(at("corner.obj", 5) + "face vertex '" + corner + "' is malformed"))
         << corner;
   }
-  EXPECT_EQ(error("empty-face.obj", "v 0 0 0\nf\n"), at("empty-face.obj") + "holds no faces");
-  EXPECT_THAT(warnings_, ElementsAre(at("empty-face.obj") +
-                                     "skipped 1 statement(s) without vertex indices at line 2"));
 }
 
 TEST_F(MeshIoErrorTest, NonFiniteCoordinatesInTextFormats) {

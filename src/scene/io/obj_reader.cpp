@@ -110,6 +110,7 @@ MeshFile read_obj(std::string_view data, const std::string& path, const Context&
   ObjFaces faces;
   SkippedItems skipped;
   std::vector<std::int64_t> corners;
+  std::size_t empty_faces = 0;
   while (in.next_line()) {
     const std::string_view keyword = in.token();
     if (keyword.empty() || one_of(keyword, kIgnored)) continue;
@@ -129,9 +130,12 @@ MeshFile read_obj(std::string_view data, const std::string& path, const Context&
         corners.push_back(corner_index(in, corner));
       }
     }
-    if (corners.empty() && (polygon || keyword == "l" || keyword == "p")) {
+    if (corners.empty() && (keyword == "l" || keyword == "p")) {
       skipped.add("statement(s) without vertex indices", in.line_number());
     } else if (polygon) {
+      // A face line keeps its place in the file's numbering even without corners (the sun
+      // study's polygons are the faces in file order): a degenerate face, dropped later.
+      empty_faces += corners.empty();
       faces.add(in, corners, soup.positions.size(), soup);
     } else if (keyword == "l") {
       // Counted as importers count them: one primitive per segment.
@@ -147,7 +151,7 @@ MeshFile read_obj(std::string_view data, const std::string& path, const Context&
     }
   }
   faces.check(path, soup.positions.size());
-  file.stored_polygons = soup.face_count();
+  file.stored_polygons = soup.face_count() - empty_faces;  // as importers count them
   skipped.warn(path, ctx);
   return file;
 }
