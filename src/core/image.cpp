@@ -34,6 +34,22 @@ void write_png_rows(const std::filesystem::path& path, int width, int height, pn
   }
 }
 
+// Reads a PNG converted to \p format, whose pixel is a T.
+template <class T>
+Image<T> read_png(const std::filesystem::path& path, png_uint_32 format) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, path.c_str())) {
+    throw InputError(path.string(), std::string("cannot read PNG: ") + png.message);
+  }
+  png.format = format;
+  Image<T> image(int(png.width), int(png.height));
+  if (!png_image_finish_read(&png, nullptr, image.pixels.data(), 0, nullptr)) {
+    throw InputError(path.string(), std::string("cannot read PNG: ") + png.message);
+  }
+  return image;
+}
+
 }  // namespace
 
 void write_png(const std::filesystem::path& path, const Image<std::uint8_t>& image) {
@@ -45,17 +61,30 @@ void write_png(const std::filesystem::path& path, const Image<Rgb8>& image) {
 }
 
 Image<std::uint8_t> read_png_gray(const std::filesystem::path& path) {
+  return read_png<std::uint8_t>(path, PNG_FORMAT_GRAY);
+}
+
+Image<Rgb8> read_png_rgb(const std::filesystem::path& path) {
+  return read_png<Rgb8>(path, PNG_FORMAT_RGB);
+}
+
+std::string encode_png(const Image<Rgb8>& image) {
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&png, path.c_str())) {
-    throw InputError(path.string(), std::string("cannot read PNG: ") + png.message);
+  png.width = png_uint_32(image.width);
+  png.height = png_uint_32(image.height);
+  png.format = PNG_FORMAT_RGB;
+  // The first call measures, the second writes.
+  png_alloc_size_t size = 0;
+  if (!png_image_write_to_memory(&png, nullptr, &size, 0, image.pixels.data(), 0, nullptr)) {
+    throw InputError("PNG", std::string("cannot encode: ") + png.message);
   }
-  png.format = PNG_FORMAT_GRAY;
-  Image<std::uint8_t> image(int(png.width), int(png.height));
-  if (!png_image_finish_read(&png, nullptr, image.pixels.data(), 0, nullptr)) {
-    throw InputError(path.string(), std::string("cannot read PNG: ") + png.message);
+  std::string bytes(size, '\0');
+  if (!png_image_write_to_memory(&png, bytes.data(), &size, 0, image.pixels.data(), 0, nullptr)) {
+    throw InputError("PNG", std::string("cannot encode: ") + png.message);
   }
-  return image;
+  bytes.resize(size);
+  return bytes;
 }
 
 }  // namespace shadowkit

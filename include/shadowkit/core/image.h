@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace shadowkit {
@@ -33,5 +34,10 @@ void write_png(const std::filesystem::path& path, const Image<std::uint8_t>& ima
 void write_png(const std::filesystem::path& path, const Image<Rgb8>& image);
 /// Reads an 8-bit grayscale PNG (converting colour); throws InputError if it cannot.
 Image<std::uint8_t> read_png_gray(const std::filesystem::path& path);
+/// Reads an 8-bit RGB PNG (converting grey); throws InputError if it cannot.
+Image<Rgb8> read_png_rgb(const std::filesystem::path& path);
+/// The bytes of an 8-bit RGB PNG of \p image, for a caller that writes them whole (under a
+/// temporary name, say, renamed into place when complete).
+std::string encode_png(const Image<Rgb8>& image);
 
 }  // namespace shadowkit
