@@ -128,6 +128,11 @@ int main(int argc, char** argv) {
   sun_study_cmd->add_option("--heat-map-width", sun_study.heat_map_width,
                             "pixels across the heat map from the scene's camera (default 960; "
                             "0: none)");
+  sun_study_cmd->add_option("--shading-groups", sun_study.shading_groups,
+                            "CSV surface,object,faces: EnergyPlus surfaces made of polygons");
+  sun_study_cmd->add_option(
+      "--energyplus-timesteps", sun_study.energyplus_timesteps,
+      "rows per hour of the EnergyPlus schedule: the IDF's Timestep (default 1)");
 
   SunStudyMergeOptions sun_study_merge;
   auto* sun_study_merge_cmd = app.add_subcommand(

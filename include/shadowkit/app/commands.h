@@ -64,6 +64,10 @@ struct SunStudyOptions : CommandOptions {
   std::string out;              ///< `--out`: the folder of the four files
   std::string shard;            ///< `--shard I/N`; empty: every step
   int heat_map_width = 960;     ///< `--heat-map-width`, the camera's aspect; 0: no heat map
+  /// `--shading-groups FILE.csv`: EnergyPlus surfaces made of polygons; empty: none
+  std::string shading_groups;
+  /// `--energyplus-timesteps N`: rows per hour of the EnergyPlus schedule
+  int energyplus_timesteps = 1;
 };
 
 /// \brief Joins the folders of a sharded sun study into the files one unsharded run writes.
