@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "contract_files.h"
+#include "finished_study.h"
 #include "shadowkit/app/commands.h"
 #include "shadowkit/app/progress.h"
 #include "shadowkit/core/error.h"
@@ -117,6 +118,7 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
   if (options.heat_map_width > 0) heat_map_size(options.heat_map_width, scene.camera);
   refuse_subdivision(scene, options.scene);
   const Polygons polygons = input_polygons(scene);
+  check_report_options(options, polygons);
   const Clock::time_point bsp_start = Clock::now();
   const svbsp::SunlitAreas sunlit(scene);
   std::optional<SunlitStepCounts> heat_map;
@@ -124,7 +126,7 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
   const Clock::time_point steps_start = Clock::now();
 
   const fs::path dir = options.out;
-  prepare_folder(dir, "--out", {kSunStepCounts});
+  prepare_folder(dir, "--out", made_files());
 
   const std::size_t P = polygons.rows.size();
   const std::string polygons_text = polygons_csv(polygons);
@@ -189,6 +191,7 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
                              {"first_step", shard.first},
                              {"step_count", shard.end - shard.first},
                              {"heat_map", heat_map_entry(scene.camera, heat_map.has_value())},
+                             {"reports", report_settings(options)},
                              {"timing",
                               {{"load_ms", ms(bsp_start - load_start)},
                                {"scene_bsp_ms", ms(steps_start - bsp_start)},
@@ -196,6 +199,8 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
                                {"daytime_steps", daytime},
                                {"ms_per_daytime_step", per_step}}}};
   write_file(dir / kManifest, manifest.dump(2) + "\n");
+  // A shard's reports would cover its steps only: the merge writes the study's.
+  if (shard.count == 1) write_finished_reports(scene, polygons, dir, manifest);
   std::printf(
       "%lld of %lld steps (%lld with the sun up), %zu polygons: %.1f ms per daytime step "
       "(scene BSP %.0f ms): %s\n",

@@ -8,8 +8,11 @@
 #include <vector>
 
 #include "contract_files.h"
+#include "finished_study.h"
 #include "shadowkit/app/commands.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/scene/scene_file.h"
+#include "study_polygons.h"
 #include "sunlit_steps.h"
 
 namespace shadowkit {
@@ -35,7 +38,26 @@ void merge_counts(const std::vector<Part>& parts, const fs::path& dir) {
   write_counts(dir / kSunStepCounts, sum);
 }
 
-int merge_shards(const SunStudyMergeOptions& options) {
+// The study's reports, which need its scene: loaded again from where the manifest says. The
+// four files stand without them, so a scene that is gone, or no longer the study's, is a
+// warning.
+void merged_reports(const fs::path& dir, const nlohmann::json& manifest,
+                    const std::string& polygons_text, const Context& ctx) {
+  const std::string scene_name = manifest["scene"].get<std::string>();
+  try {
+    const Scene scene = load_scene(scene_name, ctx);
+    const Polygons polygons = input_polygons(scene);
+    if (polygons_csv(polygons) != polygons_text) {
+      ctx.warning(scene_name + ": no reports: the scene's polygons are no longer the study's");
+      return;
+    }
+    write_finished_reports(scene, polygons, dir, manifest);
+  } catch (const InputError& e) {
+    ctx.warning(std::string("no reports: ") + e.what());
+  }
+}
+
+int merge_shards(const SunStudyMergeOptions& options, const Context& ctx) {
   if (options.shards.empty()) throw InputError("sun-study-merge", "give the shards' folders");
   if (options.out.empty()) throw InputError("--out", "needs a folder");
   std::vector<Part> parts;
@@ -98,7 +120,7 @@ int merge_shards(const SunStudyMergeOptions& options) {
       throw InputError("--out " + options.out, "is one of the shards' folders");
     }
   }
-  prepare_folder(dir, "--out", {kSunStepCounts});
+  prepare_folder(dir, "--out", made_files());
   const double step_hours = double(first["study"]["step_seconds"].get<std::int64_t>()) / 3600.0;
   AtomicFile times_file(dir / kTimes);
   times_file.stream() << kTimesHeader;
@@ -143,6 +165,7 @@ int merge_shards(const SunStudyMergeOptions& options) {
   manifest["step_count"] = next_step;
   manifest.erase("timing");
   write_file(dir / kManifest, manifest.dump(2) + "\n");
+  merged_reports(dir, manifest, polygons_text, ctx);
   std::printf("%zu shards, %lld steps, %zu polygons: %s\n", parts.size(),
               static_cast<long long>(next_step), P, dir.c_str());
   return 0;
@@ -150,9 +173,9 @@ int merge_shards(const SunStudyMergeOptions& options) {
 
 }  // namespace
 
-int run_sun_study_merge(const SunStudyMergeOptions& options, const Context& /*ctx*/) {
+int run_sun_study_merge(const SunStudyMergeOptions& options, const Context& ctx) {
   try {
-    return merge_shards(options);
+    return merge_shards(options, ctx);
   } catch (const nlohmann::json::exception& e) {
     // A manifest without the keys a shard writes.
     throw InputError("sun-study-merge",

@@ -257,6 +257,13 @@ TEST_F(SunStudy, MergedShardsEqualOneRun) {
   EXPECT_EQ(read_csv(dir_ / "shard1" / "times.csv").size(), 9u);  // 8 of the 24 steps
   ASSERT_EQ(run_sun_study_merge(merge, {}), 0);
   expect_same_files("whole", "merged");
+  // The merge writes the study's reports too, from the scene its manifest names.
+  for (const char* report : {"energyplus_shading.csv", "sun_hours.ply", "sun_hours_map.png"}) {
+    const std::string x = slurp(dir_ / "whole" / report), y = slurp(dir_ / "merged" / report);
+    EXPECT_FALSE(x.empty()) << report;
+    EXPECT_TRUE(x == y) << report << " differs";
+    EXPECT_FALSE(fs::exists(dir_ / "shard0" / report)) << "a shard writes no " << report;
+  }
 }
 
 // Fractions against an independent estimate (testing/sampled_shadow.h), toward the
