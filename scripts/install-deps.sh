@@ -8,6 +8,7 @@ packages=(
   libtinygltf-dev libassimp-dev assimp-utils assimp-testmodels libabsl-dev liberfa-dev
   libgtest-dev libgmock-dev libbenchmark-dev python3 clang-format-14  # tests: layering, format
   clang-14 libfuzzer-14-dev libclang-rt-14-dev  # fuzz/: docs/fuzzing.md
+  slurmctld slurmd slurm-client munge  # sun-study cluster test: scripts/slurm
 )
 missing=()
 for p in "${packages[@]}"; do
