@@ -147,6 +147,13 @@ wait_for() {
   done
 }
 
+# background COMMAND...: runs COMMAND and waits for it in a way a signal interrupts, so that
+# INT or TERM reach the cleanup at once (the cleanup ends COMMAND: it carries SLURM_CONF).
+background() {
+  "$@" &
+  wait $!
+}
+
 free_ports() {
   python3 -c '
 import socket
@@ -226,11 +233,11 @@ echo "cluster up after $((SECONDS - start)) s: node $node, $cpus CPUs, ports $ct
 # in the sanitizer build.)
 study=("$root/examples/open-meshes.json" --lat 48.85 --lon 2.35 --utc-offset 1
   --from 2024-06-21T00:00 --to 2024-06-21T23:59 --step 25)
-timeout 60 "$shadowkit" sun-study "${study[@]}" --out "$tmp/single" >/dev/null ||
+background timeout 60 "$shadowkit" sun-study "${study[@]}" --out "$tmp/single" >/dev/null ||
   fail "the unsharded run failed (status $?)"
 left=$((start + budget - SECONDS - 5))
 ((left > 10)) || fail "no time left for the study"
-timeout "$left" "$here/sun-study.sh" --shards 4 --out "$tmp/study" --shadowkit "$shadowkit" \
+background timeout "$left" "$here/sun-study.sh" --shards 4 --out "$tmp/study" --shadowkit "$shadowkit" \
   --time 5 --merge-time 5 --wait --poll 1 "${study[@]}" ||
   fail "sun-study.sh --wait failed (status $?)"
 
