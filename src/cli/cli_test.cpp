@@ -274,7 +274,7 @@ TEST_F(Cli, DegenerateFacesAreAWarningNotAnError) {
 TEST_F(Cli, SunStudyShardsMergeIntoOneRunsFiles) {
   const std::string study =
       "sun-study table --lat 48.1 --lon 11.6 --utc-offset 1 --from 2025-06-21T04:00 "
-      "--to 2025-06-21T21:30 --step 90 --north 20 --out ";
+      "--to 2025-06-21T21:30 --step 90 --north 20 --heat-map-width 64 --out ";
   const Result whole = run(study + (dir_ / "whole").string() + " --threads 2");
   ASSERT_EQ(whole.status, 0) << whole.err;
   std::string merge = "sun-study-merge";

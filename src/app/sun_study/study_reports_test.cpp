@@ -246,6 +246,7 @@ TEST(StudyReportsOfACommand, NoonRowIsTheNoonStepWeightedByArea) {
   options.to = "2025-06-21T23:00";
   options.step_minutes = 60;
   options.out = dir.string();
+  options.heat_map_width = 64;
   ASSERT_EQ(run_sun_study(options, {0, [](const std::string&) {}}), 0);
   const Scene scene = load_scene("table", {0, [](const std::string&) {}});
   const Polygons polygons = input_polygons(scene);

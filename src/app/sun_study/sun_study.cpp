@@ -2,6 +2,7 @@
 // sunlit areas are svbsp's; the sun's position is the scene layer's.
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <chrono>
@@ -193,7 +194,8 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
                              {"heat_map", heat_map_entry(scene.camera, heat_map.has_value())},
                              {"reports", report_settings(options)},
                              {"timing",
-                              {{"load_ms", ms(bsp_start - load_start)},
+                              {{"threads", tbb::this_task_arena::max_concurrency()},
+                               {"load_ms", ms(bsp_start - load_start)},
                                {"scene_bsp_ms", ms(steps_start - bsp_start)},
                                {"steps_ms", steps_ms},
                                {"daytime_steps", daytime},

@@ -94,6 +94,7 @@ class SunStudy : public ::testing::Test {
     o.to = to;
     o.step_minutes = step;
     o.out = (dir_ / out).string();
+    o.heat_map_width = 96;  // small: the sanitizer build draws it every step
     return o;
   }
   static void run(const SunStudyOptions& o, int threads = 0) {
@@ -220,7 +221,7 @@ TEST_F(SunStudy, UnobstructedRoofSunHoursAreTheDaylightSteps) {
   // The heat map's counts: every pixel that sees the roof (from above) saw the sun each step
   // it was up; the others see nothing.
   const std::string counts = slurp(dir_ / "out" / "sun_steps.u32");
-  const int width = 960, height = 540;  // the default scene camera's 16:9 at 960 across
+  const int width = 96, height = 54;  // the default scene camera's 16:9 at 96 across
   ASSERT_EQ(counts.size(), std::size_t(width) * height * 4);
   std::size_t roof = 0;
   for (std::size_t i = 0; i < counts.size() / 4; ++i) {
@@ -230,7 +231,7 @@ TEST_F(SunStudy, UnobstructedRoofSunHoursAreTheDaylightSteps) {
     ASSERT_EQ(c, std::uint32_t(up)) << "pixel " << i;
     ++roof;
   }
-  EXPECT_GT(roof, 1000u);
+  EXPECT_GT(roof, 100u);
 }
 
 TEST_F(SunStudy, FilesDoNotDependOnThreads) {
