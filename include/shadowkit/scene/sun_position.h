@@ -27,9 +27,17 @@ struct Site {
                                 ///< -360 to 360
 };
 
-/// Throws InputError naming the option (`--lat`, `--lon`, `--utc-offset`, `--north`) of the
-/// first field that is out of range or not a number.
-void validate(const Site& site);
+/// \brief What validate() calls each field of a Site in its messages: the options of
+/// `sun-study`, or where else the values came from (a scene file's `site` keys).
+struct SiteFieldNames {
+  std::string latitude = "--lat";
+  std::string longitude = "--lon";
+  std::string utc_offset = "--utc-offset";
+  std::string north = "--north";
+};
+
+/// Throws InputError naming (\p names) the first field that is out of range or not a number.
+void validate(const Site& site, const SiteFieldNames& names = {});
 
 /// Reads `YYYY-MM-DDTHH:MM` as local standard time, UTC + \p utc_offset_hours (no daylight
 /// saving: the contract's `--from` and `--to`). A date that does not exist (2025-02-30), an

@@ -44,23 +44,23 @@ std::string number(double value) {
   return text;
 }
 
-void check_range(double value, double low, double high, const char* option, const char* unit) {
+void check_range(double value, double low, double high, const std::string& where,
+                 const char* unit) {
   if (!(value >= low && value <= high)) {  // also refuses NaN
-    throw InputError(option, "must be between " + number(low) + " and " + number(high) + " " +
-                                 unit + ", got " + number(value));
+    throw InputError(where, "must be between " + number(low) + " and " + number(high) + " " + unit +
+                                ", got " + number(value));
   }
 }
 
 // Civil offsets are whole minutes, from UTC-12 to UTC+14, and -14 to 14 hours takes them all;
 // a fraction of a minute is a typing error, and whole minutes keep every step on whole seconds.
-std::chrono::minutes utc_offset(double hours) {
-  check_range(hours, -14, 14, "--utc-offset", "hours");
+std::chrono::minutes utc_offset(double hours, const std::string& where) {
+  check_range(hours, -14, 14, where, "hours");
   const double minutes = hours * 60;
   const double whole = std::round(minutes);
   // 1e-6 minute absorbs the rounding of decimal hours such as 5.75 or 0.1 in binary.
   if (std::abs(minutes - whole) > 1e-6) {
-    throw InputError("--utc-offset",
-                     "must be a whole number of minutes, got " + number(hours) + " hours");
+    throw InputError(where, "must be a whole number of minutes, got " + number(hours) + " hours");
   }
   return std::chrono::minutes{static_cast<int>(whole)};
 }
@@ -98,15 +98,15 @@ Instant parse_time(std::string_view text, std::string_view pattern, const std::s
 
 }  // namespace
 
-void validate(const Site& site) {
-  check_range(site.latitude_deg, -90, 90, "--lat", "degrees");
-  check_range(site.longitude_deg, -180, 180, "--lon", "degrees");
-  utc_offset(site.utc_offset_hours);
-  check_range(site.north_deg, -360, 360, "--north", "degrees");
+void validate(const Site& site, const SiteFieldNames& names) {
+  check_range(site.latitude_deg, -90, 90, names.latitude, "degrees");
+  check_range(site.longitude_deg, -180, 180, names.longitude, "degrees");
+  utc_offset(site.utc_offset_hours, names.utc_offset);
+  check_range(site.north_deg, -360, 360, names.north, "degrees");
 }
 
 Instant parse_local_time(std::string_view text, double utc_offset_hours, const std::string& where) {
-  const auto offset = utc_offset(utc_offset_hours);
+  const auto offset = utc_offset(utc_offset_hours, "--utc-offset");
   // Local standard time is UTC + offset (the contract's "Command"), so UTC = local - offset.
   return parse_time(text, "####-##-##T##:##", "YYYY-MM-DDTHH:MM (local standard time)", where) -
          offset;
