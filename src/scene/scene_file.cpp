@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "io/json_text.h"
@@ -15,6 +16,7 @@
 #include "shadowkit/scene/limits.h"
 #include "shadowkit/scene/mesh_io.h"
 #include "shadowkit/scene/scene_assembly.h"
+#include "shadowkit/scene/sun_position.h"
 
 namespace shadowkit {
 namespace {
@@ -96,6 +98,18 @@ Light read_light(const JsonCursor& c, const Context& ctx, const std::string& fil
   return light;
 }
 
+// The sun study's site (docs/scene-format.md, "Site"), checked here so that a bad value names
+// its key; its ranges are those of the study's options (sun::validate).
+sun::Site read_site(const JsonCursor& c, const Context& ctx, const std::string& file) {
+  warn_unknown(c, {"latitude", "longitude", "utc_offset", "north"}, ctx, file);
+  const sun::Site site{c["latitude"].number(), c["longitude"].number(), c["utc_offset"].number(),
+                       c.has("north") ? c["north"].number() : 0.0};
+  const std::string where = c.where();
+  sun::validate(site, {key_location(where, "latitude"), key_location(where, "longitude"),
+                       key_location(where, "utc_offset"), key_location(where, "north")});
+  return site;
+}
+
 void apply_object_transform(const JsonCursor& c, std::vector<Vec3>& positions) {
   if (!c.has("transform")) return;
   const JsonCursor t = c["transform"];
@@ -163,7 +177,9 @@ SceneSource generated_scene(const JsonCursor& root, const std::string& file) {
   // Its parameters are the file's keys but for the scene's own.
   nlohmann::json params = nlohmann::json::object();
   for (const auto& [key, value] : root.value().items()) {
-    if (key != "camera" && key != "lights" && key != "objects") params[key] = value;
+    if (key != "camera" && key != "lights" && key != "objects" && key != "site") {
+      params[key] = value;
+    }
   }
   return builtin_scene_source(params, file);
 }
@@ -175,7 +191,9 @@ Scene load_scene_file(const fs::path& path, const Context& ctx) {
   const std::string file = path.string();
   const JsonCursor root(json, file, "");
   if (!json.is_object()) throw InputError(file, "a scene file holds one JSON object");
-  if (!root.has("generator")) warn_unknown(root, {"camera", "lights", "objects"}, ctx, file);
+  if (!root.has("generator")) {
+    warn_unknown(root, {"camera", "lights", "objects", "site"}, ctx, file);
+  }
 
   SceneSource scene;
   if (root.has("generator")) {
@@ -193,9 +211,13 @@ Scene load_scene_file(const fs::path& path, const Context& ctx) {
       scene.lights.push_back(read_light(lights[i], ctx, file));
     }
   }
+  // Before the objects: a bad site is found without reading a mesh.
+  std::optional<sun::Site> site;
+  if (root.has("site")) site = read_site(root["site"], ctx, file);
   if (root.has("objects")) read_objects(root["objects"], path.parent_path(), scene, ctx, file);
   if (scene.lights.empty()) ctx.warning(file + ": the scene has no lights");
   Scene assembled = assemble_scene(std::move(scene), ctx);
+  assembled.site = site;
   if (assembled.face_count() == 0) ctx.warning(file + ": the scene has no faces");
   return assembled;
 }

@@ -4,12 +4,14 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "shadowkit/core/vec.h"
 #include "shadowkit/scene/mesh.h"
 #include "shadowkit/scene/subdivision.h"
+#include "shadowkit/scene/sun_position.h"
 
 namespace shadowkit {
 
@@ -104,6 +106,10 @@ struct Scene {
   Camera camera;
   std::vector<Light> lights;
   std::vector<SceneObject> objects;
+  /// The scene file's `site`, which only the sun study reads. It is no position: the working
+  /// frame, a translation and a positive uniform scale, turns no direction, so `north_deg`
+  /// holds in working coordinates as in the scene's own.
+  std::optional<sun::Site> site;
 
   /// Numbers faces globally, triangulates them and computes bounds.
   void finalize();
