@@ -326,4 +326,24 @@ TEST_F(Cli, SunStudyBadOptionsExitWith2NamingTheOption) {
   EXPECT_FALSE(fs::exists(dir_ / "out"));  // refused before the folder is made
 }
 
+// --lat, --lon and --utc-offset may come from the scene file's site instead; from neither,
+// the study is refused naming the option.
+TEST_F(Cli, SunStudySiteFromTheSceneOrRefusedNamingTheOption) {
+  const std::string period =
+      " --from 2025-06-21T04:00 --to 2025-06-21T20:00 --step 240 --out " + (dir_ / "out").string();
+  const Result missing = run("sun-study square --lon 0 --utc-offset 0" + period);
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_EQ(missing.err, "shadowkit: error: --lat: not given and the scene has no site.latitude\n");
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  const fs::path sited =
+      write("sited.json", R"({"camera": {"position": [0, 6, 8], "look_at": [0, 0, 0]},
+    "site": {"latitude": 48.85, "longitude": 2.35, "utc_offset": 1},
+    "objects": [{"generator": "ground", "size": 4}, {"generator": "box"}]})");
+  const Result r = run("sun-study " + sited.string() + period);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(slurp(dir_ / "out" / "times.csv")
+                .rfind("index,time_utc,azimuth_deg,elevation_deg\n0,2025-06-21T03:00:00Z,", 0),
+            0u);
+}
+
 }  // namespace

@@ -108,13 +108,15 @@ int main(int argc, char** argv) {
       "the sunlit fraction of every polygon at each time step, and its sun hours "
       "(the sun-study contract)");
   add_shared(sun_study_cmd, sun_study, shared);
-  sun_study_cmd->add_option("--lat", sun_study.latitude_deg, "latitude, degrees north")->required();
-  sun_study_cmd->add_option("--lon", sun_study.longitude_deg, "longitude, degrees east")
-      ->required();
-  sun_study_cmd
-      ->add_option("--utc-offset", sun_study.utc_offset_hours,
-                   "hours: local standard time is UTC + this (no daylight saving)")
-      ->required();
+  // The site's options stand in place of the scene file's site keys, so each is required
+  // only when the scene has no site (run_sun_study says which is missing).
+  sun_study_cmd->add_option("--lat", sun_study.latitude_deg,
+                            "latitude, degrees north (default: the scene's site.latitude)");
+  sun_study_cmd->add_option("--lon", sun_study.longitude_deg,
+                            "longitude, degrees east (default: the scene's site.longitude)");
+  sun_study_cmd->add_option("--utc-offset", sun_study.utc_offset_hours,
+                            "hours: local standard time is UTC + this (no daylight saving; "
+                            "default: the scene's site.utc_offset)");
   sun_study_cmd->add_option("--from", sun_study.from, "first step, YYYY-MM-DDTHH:MM local time")
       ->required();
   sun_study_cmd->add_option("--to", sun_study.to, "last step at most, YYYY-MM-DDTHH:MM local time")
@@ -122,7 +124,8 @@ int main(int argc, char** argv) {
   sun_study_cmd->add_option("--step", sun_study.step_minutes, "minutes between steps")->required();
   sun_study_cmd->add_option("--out", sun_study.out, "folder of the output files")->required();
   sun_study_cmd->add_option("--north", sun_study.north_deg,
-                            "degrees north turns clockwise from -Z, seen from above (default 0)");
+                            "degrees north turns clockwise from -Z, seen from above (default: "
+                            "the scene's site.north, else 0)");
   sun_study_cmd->add_option("--shard", sun_study.shard,
                             "I/N: only the I-th of N contiguous blocks of steps");
   sun_study_cmd->add_option("--heat-map-width", sun_study.heat_map_width,

@@ -2,6 +2,7 @@
 /// \brief The command-line commands as library functions: the executable only parses
 /// arguments. Each returns the process exit status; bad input throws InputError.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -55,15 +56,17 @@ struct VoxelRenderOptions : CommandOptions {
 /// \brief The sun study (the sun-study contract, sun-study.md): the sunlit fraction of every
 /// input polygon at each time step, with the sun as the only light, and its sun hours.
 struct SunStudyOptions : CommandOptions {
-  double latitude_deg = 0;      ///< `--lat`
-  double longitude_deg = 0;     ///< `--lon`
-  double utc_offset_hours = 0;  ///< `--utc-offset`
-  double north_deg = 0;         ///< `--north`
-  std::string from, to;         ///< `--from`, `--to`: YYYY-MM-DDTHH:MM, local standard time
-  double step_minutes = 0;      ///< `--step`
-  std::string out;              ///< `--out`: the folder of the four files
-  std::string shard;            ///< `--shard I/N`; empty: every step
-  int heat_map_width = 960;     ///< `--heat-map-width`, the camera's aspect; 0: no heat map
+  // The site: each option given stands in place of the scene file's `site` key; the study
+  // needs the first three from one or the other, north defaults to 0.
+  std::optional<double> latitude_deg;      ///< `--lat`, else `site.latitude`
+  std::optional<double> longitude_deg;     ///< `--lon`, else `site.longitude`
+  std::optional<double> utc_offset_hours;  ///< `--utc-offset`, else `site.utc_offset`
+  std::optional<double> north_deg;         ///< `--north`, else `site.north`, else 0
+  std::string from, to;      ///< `--from`, `--to`: YYYY-MM-DDTHH:MM, local standard time
+  double step_minutes = 0;   ///< `--step`
+  std::string out;           ///< `--out`: the folder of the four files
+  std::string shard;         ///< `--shard I/N`; empty: every step
+  int heat_map_width = 960;  ///< `--heat-map-width`, the camera's aspect; 0: no heat map
   /// `--shading-groups FILE.csv`: EnergyPlus surfaces made of polygons; empty: none
   std::string shading_groups;
   /// `--energyplus-timesteps N`: rows per hour of the EnergyPlus schedule

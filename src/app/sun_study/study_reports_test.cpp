@@ -242,6 +242,8 @@ TEST(StudyReportsOfACommand, NoonRowIsTheNoonStepWeightedByArea) {
   SunStudyOptions options;
   options.scene = "table";
   options.latitude_deg = 45;
+  options.longitude_deg = 0;
+  options.utc_offset_hours = 0;
   options.from = "2025-06-21T00:00";
   options.to = "2025-06-21T23:00";
   options.step_minutes = 60;

@@ -17,10 +17,10 @@ constexpr std::int64_t kMaxShards = 1'000'000;
 
 }  // namespace
 
-Steps study_steps(const SunStudyOptions& options) {
+Steps study_steps(const SunStudyOptions& options, double utc_offset_hours) {
   Steps steps;
-  steps.from = sun::parse_local_time(options.from, options.utc_offset_hours, "--from");
-  const sun::Instant to = sun::parse_local_time(options.to, options.utc_offset_hours, "--to");
+  steps.from = sun::parse_local_time(options.from, utc_offset_hours, "--from");
+  const sun::Instant to = sun::parse_local_time(options.to, utc_offset_hours, "--to");
   const double seconds = options.step_minutes * 60;
   if (!(options.step_minutes > 0) || !std::isfinite(seconds)) {
     throw InputError("--step", "must be a positive number of minutes");

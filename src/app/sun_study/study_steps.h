@@ -18,8 +18,10 @@ struct Steps {
   double step_hours() const { return double(step_seconds) / 3600.0; }
 };
 
-/// The steps of \p options; InputError naming the option when they make no study.
-Steps study_steps(const SunStudyOptions& options);
+/// The steps of \p options at a site whose local standard time is UTC + \p utc_offset_hours;
+/// InputError naming the option when they make no study. The offset moves every step alike,
+/// so whether they make a study, and how many steps, does not depend on it.
+Steps study_steps(const SunStudyOptions& options, double utc_offset_hours);
 
 /// \brief The I-th of N contiguous blocks of steps whose sizes differ by one at most.
 struct Shard {

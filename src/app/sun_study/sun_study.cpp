@@ -21,6 +21,7 @@
 #include "shadowkit/scene/scene_file.h"
 #include "shadowkit/scene/sun_position.h"
 #include "study_polygons.h"
+#include "study_site.h"
 #include "study_steps.h"
 #include "sunlit_steps.h"
 
@@ -39,11 +40,12 @@ constexpr std::size_t kMaxBlockSteps = 64;
 constexpr int kMaxHeatMapWidth = 7680;
 
 // What the merge checks shards against: every setting that changes the four files.
-nlohmann::json study_settings(const SunStudyOptions& options, const Steps& steps) {
-  return {{"lat", options.latitude_deg},
-          {"lon", options.longitude_deg},
-          {"utc_offset", options.utc_offset_hours},
-          {"north", options.north_deg},
+nlohmann::json study_settings(const SunStudyOptions& options, const sun::Site& site,
+                              const Steps& steps) {
+  return {{"lat", site.latitude_deg},
+          {"lon", site.longitude_deg},
+          {"utc_offset", site.utc_offset_hours},
+          {"north", site.north_deg},
           {"from", options.from},
           {"to", options.to},
           {"step_seconds", steps.step_seconds},
@@ -96,10 +98,9 @@ void refuse_subdivision(const Scene& scene, const std::string& where) {
 }  // namespace
 
 int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
-  // Every option is checked before the scene is read and before DIR is touched.
-  sun::validate(
-      {options.latitude_deg, options.longitude_deg, options.utc_offset_hours, options.north_deg});
-  const Steps steps = study_steps(options);
+  // Every option is checked before the scene is read, and the site the scene completes right
+  // after it, all before DIR is touched. The steps' checks hold at any UTC offset.
+  check_site_options(options);
   if (!options.settings.empty()) {
     throw InputError("--set",
                      "sun-study takes no method settings: its fractions are svbsp's exact "
@@ -109,14 +110,14 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
     throw InputError("--heat-map-width",
                      "must be 0 (none) to " + std::to_string(kMaxHeatMapWidth) + " pixels");
   }
-  const Shard shard = study_shard(options.shard, steps.count);
+  const Shard shard = study_shard(options.shard, study_steps(options, 0).count);
   if (options.out.empty()) throw InputError("--out", "needs a folder");
-  const sun::Site site{options.latitude_deg, options.longitude_deg, options.utc_offset_hours,
-                       options.north_deg};
 
   const Clock::time_point load_start = Clock::now();
   Scene scene = load_scene(options.scene, ctx);  // its lights are ignored
   if (options.heat_map_width > 0) heat_map_size(options.heat_map_width, scene.camera);
+  const sun::Site site = study_site(options, scene.site);
+  const Steps steps = study_steps(options, site.utc_offset_hours);
   refuse_subdivision(scene, options.scene);
   const Polygons polygons = input_polygons(scene);
   check_report_options(options, polygons);
@@ -185,7 +186,7 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
   nlohmann::json manifest = {{"format", "shadowkit sun-study"},
                              {"contract", 1},
                              {"scene", scene_reference(options.scene)},
-                             {"study", study_settings(options, steps)},
+                             {"study", study_settings(options, site, steps)},
                              {"polygons", P},
                              {"shard", shard.index},
                              {"shards", shard.count},

@@ -90,6 +90,8 @@ class SunStudy : public ::testing::Test {
     SunStudyOptions o;
     o.scene = scene;
     o.latitude_deg = lat;
+    o.longitude_deg = 0;
+    o.utc_offset_hours = 0;
     o.from = from;
     o.to = to;
     o.step_minutes = step;
