@@ -101,7 +101,7 @@ Light read_light(const JsonCursor& c, const Context& ctx, const std::string& fil
 // The sun study's site (docs/scene-format.md, "Site"), checked here so that a bad value names
 // its key; its ranges are those of the study's options (sun::validate).
 sun::Site read_site(const JsonCursor& c, const Context& ctx, const std::string& file) {
-  warn_unknown(c, {"latitude", "longitude", "utc_offset", "north"}, ctx, file);
+  warn_unknown(c, {"latitude", "longitude", "utc_offset", "north", "name"}, ctx, file);
   const sun::Site site{c["latitude"].number(), c["longitude"].number(), c["utc_offset"].number(),
                        c.has("north") ? c["north"].number() : 0.0};
   const std::string where = c.where();
@@ -213,11 +213,16 @@ Scene load_scene_file(const fs::path& path, const Context& ctx) {
   }
   // Before the objects: a bad site is found without reading a mesh.
   std::optional<sun::Site> site;
-  if (root.has("site")) site = read_site(root["site"], ctx, file);
+  std::string site_name;
+  if (root.has("site")) {
+    site = read_site(root["site"], ctx, file);
+    if (root["site"].has("name")) site_name = root["site"]["name"].string();
+  }
   if (root.has("objects")) read_objects(root["objects"], path.parent_path(), scene, ctx, file);
   if (scene.lights.empty()) ctx.warning(file + ": the scene has no lights");
   Scene assembled = assemble_scene(std::move(scene), ctx);
   assembled.site = site;
+  assembled.site_name = site_name;
   if (assembled.face_count() == 0) ctx.warning(file + ": the scene has no faces");
   return assembled;
 }

@@ -32,6 +32,10 @@ TEST_F(SceneFileTest, SiteIsReadWithNorthDefaultingToZero) {
   EXPECT_EQ(
       load_scene_file(write("scene.json", with_site(scene(), turned)), quiet_).site->north_deg,
       -12.5);
+  EXPECT_EQ(paris.site_name, "");
+  const std::string named = std::string(kParis) + R"(, "name": "Paris, France")";
+  EXPECT_EQ(load_scene_file(write("scene.json", with_site(scene(), named)), quiet_).site_name,
+            "Paris, France");
   EXPECT_FALSE(load_scene_file(write("scene.json", scene()), quiet_).site.has_value());
 }
 

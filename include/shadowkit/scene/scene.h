@@ -110,6 +110,7 @@ struct Scene {
   /// frame, a translation and a positive uniform scale, turns no direction, so `north_deg`
   /// holds in working coordinates as in the scene's own.
   std::optional<sun::Site> site;
+  std::string site_name;  ///< `site.name`: a label for the sun study's reports; may be empty
 
   /// Numbers faces globally, triangulates them and computes bounds.
   void finalize();

@@ -48,12 +48,18 @@ std::string file_content(const std::string& name) {
   return "";
 }
 
+// "Karlsruhe, Germany: " when the scene's site has a name.
+std::string site_label(const nlohmann::json& manifest) {
+  const std::string name = manifest.value("site_name", "");
+  return name.empty() ? "" : escaped(name) + ": ";
+}
+
 std::string settings_table(const nlohmann::json& manifest) {
   const nlohmann::json& study = manifest.at("study");
   const std::string offset = "UTC" + utc_offset_text(study.at("utc_offset").get<double>());
   std::string rows =
       setting("scene", escaped(manifest.at("scene").get<std::string>())) +
-      setting("site", number(study.at("lat").get<double>()) + "&deg; N, " +
+      setting("site", site_label(manifest) + number(study.at("lat").get<double>()) + "&deg; N, " +
                           number(study.at("lon").get<double>()) + "&deg; E, north turned " +
                           number(study.at("north").get<double>()) + "&deg;") +
       setting("period", escaped(study.at("from").get<std::string>()) + " to " +

@@ -187,6 +187,7 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
                              {"contract", 1},
                              {"scene", scene_reference(options.scene)},
                              {"study", study_settings(options, site, steps)},
+                             {"site_name", scene.site_name},
                              {"polygons", P},
                              {"shard", shard.index},
                              {"shards", shard.count},
