@@ -9,14 +9,21 @@ fuzz_targets() {
   local formats renders
   formats=$(sed -n 's/^set(SHADOWKIT_FUZZ_MESH_FORMATS \(.*\))$/\1/p' "$fuzz_dir/CMakeLists.txt")
   renders=$(sed -n 's/^set(SHADOWKIT_FUZZ_RENDER_KINDS \(.*\))$/\1/p' "$fuzz_dir/CMakeLists.txt")
-  echo scene $formats $(printf 'render_%s ' $renders)
+  echo scene $formats shading_groups $(printf 'render_%s ' $renders)
 }
 
-# The input kind of target NAME: "scene" or a mesh extension (render_obj -> obj).
+# The input kind of target NAME: "scene", "shading_groups" or a mesh extension
+# (render_obj -> obj).
 fuzz_kind() { echo "${1#render_}"; }
 
 # The file extension of input kind KIND.
-fuzz_extension() { if [[ $1 == scene ]]; then echo json; else echo "$1"; fi; }
+fuzz_extension() {
+  case $1 in
+    scene) echo json ;;
+    shading_groups) echo csv ;;
+    *) echo "$1" ;;
+  esac
+}
 
 # Collects the seeds of input kind KIND into directory OUT (emptied first): fuzz/corpus/KIND/,
 # every file of the kind's extension under examples/ and, when installed, under the assimp test
@@ -60,6 +67,8 @@ fuzz_options() {
   echo -timeout=20 -rss_limit_mb=2048 -print_final_stats=1
   if [[ $kind == scene ]]; then
     echo -max_len=4096
+  elif [[ $kind == shading_groups ]]; then
+    echo -max_len=1024  # each group is a column of the schedule's year of rows
   elif [[ $kind != "$name" ]]; then
     echo -max_len=16384  # render targets: odd geometry more than size
   else

@@ -1,5 +1,5 @@
 // One libFuzzer target; CMake compiles this file once per target with its input kind
-// (SHADOWKIT_FUZZ_KIND: "scene" or a mesh extension) and whether it renders
+// (SHADOWKIT_FUZZ_KIND: "scene", "shading_groups" or a mesh extension) and whether it renders
 // (SHADOWKIT_FUZZ_RENDER). See fuzz/CMakeLists.txt and docs/fuzzing.md.
 #include <cstddef>
 #include <cstdint>

@@ -17,9 +17,11 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
+#include "shadowkit/app/commands.h"
 #include "shadowkit/core/context.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/registry.h"
@@ -43,6 +45,25 @@ namespace fs = std::filesystem;
 constexpr int kFrameLongSide = 48;
 constexpr std::size_t kMaxRenderLights = 3;
 constexpr std::uint32_t kMaxRenderFaces = 1000;
+
+// The sun study the shading-groups target runs on each input: the built-in scene "table" (6
+// objects of 30, 36 (x4) and 1 faces: a table, four chairs and a ground), one step at noon near
+// the June solstice at 45 deg N, a heat map 16 pixels wide. Every report is written, the
+// EnergyPlus schedule's year of rows included.
+SunStudyOptions study_options(const fs::path& groups, const fs::path& out) {
+  SunStudyOptions options;
+  options.scene = "table";
+  options.latitude_deg = 45;
+  options.longitude_deg = 0;
+  options.utc_offset_hours = 0;
+  options.from = "2025-06-21T12:00";
+  options.to = "2025-06-21T12:00";
+  options.step_minutes = 60;
+  options.heat_map_width = 16;
+  options.shading_groups = groups.string();
+  options.out = out.string();
+  return options;
+}
 
 using Settings = std::map<std::string, std::string>;
 
@@ -79,6 +100,15 @@ std::string mesh_scene(const std::string& mesh_file, bool subdivision) {
          mesh + "]\n}\n";
 }
 
+// Whether a shading-groups input starts with the header line read_shading_groups() expects.
+bool has_groups_header(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  constexpr std::string_view kHeader = "surface,object,faces";
+  if (!text.starts_with(kHeader)) return false;
+  const std::string_view rest = text.substr(kHeader.size());
+  return rest.empty() || rest.starts_with("\n") || rest.starts_with("\r\n");
+}
+
 struct State {
   std::string kind;
   bool render = false;
@@ -88,6 +118,8 @@ struct State {
   std::vector<fs::path> scenes;  // the scene files loaded per input, in order
   Context ctx;
   std::vector<Run> runs;
+  // The shading-groups target's study, whose groups file is the input; none for other kinds.
+  std::optional<SunStudyOptions> study;
   std::unique_ptr<tbb::global_control> threads;
 };
 
@@ -293,7 +325,22 @@ void initialize(std::string_view kind, bool render) {
 
   s.dir = make_temporary_directory();
   std::atexit(remove_directory);
-  if (kind == "scene") {
+  if (kind == "shading_groups") {
+    s.input = s.dir / "groups.csv";
+    s.study = study_options(s.input, s.dir / "study");
+    // Each study prints a line on stdout; libFuzzer reports on stderr.
+    if (!s.verbose && std::freopen("/dev/null", "w", stdout) == nullptr) {
+      harness_failure("cannot send stdout to /dev/null");
+    }
+    // The harness's study must run without groups, or every input would end in its error.
+    SunStudyOptions without_groups = *s.study;
+    without_groups.shading_groups.clear();
+    try {
+      run_sun_study(without_groups, s.ctx);
+    } catch (const InputError& e) {
+      harness_failure(std::string("the study without groups fails: ") + e.what());
+    }
+  } else if (kind == "scene") {
     const fs::path scene_dir = s.dir / "scene";
     fs::create_directory(scene_dir);
     link_examples(scene_dir);
@@ -312,6 +359,16 @@ void initialize(std::string_view kind, bool render) {
 int run_one(const std::uint8_t* data, std::size_t size) {
   State& s = state();
   write_file(s.input, data, size);
+  if (s.study) {
+    try {
+      run_sun_study(*s.study, s.ctx);
+    } catch (const InputError& e) {
+      if (s.verbose) std::fprintf(stderr, "input error: %s\n", e.what());
+    }
+    // An input whose first line is not the header stops there; a corpus of those would leave
+    // few mutations that reach the lines (libFuzzer: -1 keeps it out of the corpus).
+    return has_groups_header(data, size) ? 0 : -1;
+  }
   // A mesh is tried as a control mesh only when it loads as a plain mesh: a reader's error
   // would only repeat.
   bool rendered = false;
