@@ -190,12 +190,21 @@ TEST_F(EnergyPlusSchedule, GroupsAreAreaWeightedColumnsAfterTheObjects) {
                                                                 "0.25", "0.25", "0.7", "0.5"}));
 }
 
+TEST_F(EnergyPlusSchedule, GroupFileMayStartWithAByteOrderMark) {
+  const ShadingGroups groups = read_shading_groups(
+      groups_file(study_, "\xEF\xBB\xBFsurface,object,faces\nA,0,all\n"), study_.polygons());
+  ASSERT_EQ(groups.groups.size(), 1u);
+  EXPECT_EQ(groups.groups[0].surface, "A");
+}
+
 TEST_F(EnergyPlusSchedule, GroupFileErrorsNameTheLine) {
   const std::vector<std::pair<std::string, std::string>> cases{
       {"surface,faces\n", "groups.csv:1: expected the header"},
       {"surface,object,faces\nA,0\n", "groups.csv:2: expected 3 fields"},
       {"surface,object,faces\n,0,0\n", "groups.csv:2: no surface name"},
       {"surface,object,faces\nA;B,0,0\n", "groups.csv:2: surface 'A;B'"},
+      {"surface,object,faces\nA\rB,0,0\n", "groups.csv:2: the surface name holds a control"},
+      {"surface,object,faces\nA\tB,0,0\n", "groups.csv:2: the surface name holds a control"},
       {"surface,object,faces\nA,9,0\n", "groups.csv:2: object '9' is no object"},
       {"surface,object,faces\nA,x,0\n", "groups.csv:2: object 'x'"},
       {"surface,object,faces\nA,0,2\n", "groups.csv:2: faces '2': the object has faces 0 to 1"},

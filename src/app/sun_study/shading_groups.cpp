@@ -94,6 +94,8 @@ ShadingGroups read_shading_groups(const std::filesystem::path& file, const Polyg
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const std::string where = file.string() + ":" + std::to_string(number);
     if (number == 1) {
+      // Spreadsheets save "CSV UTF-8" with a byte order mark.
+      if (line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);
       if (line != kHeader) throw InputError(where, "expected the header 'surface,object,faces'");
       continue;
     }
@@ -108,6 +110,12 @@ ShadingGroups read_shading_groups(const std::filesystem::path& file, const Polyg
     if (surface.find_first_of(kUnsafe) != std::string_view::npos) {
       throw InputError(
           where, "surface '" + std::string(surface) + "': EnergyPlus names cannot hold ; ! or \"");
+    }
+    // A control character would break the schedule's header line (a carriage return) or be
+    // unprintable in a message: refused, and the name left out of the message.
+    if (std::any_of(surface.begin(), surface.end(),
+                    [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; })) {
+      throw InputError(where, "the surface name holds a control character");
     }
     std::uint32_t object = 0;
     if (!parse_index(cells[1], object) || object >= faces.size() || faces[object].empty()) {
