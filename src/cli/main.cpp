@@ -192,6 +192,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     std::fprintf(stderr, "shadowkit: error: %s\n", e.what());
     return kBadInput;
+  } catch (const Interrupted& e) {
+    std::fprintf(stderr, "shadowkit: interrupted; no file was left half-written\n");
+    return 128 + e.signal;
   } catch (const std::bad_alloc&) {
     // Only a setting can ask for this much (image size, map resolution): say so.
     std::fprintf(stderr,

@@ -3,6 +3,7 @@
 /// arguments. Each returns the process exit status; bad input throws InputError.
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,14 @@ struct SunStudyOptions : CommandOptions {
   std::string shading_groups;
   /// `--energyplus-timesteps N`: rows per hour of the EnergyPlus schedule
   int energyplus_timesteps = 1;
+};
+
+/// \brief A command stopped by a signal (Ctrl-C) before it completed; the shell's convention
+/// gives exit status 128 + the signal's number.
+struct Interrupted : std::runtime_error {
+  explicit Interrupted(int signal_number)
+      : std::runtime_error("interrupted"), signal(signal_number) {}
+  int signal;
 };
 
 /// \brief Joins the folders of a sharded sun study into the files one unsharded run writes.

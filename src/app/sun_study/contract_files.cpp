@@ -77,12 +77,20 @@ AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)) {
   if (!out_) throw InputError(temporary_.string(), "cannot open for writing");
 }
 
+AtomicFile::~AtomicFile() {
+  if (committed_) return;
+  out_.close();
+  std::error_code ignored;
+  fs::remove(temporary_, ignored);
+}
+
 void AtomicFile::commit() {
   out_.close();
   if (!out_) throw InputError(temporary_.string(), "write failed");
   std::error_code ec;
   fs::rename(temporary_, path_, ec);
   if (ec) throw InputError(path_.string(), "cannot rename into place: " + ec.message());
+  committed_ = true;
 }
 
 void write_file(const fs::path& path, const std::string& text) {

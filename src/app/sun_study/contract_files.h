@@ -46,16 +46,20 @@ void append_float32_le(const float* values, std::size_t count, std::string& out)
 float read_float32_le(const unsigned char* bytes);
 
 /// \brief A file written under a temporary name (".partial") in its folder and renamed into
-/// place when complete.
+/// place when complete; a file never committed (an error, an interruption) is removed.
 class AtomicFile {
  public:
   explicit AtomicFile(fs::path path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
   std::ofstream& stream() { return out_; }
   void commit();
 
  private:
   fs::path path_, temporary_;
   std::ofstream out_;
+  bool committed_ = false;
 };
 
 void write_file(const fs::path& path, const std::string& text);

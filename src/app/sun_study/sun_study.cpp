@@ -14,6 +14,7 @@
 
 #include "contract_files.h"
 #include "finished_study.h"
+#include "interruption.h"
 #include "shadowkit/app/commands.h"
 #include "shadowkit/app/progress.h"
 #include "shadowkit/core/error.h"
@@ -139,6 +140,7 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
   const std::size_t block =
       std::clamp<std::size_t>(kBlockValues / std::max<std::size_t>(P, 1), 1, kMaxBlockSteps);
   Progress progress;
+  const Interruption interruption;
   std::vector<float> values;
   std::vector<sun::SunAngles> angles;
   std::string bytes;
@@ -168,6 +170,7 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
       append_float32_le(values.data() + i * P, P, bytes);
     }
     fractions_file.stream().write(bytes.data(), std::streamsize(bytes.size()));
+    interruption.check();
     progress.step(progress_line(first + std::int64_t(n) - shard.first, shard.end - shard.first,
                                 Clock::now() - steps_start));
   }
