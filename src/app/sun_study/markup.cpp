@@ -1,7 +1,6 @@
 #include "markup.h"
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 
 namespace shadowkit::sun_study {
@@ -31,10 +30,9 @@ std::string escaped(std::string_view text) {
 
 std::string utc_offset_text(double hours) {
   const long minutes = std::lround(hours * 60);
-  char text[16];
-  std::snprintf(text, sizeof text, "%c%02ld:%02ld", minutes < 0 ? '-' : '+',
-                std::labs(minutes) / 60, std::labs(minutes) % 60);
-  return text;
+  const auto two_digits = [](long n) { return (n < 10 ? "0" : "") + std::to_string(n); };
+  return std::string(minutes < 0 ? "-" : "+") + two_digits(std::labs(minutes) / 60) + ":" +
+         two_digits(std::labs(minutes) % 60);
 }
 
 }  // namespace shadowkit::sun_study
