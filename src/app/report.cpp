@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "shadowkit/app/html.h"
 #include "shadowkit/app/shading.h"
 #include "shadowkit/core/error.h"
 
@@ -23,37 +24,16 @@ std::string figure(const std::string& file, const std::string& caption) {
          "</figcaption></figure>\n";
 }
 
-// Failure reasons quote file names and settings: text, not markup.
-std::string escape_html(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 std::string failure_caption(const MethodRun& run) {
   return "<figure><figcaption class=\"failed\">" + run.method +
-         " failed: " + escape_html(run.failure) + "</figcaption></figure>\n";
+         " failed: " + html_escaped(run.failure) + "</figcaption></figure>\n";
 }
 
 // A table row: times, memory and mismatch; or why there are none.
 std::string table_row(const MethodRun& run, const std::optional<MaskComparison>& c) {
   std::string row = "<tr><td>" + run.method + "</td><td>L" + std::to_string(run.light) + "</td>";
   if (run.failed()) {
-    return row + "<td colspan=\"5\" class=\"failed\">failed: " + escape_html(run.failure) +
+    return row + "<td colspan=\"5\" class=\"failed\">failed: " + html_escaped(run.failure) +
            "</td></tr>\n";
   }
   row += "<td>" + format("%.2f", run.build_ms) + "</td><td>" + format("%.2f", run.shade_ms) +

@@ -57,17 +57,22 @@ void add_sun_hours(const float* fractions, double step_hours, std::vector<double
   for (std::size_t p = 0; p < hours.size(); ++p) hours[p] += double(fractions[p]) * step_hours;
 }
 
+void append_uint32_le(std::uint32_t value, std::string& out) {
+  for (int b = 0; b < 4; ++b) out.push_back(char((value >> (8 * b)) & 0xff));
+}
+
+std::uint32_t read_uint32_le(const unsigned char* bytes) {
+  return std::uint32_t(bytes[0]) | std::uint32_t(bytes[1]) << 8 | std::uint32_t(bytes[2]) << 16 |
+         std::uint32_t(bytes[3]) << 24;
+}
+
 void append_float32_le(const float* values, std::size_t count, std::string& out) {
-  for (std::size_t i = 0; i < count; ++i) {
-    const auto bits = std::bit_cast<std::uint32_t>(values[i]);
-    for (int b = 0; b < 4; ++b) out.push_back(char((bits >> (8 * b)) & 0xff));
-  }
+  for (std::size_t i = 0; i < count; ++i)
+    append_uint32_le(std::bit_cast<std::uint32_t>(values[i]), out);
 }
 
 float read_float32_le(const unsigned char* bytes) {
-  const std::uint32_t bits = std::uint32_t(bytes[0]) | std::uint32_t(bytes[1]) << 8 |
-                             std::uint32_t(bytes[2]) << 16 | std::uint32_t(bytes[3]) << 24;
-  return std::bit_cast<float>(bits);
+  return std::bit_cast<float>(read_uint32_le(bytes));
 }
 
 AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)) {

@@ -42,6 +42,8 @@ std::vector<std::string> row_keys(const std::string& polygons_text, const std::s
 /// step order. The merge sums the merged file the same way, so the bytes agree.
 void add_sun_hours(const float* fractions, double step_hours, std::vector<double>& hours);
 
+void append_uint32_le(std::uint32_t value, std::string& out);
+std::uint32_t read_uint32_le(const unsigned char* bytes);
 void append_float32_le(const float* values, std::size_t count, std::string& out);
 float read_float32_le(const unsigned char* bytes);
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "markup.h"
+#include "shadowkit/app/html.h"
 #include "shadowkit/core/error.h"
 
 namespace shadowkit::sun_study {
@@ -177,7 +178,7 @@ std::string legend_entry(const std::string& label, std::size_t line) {
   return "<line x1=\"" + std::to_string(x) + "\" y1=\"" + y + "\" x2=\"" + std::to_string(x + 24) +
          "\" y2=\"" + y + "\" stroke=\"" + kLineColours[line % kLineColours.size()] +
          "\" stroke-width=\"3\"/>\n<text x=\"" + std::to_string(x + 32) + "\" y=\"" + y +
-         "\" dominant-baseline=\"middle\">" + escaped(label) + "</text>\n";
+         "\" dominant-baseline=\"middle\">" + html_escaped(label) + "</text>\n";
 }
 
 }  // namespace

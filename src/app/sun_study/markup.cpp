@@ -5,29 +5,6 @@
 
 namespace shadowkit::sun_study {
 
-std::string escaped(std::string_view text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 std::string utc_offset_text(double hours) {
   const long minutes = std::lround(hours * 60);
   const auto two_digits = [](long n) { return (n < 10 ? "0" : "") + std::to_string(n); };

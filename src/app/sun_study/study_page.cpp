@@ -4,6 +4,7 @@
 
 #include "contract_files.h"
 #include "markup.h"
+#include "shadowkit/app/html.h"
 #include "shadowkit/core/error.h"
 #include "study_reports.h"
 
@@ -51,20 +52,20 @@ std::string file_content(const std::string& name) {
 // "Karlsruhe, Germany: " when the scene's site has a name.
 std::string site_label(const nlohmann::json& manifest) {
   const std::string name = manifest.value("site_name", "");
-  return name.empty() ? "" : escaped(name) + ": ";
+  return name.empty() ? "" : html_escaped(name) + ": ";
 }
 
 std::string settings_table(const nlohmann::json& manifest) {
   const nlohmann::json& study = manifest.at("study");
   const std::string offset = "UTC" + utc_offset_text(study.at("utc_offset").get<double>());
   std::string rows =
-      setting("scene", escaped(manifest.at("scene").get<std::string>())) +
+      setting("scene", html_escaped(manifest.at("scene").get<std::string>())) +
       setting("site", site_label(manifest) + number(study.at("lat").get<double>()) + "&deg; N, " +
                           number(study.at("lon").get<double>()) + "&deg; E, north turned " +
                           number(study.at("north").get<double>()) + "&deg;") +
-      setting("period", escaped(study.at("from").get<std::string>()) + " to " +
-                            escaped(study.at("to").get<std::string>()) + " local standard time (" +
-                            offset + ")") +
+      setting("period", html_escaped(study.at("from").get<std::string>()) + " to " +
+                            html_escaped(study.at("to").get<std::string>()) +
+                            " local standard time (" + offset + ")") +
       setting("step", number(study.at("step_seconds").get<double>() / 60) + " min, " +
                           std::to_string(study.at("steps").get<std::int64_t>()) + " steps") +
       setting("polygons", std::to_string(manifest.at("polygons").get<std::int64_t>()));
@@ -89,7 +90,7 @@ std::string files_table(const fs::path& dir, const std::vector<std::string>& rep
   for (const std::string& name : names) {
     std::error_code ec;
     const std::uintmax_t bytes = fs::file_size(dir / name, ec);
-    table += "<tr><td><a href=\"" + escaped(name) + "\">" + escaped(name) +
+    table += "<tr><td><a href=\"" + html_escaped(name) + "\">" + html_escaped(name) +
              "</a></td><td class=\"n\">" + (ec ? "missing" : size_text(bytes)) + "</td><td>" +
              file_content(name) + "</td></tr>\n";
   }
@@ -101,7 +102,7 @@ std::string plotted_table(const StudyPageContent& content) {
       "<table>\n<tr><th>polygon</th><th>object</th><th>face</th><th>area</th><th>sun "
       "hours</th></tr>\n";
   for (const StudyPageContent::PlottedPolygon& p : content.plotted) {
-    table += "<tr><td class=\"n\">" + std::to_string(p.row) + "</td><td>" + escaped(p.object) +
+    table += "<tr><td class=\"n\">" + std::to_string(p.row) + "</td><td>" + html_escaped(p.object) +
              "</td><td class=\"n\">" + std::to_string(p.face) + "</td><td class=\"n\">" +
              number(p.area) + "</td><td class=\"n\">" + number(p.sun_hours, "%.2f") +
              "</td></tr>\n";
@@ -110,7 +111,7 @@ std::string plotted_table(const StudyPageContent& content) {
 }
 
 std::string page(const fs::path& dir, const StudyPageContent& content) {
-  const std::string scene = escaped(content.manifest.at("scene").get<std::string>());
+  const std::string scene = html_escaped(content.manifest.at("scene").get<std::string>());
   std::string html =
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>Sun study: " +
       scene + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<h1>Sun study: " + scene +

@@ -40,7 +40,7 @@ constexpr std::size_t kMaxBlockSteps = 64;
 // The widest heat map: 8K UHD.
 constexpr int kMaxHeatMapWidth = 7680;
 
-// What the merge checks shards against: every setting that changes the four files.
+// What the merge checks shards against: every setting that changes the files it joins.
 nlohmann::json study_settings(const SunStudyOptions& options, const sun::Site& site,
                               const Steps& steps) {
   return {{"lat", site.latitude_deg},

@@ -1,7 +1,5 @@
 #include "sunlit_steps.h"
 
-#include <bit>
-
 #include "contract_files.h"
 #include "shadowkit/core/error.h"
 
@@ -37,9 +35,7 @@ std::vector<std::uint32_t> SunlitStepCounts::counts() const {
 void write_counts(const std::filesystem::path& path, const std::vector<std::uint32_t>& counts) {
   std::string bytes;
   bytes.reserve(counts.size() * 4);
-  for (const std::uint32_t c : counts) {
-    for (int b = 0; b < 4; ++b) bytes.push_back(char((c >> (8 * b)) & 0xff));
-  }
+  for (const std::uint32_t c : counts) append_uint32_le(c, bytes);
   write_file(path, bytes);
 }
 
@@ -49,11 +45,8 @@ std::vector<std::uint32_t> read_counts(const std::filesystem::path& path, std::s
     throw InputError(path.string(), "does not hold " + std::to_string(pixels) + " counts");
   }
   std::vector<std::uint32_t> counts(pixels);
-  for (std::size_t i = 0; i < pixels; ++i) {
-    std::uint32_t c = 0;
-    for (int b = 0; b < 4; ++b) c |= std::uint32_t(std::uint8_t(bytes[4 * i + b])) << (8 * b);
-    counts[i] = c;
-  }
+  const auto* raw = reinterpret_cast<const unsigned char*>(bytes.data());
+  for (std::size_t i = 0; i < pixels; ++i) counts[i] = read_uint32_le(raw + 4 * i);
   return counts;
 }
 
