@@ -34,12 +34,13 @@ Inside inside_face(const Mesh& mesh, std::size_t f, Vec3 x, double tolerance) {
 
 }  // namespace
 
-std::optional<int> faces_between_eye_and_light(const Mesh& mesh, Vec3 eye, const Light& light) {
-  const Bounds3 box = mesh.bounds();
+std::optional<int> faces_between_eye_and_light(const Mesh& mesh,
+                                               std::span<const std::uint32_t> faces,
+                                               const Bounds3& box, Vec3 eye, const Light& light) {
   // Hazard: a relative tolerance; closer calls are left to depth-fail counting.
   const double tolerance = 1e-9 * std::max(box.diagonal(), length(eye - box.center()));
   int count = 0;
-  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+  for (const std::uint32_t f : faces) {
     const Plane& plane = mesh.planes[f];
     const double l = light_side(plane, light);
     if (l == 0) continue;  // casts no volume

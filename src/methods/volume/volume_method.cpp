@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <numeric>
 #include <optional>
 
 #include "contour_edges.h"
@@ -14,37 +15,36 @@
 namespace shadowkit::volume {
 namespace {
 
-// What one caster contributes for the current light.
-struct CasterVolume {
+// What one sub-object contributes for the current light.
+struct SubObjectVolume {
   std::vector<ShadowPolygon> polygons;
   int eye_count = 0;
-  std::size_t contour_edges = 0, loops = 0, open_loops = 0;
   bool depth_fail = false;
-  std::vector<std::uint32_t> incomplete;  ///< sub-objects with a contour edge but no polygon
+  bool complete = true;  ///< every contour edge has its polygon
 };
 
 // Depth-pass misses crossings the near plane clips away, so it needs every shadow polygon
 // farther from the eye than the near part of the view; and every face, or the view shows
 // points behind a clipped face with the eye's count (a light inside a closed mesh: points
 // inside it, counted 1). And it needs the eye's own count.
-bool needs_depth_fail(const Mesh& mesh, const std::vector<ContourEdge>& edges, const Light& light,
-                      Vec3 eye, const ViewFrustum& view, std::optional<int> eye_count) {
+bool needs_depth_fail(const Mesh& mesh, std::span<const ContourEdge> edges,
+                      std::span<const std::uint32_t> faces, const Light& light, Vec3 eye,
+                      const ViewFrustum& view, std::optional<int> eye_count) {
   if (!eye_count) return true;
   const auto near_eye = [&](const Plane& plane) {
     return std::abs(plane.distance(eye)) <= 2 * view.near_radius;
   };
   return std::any_of(edges.begin(), edges.end(),
                      [&](const ContourEdge& e) { return near_eye(side_plane(mesh, e, light)); }) ||
-         std::any_of(mesh.planes.begin(), mesh.planes.end(), near_eye);
+         std::any_of(faces.begin(), faces.end(),
+                     [&](std::uint32_t f) { return near_eye(mesh.planes[f]); });
 }
 
-// Indices of the scene triangles of object \p o (they follow face order).
-std::pair<std::uint32_t, std::uint32_t> object_triangles(const Scene& scene, std::uint32_t o) {
+// The scene triangles of global face \p f: they follow face order.
+std::pair<std::uint32_t, std::uint32_t> face_triangles(const Scene& scene, std::uint32_t f) {
   const auto& faces = scene.triangles().triangle_face;
-  const std::uint32_t first = scene.objects[o].first_face;
-  const std::uint32_t last = first + std::uint32_t(scene.objects[o].mesh.face_count());
-  const auto lo = std::lower_bound(faces.begin(), faces.end(), first);
-  const auto hi = std::lower_bound(lo, faces.end(), last);
+  const auto lo = std::lower_bound(faces.begin(), faces.end(), f);
+  const auto hi = std::upper_bound(lo, faces.end(), f);
   return {std::uint32_t(lo - faces.begin()), std::uint32_t(hi - faces.begin())};
 }
 
@@ -55,35 +55,78 @@ std::uint32_t edge_sub_object(const SceneObject& object, const SubObjects& parts
   return parts.of_face[object.first_face + mesh.edge_uses[mesh.edges[edge].first_use].face];
 }
 
-CasterVolume caster_volume(const Scene& scene, const SubObjects& parts,
-                           const std::vector<char>& casting, std::uint32_t o, const Light& light,
-                           const Reach& reach, const ViewFrustum& view,
-                           VolumeMethod::Counting counting) {
-  CasterVolume v;
-  const SceneObject& object = scene.objects[o];
+// The contour edges of the casting sub-objects, grouped by sub-object, and their loops
+// (Fig. 2).
+class SubObjectEdges {
+ public:
+  SubObjectEdges(const Scene& scene, const SubObjects& parts, const std::vector<char>& casting,
+                 const Light& light) {
+    std::vector<std::vector<ContourEdge>> found(scene.objects.size());
+    std::vector<std::size_t> loops(found.size()), open_loops(found.size());
+    tbb::parallel_for(std::size_t(0), found.size(), [&](std::size_t o) {
+      found[o] = find_contour_edges(scene.objects[o].mesh, light);
+      std::erase_if(found[o], [&](const ContourEdge& e) {
+        return !casting[edge_sub_object(scene.objects[o], parts, e.edge)];
+      });
+      const std::vector<ContourLoop> chained = chain_contour_loops(found[o]);
+      loops[o] = chained.size();
+      open_loops[o] = std::size_t(std::count_if(chained.begin(), chained.end(),
+                                                [](const ContourLoop& l) { return !l.closed; }));
+    });
+    loops_ = std::reduce(loops.begin(), loops.end());
+    open_loops_ = std::reduce(open_loops.begin(), open_loops.end());
+    // A counting sort by sub-object.
+    start_.assign(parts.size() + 1, 0);
+    for (std::size_t o = 0; o < found.size(); ++o) {
+      for (const ContourEdge& e : found[o])
+        ++start_[edge_sub_object(scene.objects[o], parts, e.edge) + 1];
+    }
+    std::partial_sum(start_.begin(), start_.end(), start_.begin());
+    edges_.resize(start_.back());
+    std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
+    for (std::size_t o = 0; o < found.size(); ++o) {
+      for (const ContourEdge& e : found[o]) {
+        edges_[next[edge_sub_object(scene.objects[o], parts, e.edge)]++] = e;
+      }
+    }
+  }
+  std::span<const ContourEdge> of(std::size_t k) const {
+    return {edges_.data() + start_[k], edges_.data() + start_[k + 1]};
+  }
+  std::size_t size() const { return edges_.size(); }
+  std::size_t loops() const { return loops_; }
+  std::size_t open_loops() const { return open_loops_; }
+
+ private:
+  std::vector<ContourEdge> edges_;
+  std::size_t loops_ = 0, open_loops_ = 0;
+  std::vector<std::uint32_t> start_;
+};
+
+// Sub-object \p k's volume: depth-pass or depth-fail, decided for it alone (its volume is
+// closed on its own, SubObjects), so one caster near the eye leaves the rest of its mesh to
+// depth-pass, without caps.
+SubObjectVolume sub_object_volume(const Scene& scene, const SubObjects& parts, std::uint32_t k,
+                                  std::span<const ContourEdge> edges, const Light& light,
+                                  const Reach& reach, const ViewFrustum& view,
+                                  VolumeMethod::Counting counting) {
+  SubObjectVolume v;
+  const SceneObject& object = scene.objects[scene.object_of_face(parts.faces(k)[0])];
   const Mesh& mesh = object.mesh;
   const Vec3 eye = scene.camera.position;
-  // Contour edges of the sub-objects whose volumes can be seen, and their loops (Fig. 2).
-  std::vector<ContourEdge> edges = find_contour_edges(mesh, light);
-  std::erase_if(edges, [&](const ContourEdge& e) {
-    return !casting[edge_sub_object(object, parts, e.edge)];
-  });
   // No contour edges is no reason to stop: a closed mesh around a point light has none, and
   // its faces alone bound its volume, all space outside it (Crow Sec. VII: the polygons
   // facing the light with the shadow polygons bound the volume). No pixel ray crosses a
   // face before its visible point, so depth-pass gives every point the eye's count through
   // those faces ("the eye is in shadow"); depth-fail counts them as caps.
-  const std::vector<ContourLoop> loops = chain_contour_loops(edges);
-  v.contour_edges = edges.size();
-  v.loops = loops.size();
-  v.open_loops = std::size_t(
-      std::count_if(loops.begin(), loops.end(), [](const ContourLoop& l) { return !l.closed; }));
-  // Depth-pass or depth-fail for this caster. Culled sub-objects add nothing to the eye's
-  // count: their volumes miss the eye.
-  const std::optional<int> eye_count = faces_between_eye_and_light(mesh, eye, light);
+  thread_local std::vector<std::uint32_t> faces;  // mesh face ids
+  faces.clear();
+  for (std::uint32_t f : parts.faces(k)) faces.push_back(f - object.first_face);
+  const std::optional<int> eye_count =
+      faces_between_eye_and_light(mesh, faces, parts.bounds[k], eye, light);
   v.depth_fail = counting == VolumeMethod::Counting::depth_fail ||
                  (counting == VolumeMethod::Counting::automatic &&
-                  needs_depth_fail(mesh, edges, light, eye, view, eye_count));
+                  needs_depth_fail(mesh, edges, faces, light, eye, view, eye_count));
   if (!v.depth_fail && !eye_count) {
     // Only a forced depth-pass gets here: auto counts depth-fail where the eye's count is open.
     throw InputError("option 'volume.count'",
@@ -92,30 +135,21 @@ CasterVolume caster_volume(const Scene& scene, const SubObjects& parts,
                          "ray to the light grazes an edge); use auto or fail");
   }
   v.eye_count = v.depth_fail ? 0 : *eye_count;
-  // Shadow polygons (Fig. 4), and the caps that close the volumes for depth-fail.
+  // Shadow polygons (Fig. 4), and the caps that close the volume for depth-fail.
   for (const ContourEdge& e : edges) {
-    const std::uint32_t part = edge_sub_object(object, parts, e.edge);
     if (auto p = side_polygon(mesh, e, light, reach, eye, v.depth_fail)) {
-      p->sub_object = part;
+      p->sub_object = k;
       for (std::uint32_t& f : p->edge_faces) f = f == kNoFace ? f : object.first_face + f;
       v.polygons.push_back(*p);
     } else {
-      v.incomplete.push_back(part);
+      v.complete = false;
     }
   }
   if (v.depth_fail) {
-    const auto [t0, t1] = object_triangles(scene, o);
-    for (std::uint32_t t = t0; t < t1; ++t) {
-      const std::uint32_t part = parts.of_face[scene.triangles().triangle_face[t]];
-      if (casting[part]) cap_polygons(scene, t, part, light, eye, v.polygons);
+    for (std::uint32_t f : parts.faces(k)) {
+      const auto [t0, t1] = face_triangles(scene, f);
+      for (std::uint32_t t = t0; t < t1; ++t) cap_polygons(scene, t, k, light, eye, v.polygons);
     }
-  }
-  // Each sub-object's polygons together: the counting pass culls them per sub-object.
-  const auto by_sub_object = [](const ShadowPolygon& a, const ShadowPolygon& b) {
-    return a.sub_object < b.sub_object;
-  };
-  if (!std::is_sorted(v.polygons.begin(), v.polygons.end(), by_sub_object)) {
-    std::stable_sort(v.polygons.begin(), v.polygons.end(), by_sub_object);
   }
   return v;
 }
@@ -153,25 +187,30 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
     frusta_[k] = ShadowFrustum(parts_.bounds[k], light_, reach);
     casting[k] = frusta_[k].reaches(view) || !frusta_[k].misses({cam.position, cam.position});
   });
-  std::vector<CasterVolume> casters(scene.objects.size());
-  tbb::parallel_for(std::size_t(0), casters.size(), [&](std::size_t o) {
-    casters[o] =
-        caster_volume(scene, parts_, casting, std::uint32_t(o), light_, reach, view, counting_);
+  const SubObjectEdges edges(scene, parts_, casting, light_);
+  std::vector<SubObjectVolume> volumes(parts_.size());
+  tbb::parallel_for(std::uint32_t(0), std::uint32_t(parts_.size()), [&](std::uint32_t k) {
+    if (casting[k]) {
+      volumes[k] = sub_object_volume(scene, parts_, k, edges.of(k), light_, reach, view, counting_);
+    }
   });
 
+  // Each sub-object's polygons together: the counting pass culls them per sub-object.
   polygons_.clear();
   eye_count_ = 0;
-  contour_edges_ = contour_loops_ = open_loops_ = depth_fail_objects_ = 0;
+  depth_fail_sub_objects_ = 0;
+  contour_edges_ = double(edges.size());
+  contour_loops_ = double(edges.loops());
+  open_loops_ = double(edges.open_loops());
   culled_sub_objects_ = double(std::count(casting.begin(), casting.end(), 0));
   std::vector<char> complete(parts_.size(), 1);
-  for (const CasterVolume& v : casters) {
-    for (std::uint32_t k : v.incomplete) complete[k] = 0;
+  for (std::uint32_t k = 0; k < parts_.size(); ++k) {
+    SubObjectVolume& v = volumes[k];
+    complete[k] = v.complete;
     polygons_.insert(polygons_.end(), v.polygons.begin(), v.polygons.end());
+    v.polygons = {};
     eye_count_ += v.eye_count;
-    contour_edges_ += double(v.contour_edges);
-    contour_loops_ += double(v.loops);
-    open_loops_ += double(v.open_loops);
-    depth_fail_objects_ += v.depth_fail;
+    depth_fail_sub_objects_ += v.depth_fail;
   }
   cut_frusta(scene, complete);
 }
@@ -215,13 +254,17 @@ std::size_t VolumeMethod::memory_bytes() const {
 }
 
 MethodCounters VolumeMethod::counters() const {
-  return {
-      {"contour_edges", contour_edges_},           {"contour_loops", contour_loops_},
-      {"open_contour_loops", open_loops_},         {"shadow_polygons", double(polygons_.size())},
-      {"depth_fail_objects", depth_fail_objects_}, {"culled_sub_objects", culled_sub_objects_},
-      {"receiver_culled", receiver_culled_},       {"fill", fill_},
-      {"negative_counts", negative_counts_},       {"convex_volumes", convex_volumes_},
-      {"shadowed_cells", shadowed_cells_}};
+  return {{"contour_edges", contour_edges_},
+          {"contour_loops", contour_loops_},
+          {"open_contour_loops", open_loops_},
+          {"shadow_polygons", double(polygons_.size())},
+          {"depth_fail_sub_objects", depth_fail_sub_objects_},
+          {"culled_sub_objects", culled_sub_objects_},
+          {"receiver_culled", receiver_culled_},
+          {"fill", fill_},
+          {"negative_counts", negative_counts_},
+          {"convex_volumes", convex_volumes_},
+          {"shadowed_cells", shadowed_cells_}};
 }
 
 std::unique_ptr<ShadowMethod> make_method(const MethodOptions& options) {

@@ -13,7 +13,7 @@ namespace shadowkit::volume {
 /// \brief Crow's third class (Sec. VII): per light, contour edges chained into loops, one
 /// shadow polygon per contour edge, and a per-pixel count of the shadow polygons between
 /// the eye and the visible point (depth-pass, starting from the eye's own count) or behind
-/// it (depth-fail, with light and dark caps), chosen per object. Option `count`:
+/// it (depth-fail, with light and dark caps), chosen per sub-object. Option `count`:
 /// auto (default), pass or fail.
 class VolumeMethod final : public ShadowMethod {
  public:
@@ -36,10 +36,10 @@ class VolumeMethod final : public ShadowMethod {
   Light light_;
   std::vector<ShadowFrustum> frusta_;    ///< per sub-object, for the current light
   std::vector<ShadowPolygon> polygons_;  ///< grouped by sub-object
-  int eye_count_ = 0;  ///< per-face volumes holding the eye, over depth-pass objects
+  int eye_count_ = 0;  ///< per-face volumes holding the eye, over depth-pass sub-objects
   StencilBuffers stencil_buffers_;
   double contour_edges_ = 0, contour_loops_ = 0, open_loops_ = 0;
-  double depth_fail_objects_ = 0, culled_sub_objects_ = 0;
+  double depth_fail_sub_objects_ = 0, culled_sub_objects_ = 0;
   double fill_ = 0, negative_counts_ = 0, receiver_culled_ = 0, convex_volumes_ = 0,
          shadowed_cells_ = 0;
 };
