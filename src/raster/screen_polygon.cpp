@@ -47,7 +47,10 @@ int convex_orientation(const std::vector<FixedPoint>& p) {
 ScreenPolygon from_triangle(const ScreenTriangle& t) {
   ScreenPolygon p;
   p.count = 3;
-  for (int i = 0; i < 3; ++i) p.corners[i] = {{t.x[i], t.y[i]}, t.bias[i]};
+  for (int i = 0; i < 3; ++i) {
+    p.corners[i] = {t.x[i], t.y[i]};
+    p.bias_bits |= std::uint16_t(t.bias[i] << i);
+  }
   p.min_x = t.min_x, p.min_y = t.min_y, p.max_x = t.max_x, p.max_y = t.max_y;
   p.face = t.face;
   return p;
@@ -76,7 +79,8 @@ void setup_convex_polygon(std::span<const HomogeneousPoint> corners, std::uint32
     const FixedPoint a = fixed[i], b = fixed[(i + 1) % p.count];
     const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
     // As TriangleBuilder: antisymmetric ownership of the centres on an edge.
-    p.corners[i] = {a, (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1};
+    p.corners[i] = a;
+    p.bias_bits |= std::uint16_t((dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1 << i);
     x_min = std::min(x_min, a.x), x_max = std::max(x_max, a.x);
     y_min = std::min(y_min, a.y), y_max = std::max(y_max, a.y);
   }
@@ -97,10 +101,9 @@ PolygonSpanWalker::PolygonSpanWalker(const ScreenPolygon& p, int first_row, int 
   const std::int64_t top = std::int64_t(first_row) * kSubpixel + kSubpixel / 2;
   const std::int64_t bottom = std::int64_t(last_row) * kSubpixel + kSubpixel / 2;
   for (int i = 0; i < p.count; ++i) {
-    const ScreenPolygon::Corner& a = p.corners[i];
-    const ScreenPolygon::Corner& b = p.corners[(i + 1) % p.count];
-    if (std::max(a.p.y, b.p.y) < top || std::min(a.p.y, b.p.y) > bottom) continue;
-    edges_[count_++] = EdgeWalker(a.p, b.p, a.bias, first_row);
+    const FixedPoint a = p.corners[i], b = p.corners[(i + 1) % p.count];
+    if (std::max(a.y, b.y) < top || std::min(a.y, b.y) > bottom) continue;
+    edges_[count_++] = EdgeWalker(a, b, p.bias(i), first_row);
   }
   empty_ = count_ == 0;  // the rows lie wholly above or below the polygon
 }

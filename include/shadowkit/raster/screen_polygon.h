@@ -20,15 +20,16 @@ inline constexpr int kMaxPolygonCorners = 16;
 /// by a fixed infinitesimal step, which makes coverage independent of how a polygon is cut
 /// into triangles.
 struct ScreenPolygon {
-  struct Corner {
-    FixedPoint p;
-    std::int64_t bias;  ///< of the edge to the next corner
-  };
-  std::array<Corner, kMaxPolygonCorners> corners;
+  std::array<FixedPoint, kMaxPolygonCorners> corners;
+  std::uint16_t bias_bits = 0;  ///< bit i: the bias of the edge from corner i to the next
   int count = 0;
   int min_x, min_y, max_x, max_y;  ///< pixel bounds, clamped to the raster
   std::uint32_t face;              ///< the caller's id, as ScreenTriangle::face
+
+  /// The bias of the edge from corner \p i to the next, as ScreenTriangle::bias.
+  std::int64_t bias(int i) const { return (bias_bits >> i) & 1; }
 };
+static_assert(kMaxPolygonCorners <= 16, "ScreenPolygon::bias_bits holds a bit per edge");
 
 /// Clips and snaps \p corners as setup_polygon does and appends them to \p out as one
 /// ScreenPolygon; or, where snapping has left them not convex, as the triangles that

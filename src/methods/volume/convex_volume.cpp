@@ -108,7 +108,7 @@ ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons,
     std::size_t n = corner_start[v];
     for (std::uint32_t i = first; i < last; ++i) {
       const raster::ScreenPolygon& s = screen[i];
-      for (int c = 0; c < s.count; ++c) corners[n++] = s.corners[std::size_t(c)].p;
+      for (int c = 0; c < s.count; ++c) corners[n++] = s.corners[std::size_t(c)];
       out.min_x = std::min(out.min_x, s.min_x), out.max_x = std::max(out.max_x, s.max_x);
       out.min_y = std::min(out.min_y, s.min_y), out.max_y = std::max(out.max_y, s.max_y);
     }
@@ -117,7 +117,7 @@ ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons,
     // Binned whole when its corners fit (the bias does not matter to the bins).
     out.count = count >= 3 && count <= std::size_t(raster::kMaxPolygonCorners) ? int(count) : 0;
     for (std::size_t i = 0; i < count; ++i) {
-      if (out.count > 0) out.corners[i] = {hull[i], 0};
+      if (out.count > 0) out.corners[i] = hull[i];
       auto [ax, ay] = pixels(hull[i]);
       auto [bx, by] = pixels(hull[(i + 1) % count]);
       if (ay > by) std::swap(ax, bx), std::swap(ay, by);

@@ -28,7 +28,8 @@ std::vector<int> square_jumps(Vec3 eye) {
   const Reach reach{100, {}};  // no bounding box: polygons unclipped
   std::vector<int> jumps;
   for (const ContourEdge& e : find_contour_edges(square, light)) {
-    const auto p = side_polygon(square, e, light, reach, eye, false);
+    PolygonCorners corners;
+    const auto p = side_polygon(square, e, light, reach, eye, false, corners);
     EXPECT_TRUE(p.has_value());
     jumps.push_back(p->jump);
   }

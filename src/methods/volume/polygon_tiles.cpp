@@ -13,7 +13,7 @@ using raster::ScreenPolygon;
 
 bool overlaps_rectangle(const ScreenPolygon& s, int x0, int y0, int x1, int y1) {
   for (int i = 0; i < s.count; ++i) {
-    const raster::FixedPoint a = s.corners[i].p, b = s.corners[(i + 1) % s.count].p;
+    const raster::FixedPoint a = s.corners[i], b = s.corners[(i + 1) % s.count];
     const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
     // As EdgeWalker: E = dx (256 py + 128 - y_i) - dy (256 px + 128 - x_i), >= 0 inside.
     const auto e = [&](int px, int py) {
@@ -30,7 +30,7 @@ void narrow_to_strip(const ScreenPolygon& s, bool u_is_x, int ua, int ub, int& v
   const double lo = (ua - 0.5) * kSub, hi = (ub + 1.5) * kSub;  // centres +- one pixel
   double v_min = std::numeric_limits<double>::infinity(), v_max = -v_min;
   for (int i = 0; i < s.count; ++i) {
-    const raster::FixedPoint a = s.corners[i].p, b = s.corners[(i + 1) % s.count].p;
+    const raster::FixedPoint a = s.corners[i], b = s.corners[(i + 1) % s.count];
     double u0 = double(u_is_x ? a.x : a.y), v0 = double(u_is_x ? a.y : a.x);
     double u1 = double(u_is_x ? b.x : b.y), v1 = double(u_is_x ? b.y : b.x);
     if (u0 > u1) std::swap(u0, u1), std::swap(v0, v1);
@@ -46,7 +46,7 @@ void narrow_to_strip(const ScreenPolygon& s, bool u_is_x, int ua, int ub, int& v
   vb = std::min(vb, int(std::ceil(v_max / kSub)) + 1);
 }
 
-PolygonBins::PolygonBins(const std::vector<ScreenPolygon>& polygons, int width, int height)
+PolygonBins::PolygonBins(std::span<const ScreenPolygon* const> polygons, int width, int height)
     : tiles_x((width + kTile - 1) / kTile), tiles_y((height + kTile - 1) / kTile) {
   // (tile, polygon) pairs, chunks of polygons in parallel, kept in order.
   constexpr std::size_t kChunk = 512;
@@ -54,7 +54,7 @@ PolygonBins::PolygonBins(const std::vector<ScreenPolygon>& polygons, int width, 
       (polygons.size() + kChunk - 1) / kChunk);
   tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
     for (std::size_t i = c * kChunk; i < std::min(polygons.size(), (c + 1) * kChunk); ++i) {
-      const ScreenPolygon& s = polygons[i];
+      const ScreenPolygon& s = *polygons[i];
       for (int ty = s.min_y / kTile; ty <= s.max_y / kTile; ++ty) {
         int xa = s.min_x, xb = s.max_x;
         narrow_to_strip(s, false, std::max(s.min_y, ty * kTile),

@@ -1,6 +1,7 @@
 #pragma once
 // Shadow polygons against the tiles of the counting pass: which tiles and rows they reach.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "counting_tile.h"
@@ -27,7 +28,7 @@ struct PolygonBins {
   int tiles_x, tiles_y;
   std::vector<std::uint32_t> start, items;  ///< tile t holds items[start[t] .. start[t + 1])
 
-  PolygonBins(const std::vector<raster::ScreenPolygon>& polygons, int width, int height);
+  PolygonBins(std::span<const raster::ScreenPolygon* const> polygons, int width, int height);
   int tile_count() const { return tiles_x * tiles_y; }
 };
 

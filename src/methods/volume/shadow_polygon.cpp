@@ -31,25 +31,25 @@ HomogeneousPoint crossing(HomogeneousPoint p, double dp, HomogeneousPoint q, dou
 // Clips \p poly to \p box (Sutherland-Hodgman on the six faces, homogeneous); false if
 // nothing remains. Keeps depth-pass polygons from reaching past the receivers (Crow's volumes
 // need not extend beyond the scene), which is most of their area on screen.
-bool clip_to_box(ShadowPolygon& poly, const Bounds3& box) {
-  for (int face = 0; face < 6 && poly.corner_count >= 3; ++face) {
+bool clip_to_box(PolygonCorners& poly, const Bounds3& box) {
+  for (int face = 0; face < 6 && poly.count >= 3; ++face) {
     const int axis = face % 3;
     const double sign = face < 3 ? 1 : -1, bound = face < 3 ? box.lo[axis] : box.hi[axis];
     // Keeps sign (x[axis] - bound w) >= 0.
     const auto eval = [&](const HomogeneousPoint& p) { return sign * (p.xyz[axis] - bound * p.w); };
     std::array<HomogeneousPoint, 10> out;
     int n = 0;
-    for (int k = 0; k < poly.corner_count; ++k) {
-      const HomogeneousPoint& p = poly.corners[k];
-      const HomogeneousPoint& q = poly.corners[(k + 1) % poly.corner_count];
+    for (int k = 0; k < poly.count; ++k) {
+      const HomogeneousPoint& p = poly.points[k];
+      const HomogeneousPoint& q = poly.points[(k + 1) % poly.count];
       const double dp = eval(p), dq = eval(q);
       if (dp >= 0) out[n++] = p;
       if ((dp >= 0) != (dq >= 0)) out[n++] = crossing(p, dp, q, dq);
     }
-    poly.corners = out;
-    poly.corner_count = n;
+    poly.points = out;
+    poly.count = n;
   }
-  return poly.corner_count >= 3;
+  return poly.count >= 3;
 }
 
 }  // namespace
@@ -83,7 +83,7 @@ Plane side_plane(const Mesh& mesh, const ContourEdge& edge, const Light& light) 
 
 std::optional<ShadowPolygon> side_polygon(const Mesh& mesh, const ContourEdge& edge,
                                           const Light& light, const Reach& reach, Vec3 eye,
-                                          bool depth_fail) {
+                                          bool depth_fail, PolygonCorners& corners) {
   const Vec3 a = mesh.vertices[edge.from], b = mesh.vertices[edge.to];
   const Vec3 da = away_from_light(a, light), db = away_from_light(b, light);
   ShadowPolygon poly;
@@ -92,12 +92,12 @@ std::optional<ShadowPolygon> side_polygon(const Mesh& mesh, const ContourEdge& e
   // light's meet in one point, and the polygon is a triangle. The far corners depend on the
   // vertex alone, so neighbouring polygons share their rays bit for bit and the fill rule
   // counts a pixel centre on a shared ray once.
-  poly.corners[0] = {a, 1};
-  poly.corners[1] = {b, 1};
-  poly.corners[2] = {db, 0};
-  poly.corners[3] = {da, 0};
-  poly.corner_count = light.type == Light::Type::point ? 4 : 3;
-  if (!depth_fail && !reach.box.empty() && !clip_to_box(poly, reach.box)) return std::nullopt;
+  corners.points[0] = {a, 1};
+  corners.points[1] = {b, 1};
+  corners.points[2] = {db, 0};
+  corners.points[3] = {da, 0};
+  corners.count = light.type == Light::Type::point ? 4 : 3;
+  if (!depth_fail && !reach.box.empty() && !clip_to_box(corners, reach.box)) return std::nullopt;
   const Plane plane = side_plane(mesh, edge, light);
   if (!is_finite(plane.normal)) return std::nullopt;
   poly.normal = plane.normal;
@@ -114,7 +114,7 @@ std::optional<ShadowPolygon> side_polygon(const Mesh& mesh, const ContourEdge& e
 }
 
 void cap_polygons(const Scene& scene, std::uint32_t t, std::uint32_t sub_object, const Light& light,
-                  Vec3 eye, std::vector<ShadowPolygon>& out) {
+                  Vec3 eye, std::vector<ShadowPolygon>& out, std::vector<PolygonCorners>& corners) {
   const TriangleList& list = scene.triangles();
   const std::uint32_t face = list.triangle_face[t];
   const Plane& plane = scene.face_plane(face);
@@ -126,21 +126,28 @@ void cap_polygons(const Scene& scene, std::uint32_t t, std::uint32_t sub_object,
   cap.depth_fail = true;
   cap.face = face;
   cap.sub_object = sub_object;
-  cap.corner_count = 3;
-  for (int k = 0; k < 3; ++k) cap.corners[k] = {list.positions[list.triangles[t][k]], 1};
+  PolygonCorners cap_corners;
+  cap_corners.count = 3;
+  for (int k = 0; k < 3; ++k) cap_corners.points[k] = {list.positions[list.triangles[t][k]], 1};
   cap.normal = side > 0 ? -plane.normal : plane.normal;
   cap.d = side > 0 ? -plane.d : plane.d;
-  if (auto light_cap = oriented(cap, +1, eye)) out.push_back(*light_cap);
+  if (auto light_cap = oriented(cap, +1, eye)) {
+    out.push_back(*light_cap);
+    corners.push_back(cap_corners);
+  }
   if (light.type != Light::Type::point) return;  // parallel rays: no dark cap
   // Dark cap at infinity: every pixel ray whose direction lies in the face's cone from the
   // light leaves the volume there, after every finite point.
   ShadowPolygon dark = cap;
   dark.face = kNoFace;
-  for (int k = 0; k < 3; ++k) dark.corners[k] = {cap.corners[k].xyz - light.position, 0};
+  for (int k = 0; k < 3; ++k) {
+    cap_corners.points[k] = {cap_corners.points[k].xyz - light.position, 0};
+  }
   dark.normal = {};
   dark.d = -1;
   dark.jump = -1;
   out.push_back(dark);
+  corners.push_back(cap_corners);
 }
 
 }  // namespace shadowkit::volume

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "contour_edges.h"
@@ -21,12 +22,21 @@ struct Reach {
   static Reach of(const Scene& scene, const Light& light);
 };
 
+/// \brief The corners of a shadow polygon in world space: a convex polygon of up to 4 corners,
+/// plus one for each face of the reach's box clipping it. They serve once, to set the polygon
+/// up on screen; the counting keeps only its ShadowPolygon.
+struct PolygonCorners {
+  std::array<raster::HomogeneousPoint, 10> points{};
+  int count = 0;
+
+  std::span<const raster::HomogeneousPoint> span() const {
+    return {points.data(), std::size_t(count)};
+  }
+};
+
 /// \brief One polygon of a shadow volume's boundary, with the plane test that places a
 /// visible point in front of or behind it.
 struct ShadowPolygon {
-  /// A convex polygon: up to 4 corners, plus one for each face of the reach's box clipping it.
-  std::array<raster::HomogeneousPoint, 10> corners{};
-  int corner_count = 0;
   Vec3 normal;  ///< plane with the eye on its negative side; zero normal, d = -1: at infinity
   double d = 0;
   int jump = 0;  ///< change of the count where a pixel ray crosses it, going away from the eye
@@ -47,17 +57,17 @@ struct ShadowPolygon {
 /// ends (parallel for a directional light), to infinity (homogeneous corners with w = 0).
 /// Depth-pass polygons are clipped to the box of \p reach: crossings between the eye and a
 /// visible point lie in it. Empty when the eye lies in its plane (no pixel ray crosses it) or
-/// nothing of it is in the box.
+/// nothing of it is in the box; else its corners are in \p corners.
 std::optional<ShadowPolygon> side_polygon(const Mesh& mesh, const ContourEdge& edge,
                                           const Light& light, const Reach& reach, Vec3 eye,
-                                          bool depth_fail);
+                                          bool depth_fail, PolygonCorners& corners);
 
 /// The depth-fail caps of scene triangle \p t of sub-object \p sub_object: the triangle
 /// itself (the light cap, where its face's shadow volume begins) and, for a point light, its
 /// projection from the light onto the plane at infinity (the dark cap, where the volume
-/// ends). Appended to \p out.
+/// ends). Appended to \p out, their corners to \p corners.
 void cap_polygons(const Scene& scene, std::uint32_t t, std::uint32_t sub_object, const Light& light,
-                  Vec3 eye, std::vector<ShadowPolygon>& out);
+                  Vec3 eye, std::vector<ShadowPolygon>& out, std::vector<PolygonCorners>& corners);
 
 /// The plane of a side polygon, unit normal: the light and the edge lie in it.
 Plane side_plane(const Mesh& mesh, const ContourEdge& edge, const Light& light);

@@ -19,25 +19,6 @@ namespace {
 
 using raster::ScreenPolygon;
 
-// Shadow polygons as convex screen polygons, face = polygon index, into \p buffers.screen.
-// Order does not matter: counts add up.
-void setup_shadow_polygons(const std::vector<ShadowPolygon>& polygons, const RasterProjection& view,
-                           StencilBuffers& buffers) {
-  constexpr std::size_t kChunk = 1024;
-  auto& chunks = buffers.chunks;
-  chunks.resize((polygons.size() + kChunk - 1) / kChunk);
-  tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
-    chunks[c].clear();
-    for (std::size_t i = c * kChunk; i < std::min(polygons.size(), (c + 1) * kChunk); ++i) {
-      const ShadowPolygon& p = polygons[i];
-      raster::setup_convex_polygon({p.corners.data(), std::size_t(p.corner_count)},
-                                   std::uint32_t(i), view, chunks[c]);
-    }
-  });
-  buffers.screen.clear();
-  for (const auto& c : chunks) buffers.screen.insert(buffers.screen.end(), c.begin(), c.end());
-}
-
 std::vector<KeyPlane> polygon_keys(const std::vector<ShadowPolygon>& polygons,
                                    const RayGrid& rays) {
   std::vector<KeyPlane> keys(polygons.size());
@@ -322,16 +303,17 @@ std::vector<char> receiver_cullable(const std::vector<ShadowFrustum>& frusta,
 // sub-object's together. The bins keep this order in every tile, and a near caster's volume
 // holds more of what lies behind it: the pixels it settles (CountingTile::settled) spare
 // the volumes that come after it most of their tests.
-void order_from_light(std::vector<ScreenPolygon>& items, const std::vector<ShadowPolygon>& polygons,
-                      const SubObjects& parts, const Light& light) {
+void order_from_light(std::vector<const ScreenPolygon*>& items,
+                      const std::vector<ShadowPolygon>& polygons, const SubObjects& parts,
+                      const Light& light) {
   std::vector<double> near(parts.size());
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const Vec3 c = parts.bounds[k].center();
     near[k] =
         light.type == Light::Type::point ? length(c - light.position) : dot(c, light.direction);
   }
-  std::stable_sort(items.begin(), items.end(), [&](const ScreenPolygon& a, const ScreenPolygon& b) {
-    return near[polygons[a.face].sub_object] < near[polygons[b.face].sub_object];
+  std::stable_sort(items.begin(), items.end(), [&](const ScreenPolygon* a, const ScreenPolygon* b) {
+    return near[polygons[a->face].sub_object] < near[polygons[b->face].sub_object];
   });
 }
 
@@ -343,8 +325,8 @@ struct TilePass {
   const std::vector<char>& cullable;
   const ConvexVolumes& volumes;
   const TileCounter& counter;
-  std::span<const ScreenPolygon> screen;  ///< per shadow polygon
-  std::span<const ScreenPolygon> items;   ///< what was binned
+  std::span<const ScreenPolygon> screen;        ///< per shadow polygon
+  std::span<const ScreenPolygon* const> items;  ///< what was binned
 
   // Counts the items \p binned (indices into items) over tile t; adds the pixels tested one
   // by one to \p fill and the sub-objects Crow's receiver test culls to \p culled.
@@ -352,12 +334,12 @@ struct TilePass {
              std::size_t& culled) const {
     thread_local std::vector<const ScreenPolygon*> group;
     for (std::size_t b = 0, end; b < binned.size(); b = end) {
-      const std::uint32_t k = polygons[items[binned[b]].face].sub_object;
+      const std::uint32_t k = polygons[items[binned[b]]->face].sub_object;
       group.clear();
       for (end = b; end < binned.size(); ++end) {
-        const ScreenPolygon& s = items[binned[end]];
-        if (polygons[s.face].sub_object != k) break;
-        group.push_back(&s);
+        const ScreenPolygon* s = items[binned[end]];
+        if (polygons[s->face].sub_object != k) break;
+        group.push_back(s);
       }
       if (cullable[k] && frusta[k].misses(t.receivers)) {
         ++culled;
@@ -392,16 +374,13 @@ struct TilePass {
 
 }  // namespace
 
-StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, int eye_count,
+StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons,
+                                   std::span<const ScreenPolygon> screen, int eye_count,
                                    const Scene& scene, const Light& light, const SubObjects& parts,
                                    const std::vector<ShadowFrustum>& frusta,
                                    const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
-                                   StencilBuffers& buffers) {
+                                   std::vector<const ScreenPolygon*>& items) {
   const Camera& cam = scene.camera;
-  const RasterProjection view =
-      RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position));
-  setup_shadow_polygons(polygons, view, buffers);
-  const std::vector<ScreenPolygon>& screen = buffers.screen;
   const VisibleFrame frame(scene, light, parts, surfaces, eye_count);
   const std::vector<KeyPlane> keys = polygon_keys(polygons, frame.rays);
   const TileCounter counter(polygons, keys, frame);
@@ -409,17 +388,16 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
   const ConvexVolumes volumes(polygons, frusta, cullable, frame.rays, screen);
   // Convex volumes are binned by their outlines, one item each, the other polygons one by
   // one; items of one sub-object stay together.
-  std::vector<ScreenPolygon>& items = buffers.items;
   items.clear();
   for (const ScreenPolygon& s : screen) {
     const std::uint32_t k = polygons[s.face].sub_object;
-    if (!volumes.binned_by_hull(k)) items.push_back(s);
+    if (!volumes.binned_by_hull(k)) items.push_back(&s);
   }
   for (std::uint32_t k = 0; k < frusta.size(); ++k) {
-    if (volumes.binned_by_hull(k)) items.push_back(volumes.hull(k));
+    if (volumes.binned_by_hull(k)) items.push_back(&volumes.hull(k));
   }
   order_from_light(items, polygons, parts, light);
-  const PolygonBins bins(items, view.width, view.height);
+  const PolygonBins bins(items, cam.width, cam.height);
   std::atomic<std::size_t> fill = 0, negative = 0, culled = 0, shadowed = 0;
 
   const TilePass pass{polygons, frusta, cullable, volumes, counter, screen, items};
@@ -431,7 +409,7 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, i
       [&](int tile) {
         thread_local CountingTile t;
         const int x0 = (tile % bins.tiles_x) * kTile, y0 = (tile / bins.tiles_x) * kTile;
-        const int w = std::min(kTile, view.width - x0), h = std::min(kTile, view.height - y0);
+        const int w = std::min(kTile, cam.width - x0), h = std::min(kTile, cam.height - y0);
         if (bins.start[tile] == bins.start[tile + 1]) {
           CountingTile::finish_uncounted(frame, x0, y0, w, h, mask);
           return;

@@ -1,6 +1,7 @@
 #pragma once
 // Counting shadow polygons per pixel against the visible surfaces (Crow 1977, Sec. VII).
 #include <cstddef>
+#include <span>
 #include <vector>
 
 #include "shadow_polygon.h"
@@ -20,33 +21,18 @@ struct StencilStats {
   std::size_t shadowed_cells = 0;   ///< cells settled in shadow (CountingTile::shadowed)
 };
 
-/// \brief Storage one counting pass leaves for the next (a method object counts once per
-/// light and frame): kept, its capacity spares the next pass the page faults of fresh
-/// allocations for its screen polygons, 408 bytes each (on `cubes:2000` they cost more than
-/// their set-up).
-struct StencilBuffers {
-  std::vector<std::vector<raster::ScreenPolygon>> chunks;  ///< set up in parallel
-  std::vector<raster::ScreenPolygon> screen;               ///< per shadow polygon, in order
-  std::vector<raster::ScreenPolygon> items;                ///< what is binned
-
-  std::size_t memory_bytes() const {
-    std::size_t polygons = screen.capacity() + items.capacity();
-    for (const auto& chunk : chunks) polygons += chunk.capacity();
-    return polygons * sizeof(raster::ScreenPolygon);
-  }
-};
-
-/// Rasterizes \p polygons over the camera view with the shared scan converter and, per
-/// covered pixel, adds each polygon's jump where the pixel ray crosses it before the visible
-/// point (depth-pass) or subtracts it where it crosses behind (depth-fail), starting from
-/// \p eye_count. A pixel is lit when its count is not positive and its face is lit
+/// Walks \p polygons, set up on screen for the camera view as \p screen (face: the polygon's
+/// index), and, per covered pixel, adds each polygon's jump where the pixel ray crosses it before
+/// the visible point (depth-pass) or subtracts it where it crosses behind (depth-fail), starting
+/// from \p eye_count. A pixel is lit when its count is not positive and its face is lit
 /// (faces_light). A sub-object's polygons are skipped over tiles whose visible points lie
 /// outside its shadow frustum (\p frusta, per sub-object of \p parts). Tiles in parallel;
-/// writes \p mask. \p buffers lends its storage to the pass.
-StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons, int eye_count,
+/// writes \p mask. \p items lends its storage to the pass.
+StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons,
+                                   std::span<const raster::ScreenPolygon> screen, int eye_count,
                                    const Scene& scene, const Light& light, const SubObjects& parts,
                                    const std::vector<ShadowFrustum>& frusta,
                                    const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
-                                   StencilBuffers& buffers);
+                                   std::vector<const raster::ScreenPolygon*>& items);
 
 }  // namespace shadowkit::volume

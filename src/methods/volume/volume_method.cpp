@@ -18,6 +18,7 @@ namespace {
 // What one sub-object contributes for the current light.
 struct SubObjectVolume {
   std::vector<ShadowPolygon> polygons;
+  std::vector<raster::ScreenPolygon> screen;  ///< face: the index into polygons
   int eye_count = 0;
   bool depth_fail = false;
   bool complete = true;  ///< every contour edge has its polygon
@@ -109,6 +110,7 @@ class SubObjectEdges {
 SubObjectVolume sub_object_volume(const Scene& scene, const SubObjects& parts, std::uint32_t k,
                                   std::span<const ContourEdge> edges, const Light& light,
                                   const Reach& reach, const ViewFrustum& view,
+                                  const RasterProjection& projection,
                                   VolumeMethod::Counting counting) {
   SubObjectVolume v;
   const SceneObject& object = scene.objects[scene.object_of_face(parts.faces(k)[0])];
@@ -136,11 +138,15 @@ SubObjectVolume sub_object_volume(const Scene& scene, const SubObjects& parts, s
   }
   v.eye_count = v.depth_fail ? 0 : *eye_count;
   // Shadow polygons (Fig. 4), and the caps that close the volume for depth-fail.
+  thread_local std::vector<PolygonCorners> corners;
+  corners.clear();
   for (const ContourEdge& e : edges) {
-    if (auto p = side_polygon(mesh, e, light, reach, eye, v.depth_fail)) {
+    PolygonCorners c;
+    if (auto p = side_polygon(mesh, e, light, reach, eye, v.depth_fail, c)) {
       p->sub_object = k;
       for (std::uint32_t& f : p->edge_faces) f = f == kNoFace ? f : object.first_face + f;
       v.polygons.push_back(*p);
+      corners.push_back(c);
     } else {
       v.complete = false;
     }
@@ -148,8 +154,14 @@ SubObjectVolume sub_object_volume(const Scene& scene, const SubObjects& parts, s
   if (v.depth_fail) {
     for (std::uint32_t f : parts.faces(k)) {
       const auto [t0, t1] = face_triangles(scene, f);
-      for (std::uint32_t t = t0; t < t1; ++t) cap_polygons(scene, t, k, light, eye, v.polygons);
+      for (std::uint32_t t = t0; t < t1; ++t) {
+        cap_polygons(scene, t, k, light, eye, v.polygons, corners);
+      }
     }
+  }
+  // On screen now: the corners, 320 bytes a polygon, need not be kept.
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    raster::setup_convex_polygon(corners[i].span(), std::uint32_t(i), projection, v.screen);
   }
   return v;
 }
@@ -187,16 +199,20 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
     frusta_[k] = ShadowFrustum(parts_.bounds[k], light_, reach);
     casting[k] = frusta_[k].reaches(view) || !frusta_[k].misses({cam.position, cam.position});
   });
+  const RasterProjection projection =
+      RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position));
   const SubObjectEdges edges(scene, parts_, casting, light_);
   std::vector<SubObjectVolume> volumes(parts_.size());
   tbb::parallel_for(std::uint32_t(0), std::uint32_t(parts_.size()), [&](std::uint32_t k) {
     if (casting[k]) {
-      volumes[k] = sub_object_volume(scene, parts_, k, edges.of(k), light_, reach, view, counting_);
+      volumes[k] = sub_object_volume(scene, parts_, k, edges.of(k), light_, reach, view, projection,
+                                     counting_);
     }
   });
 
   // Each sub-object's polygons together: the counting pass culls them per sub-object.
   polygons_.clear();
+  screen_.clear();
   eye_count_ = 0;
   depth_fail_sub_objects_ = 0;
   contour_edges_ = double(edges.size());
@@ -207,10 +223,12 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
   for (std::uint32_t k = 0; k < parts_.size(); ++k) {
     SubObjectVolume& v = volumes[k];
     complete[k] = v.complete;
+    for (raster::ScreenPolygon& s : v.screen) s.face += std::uint32_t(polygons_.size());
+    screen_.insert(screen_.end(), v.screen.begin(), v.screen.end());
     polygons_.insert(polygons_.end(), v.polygons.begin(), v.polygons.end());
-    v.polygons = {};
     eye_count_ += v.eye_count;
     depth_fail_sub_objects_ += v.depth_fail;
+    v = {};
   }
   cut_frusta(scene, complete);
 }
@@ -237,8 +255,8 @@ void VolumeMethod::cut_frusta(const Scene& scene, const std::vector<char>& compl
 
 void VolumeMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
                          const Context& /*ctx*/) {
-  const StencilStats stats = count_shadow_polygons(polygons_, eye_count_, scene, light_, parts_,
-                                                   frusta_, surfaces, mask, stencil_buffers_);
+  const StencilStats stats = count_shadow_polygons(polygons_, screen_, eye_count_, scene, light_,
+                                                   parts_, frusta_, surfaces, mask, items_);
   fill_ = double(stats.fill);
   negative_counts_ = double(stats.negative);
   receiver_culled_ = double(stats.receiver_culled);
@@ -247,8 +265,9 @@ void VolumeMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surface
 }
 
 std::size_t VolumeMethod::memory_bytes() const {
-  return stencil_buffers_.memory_bytes() + polygons_.capacity() * sizeof(ShadowPolygon) +
-         frusta_.capacity() * sizeof(ShadowFrustum) +
+  return items_.capacity() * sizeof(const raster::ScreenPolygon*) +
+         screen_.capacity() * sizeof(raster::ScreenPolygon) +
+         polygons_.capacity() * sizeof(ShadowPolygon) + frusta_.capacity() * sizeof(ShadowFrustum) +
          parts_.of_face.capacity() * sizeof(std::uint32_t) +
          parts_.bounds.capacity() * sizeof(Bounds3);
 }

@@ -34,10 +34,11 @@ class VolumeMethod final : public ShadowMethod {
   Counting counting_ = Counting::automatic;
   SubObjects parts_;
   Light light_;
-  std::vector<ShadowFrustum> frusta_;    ///< per sub-object, for the current light
-  std::vector<ShadowPolygon> polygons_;  ///< grouped by sub-object
+  std::vector<ShadowFrustum> frusta_;          ///< per sub-object, for the current light
+  std::vector<ShadowPolygon> polygons_;        ///< grouped by sub-object
+  std::vector<raster::ScreenPolygon> screen_;  ///< the polygons on screen, in their order
   int eye_count_ = 0;  ///< per-face volumes holding the eye, over depth-pass sub-objects
-  StencilBuffers stencil_buffers_;
+  std::vector<const raster::ScreenPolygon*> items_;  ///< the counting pass's, kept for its capacity
   double contour_edges_ = 0, contour_loops_ = 0, open_loops_ = 0;
   double depth_fail_sub_objects_ = 0, culled_sub_objects_ = 0;
   double fill_ = 0, negative_counts_ = 0, receiver_culled_ = 0, convex_volumes_ = 0,
