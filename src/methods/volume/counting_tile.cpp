@@ -32,7 +32,7 @@ bool CountingTile::load(const VisibleFrame& frame, int x0_, int y0_, int w_, int
   all_keys = {};
   receivers = {};
   visible_parts.clear();
-  shadowed = 0;
+  shadowed = occupied = 0;
   for (int band = 0; band * kBand < h; ++band) load_band(frame, band);
   std::sort(visible_parts.begin(), visible_parts.end());
   visible_parts.erase(std::unique(visible_parts.begin(), visible_parts.end()), visible_parts.end());
@@ -102,6 +102,7 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
     CellReceivers& out = cell_receivers[band][cell];
     out.count = 0;
     if (cell_keys[band][cell].empty()) continue;
+    occupied |= std::uint64_t(1) << (band * kCellColumns + cell);
     if (!lit[cell]) shadowed |= std::uint64_t(1) << (band * kCellColumns + cell);
     const int xa = x0 + cell * kBlock, xb = x0 + std::min(w, (cell + 1) * kBlock) - 1;
     const auto add = [&](const Bounds3& box, const KeyRange& keys) {

@@ -109,11 +109,14 @@ struct CountingTile {
   /// in a convex volume (ConvexVolume), or the camera sees only unlit sides (contract
   /// condition 1). Every count being >= 0, no more polygons need to visit them.
   std::uint64_t shadowed = 0;
+  std::uint64_t occupied = 0;  ///< cells with visible points
   /// Per row, bit x: pixel x of the row is settled, whatever more volumes add: background
   /// (or past the tile's width), the camera sees its face's unlit side, or it lies in a
   /// convex volume. Convex volumes skip settled pixels, and cells whose pixels all are.
   std::uint64_t settled[kTile];
 
+  /// Whether every visible point of the tile is settled in shadow: nothing more can change it.
+  bool all_shadowed() const { return (shadowed & occupied) == occupied; }
   bool shows(std::uint32_t sub_object) const {
     return std::binary_search(visible_parts.begin(), visible_parts.end(), sub_object);
   }

@@ -333,7 +333,9 @@ struct TilePass {
   void count(std::span<const std::uint32_t> binned, CountingTile& t, std::size_t& fill,
              std::size_t& culled) const {
     thread_local std::vector<const ScreenPolygon*> group;
-    for (std::size_t b = 0, end; b < binned.size(); b = end) {
+    // Nearest the light first: the volumes that settle cells come early, and once every
+    // cell is settled the rest are skipped whole (Crow's casters in the shadow of nearer ones).
+    for (std::size_t b = 0, end; b < binned.size() && !t.all_shadowed(); b = end) {
       const std::uint32_t k = polygons[items[binned[b]]->face].sub_object;
       group.clear();
       for (end = b; end < binned.size(); ++end) {

@@ -8,6 +8,7 @@
 
 #include "contour_edges.h"
 #include "eye_count.h"
+#include "footprints.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/volume.h"
 #include "stencil_count.h"
@@ -199,6 +200,11 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
     frusta_[k] = ShadowFrustum(parts_.bounds[k], light_, reach);
     casting[k] = frusta_[k].reaches(view) || !frusta_[k].misses({cam.position, cam.position});
   });
+  // Crow's footprints: a sub-object wholly in the shadow of nearer ones adds no shadow.
+  const std::vector<char> shadowed =
+      shadowed_sub_objects(parts_, light_, std::vector<char>(parts_.size(), 1), scene.bounds());
+  for (std::size_t k = 0; k < parts_.size(); ++k) casting[k] &= !shadowed[k];
+  shadowed_sub_objects_ = double(std::count(shadowed.begin(), shadowed.end(), 1));
   const RasterProjection projection =
       RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position));
   const SubObjectEdges edges(scene, parts_, casting, light_);
@@ -218,7 +224,8 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
   contour_edges_ = double(edges.size());
   contour_loops_ = double(edges.loops());
   open_loops_ = double(edges.open_loops());
-  culled_sub_objects_ = double(std::count(casting.begin(), casting.end(), 0));
+  culled_sub_objects_ =
+      double(std::count(casting.begin(), casting.end(), 0)) - shadowed_sub_objects_;
   std::vector<char> complete(parts_.size(), 1);
   for (std::uint32_t k = 0; k < parts_.size(); ++k) {
     SubObjectVolume& v = volumes[k];
@@ -279,6 +286,7 @@ MethodCounters VolumeMethod::counters() const {
           {"shadow_polygons", double(polygons_.size())},
           {"depth_fail_sub_objects", depth_fail_sub_objects_},
           {"culled_sub_objects", culled_sub_objects_},
+          {"shadowed_sub_objects", shadowed_sub_objects_},
           {"receiver_culled", receiver_culled_},
           {"fill", fill_},
           {"negative_counts", negative_counts_},

@@ -40,7 +40,7 @@ class VolumeMethod final : public ShadowMethod {
   int eye_count_ = 0;  ///< per-face volumes holding the eye, over depth-pass sub-objects
   std::vector<const raster::ScreenPolygon*> items_;  ///< the counting pass's, kept for its capacity
   double contour_edges_ = 0, contour_loops_ = 0, open_loops_ = 0;
-  double depth_fail_sub_objects_ = 0, culled_sub_objects_ = 0;
+  double depth_fail_sub_objects_ = 0, culled_sub_objects_ = 0, shadowed_sub_objects_ = 0;
   double fill_ = 0, negative_counts_ = 0, receiver_culled_ = 0, convex_volumes_ = 0,
          shadowed_cells_ = 0;
 };

@@ -1,0 +1,76 @@
+#include "footprints.h"
+
+#include <gtest/gtest.h>
+
+#include "testing/method_testing.h"
+#include "testing/test_scenes.h"
+#include "volume_method.h"
+
+namespace shadowkit::volume {
+namespace {
+
+// A 2 x 2 x 2 box at the origin's column over a ground, and small boxes below it at \p
+// small (their lower corners), each 0.5 across.
+Scene boxes_under_a_box(const Light& light, std::vector<Vec3> small) {
+  std::vector<PolygonSoup> objects{testing::box({-1, 4, -1}, {1, 6, 1})};
+  for (const Vec3& lo : small) objects.push_back(testing::box(lo, lo + Vec3{0.5, 0.5, 0.5}));
+  objects.push_back(testing::horizontal_quad(-8, 8, -8, 8, 0));
+  return testing::make_scene(testing::camera({0, 7, 12}, {0, 2, 0}, 160, 120), {light}, objects);
+}
+
+std::vector<char> shadowed(const Scene& scene) {
+  const SubObjects parts = SubObjects::of(scene);
+  return shadowed_sub_objects(parts, scene.lights[0], std::vector<char>(parts.size(), 1),
+                              scene.bounds());
+}
+
+TEST(Footprints, MarkBoxesWhollyBehindANearerConvexBox) {
+  // Sub-objects: the big box, then the small ones, then the ground.
+  for (const Light& light :
+       {testing::directional_light({0, -1, 0}), testing::point_light({0, 40, 0})}) {
+    const Scene scene =
+        boxes_under_a_box(light, {{-0.25, 1, -0.25},      // right under it: shadowed
+                                  {0.7, 1, -0.25},        // half out to the side: lit in part
+                                  {-0.25, 6.2, -0.25}});  // above it, nearer the light
+    EXPECT_EQ(shadowed(scene), (std::vector<char>{0, 1, 0, 0, 0})) << int(light.type);
+  }
+}
+
+TEST(Footprints, KeepABoxTouchingTheFarSide) {
+  // 1e-3 below the big box's bottom face, the small box lies beyond its far reach; touching
+  // it, where rounding could put it on either side, it is kept.
+  const Light sun = testing::directional_light({0, -1, 0});
+  EXPECT_EQ(shadowed(boxes_under_a_box(sun, {{-0.25, 3.499, -0.25}})),
+            (std::vector<char>{0, 1, 0}));
+  EXPECT_EQ(shadowed(boxes_under_a_box(sun, {{-0.25, 3.5, -0.25}})), (std::vector<char>{0, 0, 0}));
+}
+
+TEST(Footprints, NeedAFootprintOnOneCubeFaceOfAPointLight) {
+  // A point light inside the big box: its corners look out on every face, so it leaves no
+  // footprint, and nothing is marked.
+  const Scene scene = boxes_under_a_box(testing::point_light({0, 5, 0}), {{-0.25, 1, -0.25}});
+  EXPECT_EQ(shadowed(scene), (std::vector<char>{0, 0, 0}));
+}
+
+TEST(Footprints, DropCastersWithoutChangingThePicture) {
+  // A 5 x 5 x 5 block of cubes with gaps of 0.1: the cubes beyond the first layers the
+  // light meets are dropped.
+  std::vector<PolygonSoup> objects{testing::horizontal_quad(-10, 10, -10, 10, 0)};
+  for (int i = 0; i < 125; ++i) {
+    const Vec3 lo = Vec3{i % 5 - 2.5, 1.0 + i / 5 % 5, i / 25 - 2.5} * 1.1;
+    objects.push_back(testing::box(lo, lo + Vec3{1, 1, 1}));
+  }
+  for (const Light& light :
+       {testing::point_light({3, 14, 5}), testing::directional_light({-0.3, -1, -0.2})}) {
+    const Scene scene =
+        testing::make_scene(testing::camera({9, 9, 14}, {0, 3, 0}, 200, 150), {light}, objects);
+    VolumeMethod m({});
+    const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+    testing::method_mask(m, scene, vsb, 0);
+    EXPECT_GT(testing::counter(m, "shadowed_sub_objects"), 30) << int(light.type);
+    EXPECT_LE(testing::worst_interior_mismatch(scene, "volume"), 0.05) << int(light.type);
+  }
+}
+
+}  // namespace
+}  // namespace shadowkit::volume
