@@ -46,7 +46,8 @@ bool face_lit(const Bounds3& box, int axis, int side, const Light& light) {
 
 }  // namespace
 
-ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Reach& reach)
+ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Reach& reach,
+                             const ViewFrustum* view)
     : light_(light), tolerance_(tolerance(tight, light, reach)) {
   const Bounds3 box = widened(tight, tolerance_);
   const bool point = light.type == Light::Type::point;
@@ -62,15 +63,17 @@ ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Rea
     }
     push = std::max(reach.limit / gap, 1.0);
   }
+  std::array<Vec3, 16> hull;
   for (int c = 0; c < 8; ++c) {
     const Vec3 p = corner(box, c);
-    hull_[c] = p;
-    hull_[8 + c] = point
-                       ? light.position + (p - light.position) * push
-                       : p + light.direction * std::max(0.0, reach.limit - dot(p, light.direction));
+    hull[c] = p;
+    hull[8 + c] = point
+                      ? light.position + (p - light.position) * push
+                      : p + light.direction * std::max(0.0, reach.limit - dot(p, light.direction));
   }
-  for (const Vec3& p : hull_) hull_box_.add(p);
+  for (const Vec3& p : hull) hull_box_.add(p);
   hull_box_ = widened(hull_box_, tolerance_);
+  reaches_view_ = !view || !view->excludes(hull);
 
   const Vec3 centre = box.center();
   for (int a = 0; a < 3; ++a) {
@@ -79,7 +82,7 @@ ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Rea
       if (!face_lit(box, a, side, light)) continue;
       Vec3 n{};
       n[a] = side ? -1 : 1;
-      planes_[plane_count_++] = {n, side ? box.hi[a] : -box.lo[a]};
+      set_plane(plane_count_++, {n, side ? box.hi[a] : -box.lo[a]});
     }
     // Inside the plane through the light and each contour edge along axis a, between the
     // faces on sides (sb, sc) of the other two axes.
@@ -95,12 +98,11 @@ ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Rea
         const Vec3 n = normalize(cross(p1 - p0, point ? light.position - p0 : light.direction));
         if (!is_finite(n)) continue;  // the light on the edge's line: no plane, no cull
         const Plane plane{n, -dot(n, p0)};
-        planes_[plane_count_++] =
-            plane.distance(centre) >= 0 ? plane : Plane{-plane.normal, -plane.d};
+        set_plane(plane_count_++,
+                  plane.distance(centre) >= 0 ? plane : Plane{-plane.normal, -plane.d});
       }
     }
   }
-  sync_lanes();
 }
 
 void ShadowFrustum::cut(std::span<const Vec3> corners, const Plane& plane) {
@@ -128,17 +130,8 @@ void ShadowFrustum::cut(std::span<const Vec3> corners, const Plane& plane) {
   // Moved out past the corners' tolerance and the rounding of later tests.
   inward.d += 2 * tolerance_;
   // Cuts go first: they are the tighter. Without room, the box plane in the way goes.
-  if (plane_count_ < kMaxPlanes) planes_[plane_count_++] = planes_[cuts_];
-  planes_[cuts_++] = inward;
-  sync_lanes();
-}
-
-void ShadowFrustum::sync_lanes() {
-  for (int k = 0; k < kMaxPlanes; ++k) {
-    const Plane p = k < plane_count_ ? planes_[std::size_t(k)] : Plane{};
-    nx_[std::size_t(k)] = p.normal.x, ny_[std::size_t(k)] = p.normal.y;
-    nz_[std::size_t(k)] = p.normal.z, nd_[std::size_t(k)] = p.d;
-  }
+  if (plane_count_ < kMaxPlanes) set_plane(plane_count_++, this->plane(cuts_));
+  set_plane(cuts_++, inward);
 }
 
 bool ShadowFrustum::misses(const Bounds3& r) const {
@@ -166,10 +159,11 @@ bool ShadowFrustum::misses(const Bounds3& r) const {
   return false;
 #else
   for (int k = 0; k < plane_count_; ++k) {
-    const Vec3 n = planes_[k].normal;
+    const Plane p = plane(k);
+    const Vec3 n = p.normal;
     const Vec3 farthest{n.x > 0 ? r.hi.x : r.lo.x, n.y > 0 ? r.hi.y : r.lo.y,
                         n.z > 0 ? r.hi.z : r.lo.z};
-    if (planes_[k].distance(farthest) < 0) return true;
+    if (p.distance(farthest) < 0) return true;
   }
   return false;
 #endif

@@ -18,7 +18,9 @@ namespace shadowkit::volume {
 class ShadowFrustum {
  public:
   ShadowFrustum() = default;  ///< empty, until assigned
-  ShadowFrustum(const Bounds3& box, const Light& light, const Reach& reach);
+  /// With \p view, whether the region can meet it is kept for reaches_view().
+  ShadowFrustum(const Bounds3& box, const Light& light, const Reach& reach,
+                const ViewFrustum* view = nullptr);
 
   /// Cuts the region by \p plane where it bounds the shadow volume of the convex hull of
   /// \p corners: all of them lie on one side of it, and the light does not lie strictly on
@@ -35,8 +37,10 @@ class ShadowFrustum {
   /// keeps only its cuts: the box's planes hold the volume anyway.
   void make_exact() {
     exact_ = !everywhere_ && !lost_;
-    if (exact_) plane_count_ = cuts_;
-    sync_lanes();
+    if (exact_) {
+      for (int k = cuts_; k < plane_count_; ++k) set_plane(k, Plane{});
+      plane_count_ = cuts_;
+    }
   }
   /// The planes of an exact region as cut, inward normals, not moved out: the volume is
   /// the points on their positive side. Empty when the region is only a bound.
@@ -46,23 +50,30 @@ class ShadowFrustum {
 
   /// No point of \p receiver can lie in the region: nothing inside the box shadows it.
   bool misses(const Bounds3& receiver) const;
-  /// Whether the region, within the reach, can meet the view.
-  bool reaches(const ViewFrustum& view) const { return everywhere_ || !view.excludes(hull_); }
+  /// Whether the region, within the reach, can meet the view given to the constructor.
+  bool reaches_view() const { return reaches_view_; }
 
  private:
   bool everywhere_ = false;  ///< a point light inside the box
   bool lost_ = false;        ///< a plane of the volume was refused: the region is larger
   bool exact_ = false;       ///< the region is the shadow volume itself (make_exact)
+  bool reaches_view_ = true;
   Light light_;
   double tolerance_ = 0;  ///< far above the rounding of distances to points in the reach
-  std::array<Plane, kMaxPlanes> planes_{};         ///< inward normals: the cuts, then the box's
   std::array<Plane, kMaxPlanes> volume_planes_{};  ///< the cuts before they were moved out
   int plane_count_ = 0, cuts_ = 0;
-  std::array<Vec3, 16> hull_{};  ///< the box's corners and the same pushed to the reach
-  Bounds3 hull_box_;
-  /// planes_ by component, padded to an even count with a plane that misses nothing.
+  Bounds3 hull_box_;  ///< of the box's corners and the same pushed to the reach
+  /// The planes by component, inward normals: the cuts, then the box's; the rest (and one
+  /// to pad an odd count) a plane that misses nothing.
   alignas(16) std::array<double, kMaxPlanes> nx_{}, ny_{}, nz_{}, nd_{};
-  void sync_lanes();
+  Plane plane(int k) const {
+    const auto i = std::size_t(k);
+    return {{nx_[i], ny_[i], nz_[i]}, nd_[i]};
+  }
+  void set_plane(int k, const Plane& p) {
+    const auto i = std::size_t(k);
+    nx_[i] = p.normal.x, ny_[i] = p.normal.y, nz_[i] = p.normal.z, nd_[i] = p.d;
+  }
 };
 
 }  // namespace shadowkit::volume

@@ -16,13 +16,13 @@
 namespace shadowkit::volume {
 namespace {
 
-// What one sub-object contributes for the current light.
-struct SubObjectVolume {
+// What a run of sub-objects contributes for the current light, made by one task.
+struct VolumeChunk {
+  static constexpr std::uint32_t kSubObjects = 64;
   std::vector<ShadowPolygon> polygons;
   std::vector<raster::ScreenPolygon> screen;  ///< face: the index into polygons
   int eye_count = 0;
-  bool depth_fail = false;
-  bool complete = true;  ///< every contour edge has its polygon
+  std::size_t depth_fail = 0;  ///< sub-objects counted depth-fail
 };
 
 // Depth-pass misses crossings the near plane clips away, so it needs every shadow polygon
@@ -105,15 +105,14 @@ class SubObjectEdges {
   std::vector<std::uint32_t> start_;
 };
 
-// Sub-object \p k's volume: depth-pass or depth-fail, decided for it alone (its volume is
-// closed on its own, SubObjects), so one caster near the eye leaves the rest of its mesh to
-// depth-pass, without caps.
-SubObjectVolume sub_object_volume(const Scene& scene, const SubObjects& parts, std::uint32_t k,
-                                  std::span<const ContourEdge> edges, const Light& light,
-                                  const Reach& reach, const ViewFrustum& view,
-                                  const RasterProjection& projection,
-                                  VolumeMethod::Counting counting) {
-  SubObjectVolume v;
+// Sub-object \p k's volume, into \p v: depth-pass or depth-fail, decided for it alone (its
+// volume is closed on its own, SubObjects), so one caster near the eye leaves the rest of its
+// mesh to depth-pass, without caps. Returns whether every contour edge has its polygon.
+bool add_sub_object_volume(const Scene& scene, const SubObjects& parts, std::uint32_t k,
+                           std::span<const ContourEdge> edges, const Light& light,
+                           const Reach& reach, const ViewFrustum& view,
+                           const RasterProjection& projection, VolumeMethod::Counting counting,
+                           VolumeChunk& v) {
   const SceneObject& object = scene.objects[scene.object_of_face(parts.faces(k)[0])];
   const Mesh& mesh = object.mesh;
   const Vec3 eye = scene.camera.position;
@@ -127,32 +126,35 @@ SubObjectVolume sub_object_volume(const Scene& scene, const SubObjects& parts, s
   for (std::uint32_t f : parts.faces(k)) faces.push_back(f - object.first_face);
   const std::optional<int> eye_count =
       faces_between_eye_and_light(mesh, faces, parts.bounds[k], eye, light);
-  v.depth_fail = counting == VolumeMethod::Counting::depth_fail ||
-                 (counting == VolumeMethod::Counting::automatic &&
-                  needs_depth_fail(mesh, edges, faces, light, eye, view, eye_count));
-  if (!v.depth_fail && !eye_count) {
+  const bool depth_fail = counting == VolumeMethod::Counting::depth_fail ||
+                          (counting == VolumeMethod::Counting::automatic &&
+                           needs_depth_fail(mesh, edges, faces, light, eye, view, eye_count));
+  if (!depth_fail && !eye_count) {
     // Only a forced depth-pass gets here: auto counts depth-fail where the eye's count is open.
     throw InputError("option 'volume.count'",
                      "pass needs the count at the eye, which object '" + object.name +
                          "' leaves undefined (the camera lies in one of its face planes, or its "
                          "ray to the light grazes an edge); use auto or fail");
   }
-  v.eye_count = v.depth_fail ? 0 : *eye_count;
+  v.eye_count += depth_fail ? 0 : *eye_count;
+  v.depth_fail += depth_fail;
   // Shadow polygons (Fig. 4), and the caps that close the volume for depth-fail.
+  const std::size_t first = v.polygons.size();
   thread_local std::vector<PolygonCorners> corners;
   corners.clear();
+  bool complete = true;
   for (const ContourEdge& e : edges) {
     PolygonCorners c;
-    if (auto p = side_polygon(mesh, e, light, reach, eye, v.depth_fail, c)) {
+    if (auto p = side_polygon(mesh, e, light, reach, eye, depth_fail, c)) {
       p->sub_object = k;
       for (std::uint32_t& f : p->edge_faces) f = f == kNoFace ? f : object.first_face + f;
       v.polygons.push_back(*p);
       corners.push_back(c);
     } else {
-      v.complete = false;
+      complete = false;
     }
   }
-  if (v.depth_fail) {
+  if (depth_fail) {
     for (std::uint32_t f : parts.faces(k)) {
       const auto [t0, t1] = face_triangles(scene, f);
       for (std::uint32_t t = t0; t < t1; ++t) {
@@ -162,9 +164,33 @@ SubObjectVolume sub_object_volume(const Scene& scene, const SubObjects& parts, s
   }
   // On screen now: the corners, 320 bytes a polygon, need not be kept.
   for (std::size_t i = 0; i < corners.size(); ++i) {
-    raster::setup_convex_polygon(corners[i].span(), std::uint32_t(i), projection, v.screen);
+    raster::setup_convex_polygon(corners[i].span(), std::uint32_t(first + i), projection, v.screen);
   }
-  return v;
+  return complete;
+}
+
+// The chunks' polygons and screen polygons, in order, into \p polygons and \p screen (their
+// storage kept from the last light); each sub-object's together: the counting pass culls
+// them per sub-object. Copied in parallel.
+void gather(std::vector<VolumeChunk>& chunks, std::vector<ShadowPolygon>& polygons,
+            std::vector<raster::ScreenPolygon>& screen) {
+  std::vector<std::size_t> polygon_at(chunks.size() + 1, 0), screen_at(chunks.size() + 1, 0);
+  for (std::size_t c = 0; c < chunks.size(); ++c) {
+    polygon_at[c + 1] = polygon_at[c] + chunks[c].polygons.size();
+    screen_at[c + 1] = screen_at[c] + chunks[c].screen.size();
+  }
+  polygons.resize(polygon_at.back());
+  screen.resize(screen_at.back());
+  tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
+    std::copy(chunks[c].polygons.begin(), chunks[c].polygons.end(),
+              polygons.begin() + std::ptrdiff_t(polygon_at[c]));
+    std::transform(chunks[c].screen.begin(), chunks[c].screen.end(),
+                   screen.begin() + std::ptrdiff_t(screen_at[c]), [&](raster::ScreenPolygon s) {
+                     s.face += std::uint32_t(polygon_at[c]);
+                     return s;
+                   });
+    chunks[c] = {};
+  });
 }
 
 VolumeMethod::Counting parse_counting(const MethodOptions& options) {
@@ -197,8 +223,8 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
   frusta_.assign(parts_.size(), ShadowFrustum{});
   std::vector<char> casting(parts_.size());
   tbb::parallel_for(std::size_t(0), parts_.size(), [&](std::size_t k) {
-    frusta_[k] = ShadowFrustum(parts_.bounds[k], light_, reach);
-    casting[k] = frusta_[k].reaches(view) || !frusta_[k].misses({cam.position, cam.position});
+    frusta_[k] = ShadowFrustum(parts_.bounds[k], light_, reach, &view);
+    casting[k] = frusta_[k].reaches_view() || !frusta_[k].misses({cam.position, cam.position});
   });
   // Crow's footprints: a sub-object wholly in the shadow of nearer ones adds no shadow.
   const std::vector<char> shadowed =
@@ -208,35 +234,30 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
   const RasterProjection projection =
       RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position));
   const SubObjectEdges edges(scene, parts_, casting, light_);
-  std::vector<SubObjectVolume> volumes(parts_.size());
-  tbb::parallel_for(std::uint32_t(0), std::uint32_t(parts_.size()), [&](std::uint32_t k) {
-    if (casting[k]) {
-      volumes[k] = sub_object_volume(scene, parts_, k, edges.of(k), light_, reach, view, projection,
-                                     counting_);
+  std::vector<char> complete(parts_.size(), 1);
+  const std::uint32_t parts = std::uint32_t(parts_.size());
+  std::vector<VolumeChunk> chunks((parts + VolumeChunk::kSubObjects - 1) /
+                                  VolumeChunk::kSubObjects);
+  tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
+    const std::uint32_t first = std::uint32_t(c) * VolumeChunk::kSubObjects;
+    for (std::uint32_t k = first; k < std::min(parts, first + VolumeChunk::kSubObjects); ++k) {
+      if (!casting[k]) continue;
+      complete[k] = add_sub_object_volume(scene, parts_, k, edges.of(k), light_, reach, view,
+                                          projection, counting_, chunks[c]);
     }
   });
-
-  // Each sub-object's polygons together: the counting pass culls them per sub-object.
-  polygons_.clear();
-  screen_.clear();
   eye_count_ = 0;
   depth_fail_sub_objects_ = 0;
+  for (const VolumeChunk& chunk : chunks) {
+    eye_count_ += chunk.eye_count;
+    depth_fail_sub_objects_ += double(chunk.depth_fail);
+  }
+  gather(chunks, polygons_, screen_);
   contour_edges_ = double(edges.size());
   contour_loops_ = double(edges.loops());
   open_loops_ = double(edges.open_loops());
   culled_sub_objects_ =
       double(std::count(casting.begin(), casting.end(), 0)) - shadowed_sub_objects_;
-  std::vector<char> complete(parts_.size(), 1);
-  for (std::uint32_t k = 0; k < parts_.size(); ++k) {
-    SubObjectVolume& v = volumes[k];
-    complete[k] = v.complete;
-    for (raster::ScreenPolygon& s : v.screen) s.face += std::uint32_t(polygons_.size());
-    screen_.insert(screen_.end(), v.screen.begin(), v.screen.end());
-    polygons_.insert(polygons_.end(), v.polygons.begin(), v.polygons.end());
-    eye_count_ += v.eye_count;
-    depth_fail_sub_objects_ += v.depth_fail;
-    v = {};
-  }
   cut_frusta(scene, complete);
 }
 
