@@ -60,12 +60,14 @@ ScreenPolygon from_triangle(const ScreenTriangle& t) {
 
 void setup_convex_polygon(std::span<const HomogeneousPoint> corners, std::uint32_t id,
                           const RasterProjection& view, std::vector<ScreenPolygon>& out) {
-  std::vector<FixedPoint> fixed = snapped_polygon(corners, view);
+  thread_local std::vector<FixedPoint> fixed;
+  snapped_polygon(corners, view, fixed);
   drop_repeats(fixed);
   const int orientation = convex_orientation(fixed);
   if (orientation == 0) {
     // Not convex after snapping (or no area): the fan's own triangles.
-    std::vector<ScreenTriangle> tris;
+    thread_local std::vector<ScreenTriangle> tris;
+    tris.clear();
     setup_polygon(corners, id, view, tris);
     for (const ScreenTriangle& t : tris) out.push_back(from_triangle(t));
     return;

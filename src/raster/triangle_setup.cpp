@@ -154,8 +154,9 @@ Vec4 crossing(Vec4 p, double dp, Vec4 q, double dq) {
           p.w + (q.w - p.w) * t};
 }
 
-std::vector<Vec4> clip(std::vector<Vec4> poly, const std::array<ClipPlane, kClipPlanes>& planes) {
-  std::vector<Vec4> next;
+// Clips \p poly in place; \p next is scratch.
+void clip(std::vector<Vec4>& poly, std::vector<Vec4>& next,
+          const std::array<ClipPlane, kClipPlanes>& planes) {
   for (int i = 0; i < kClipPlanes && poly.size() >= 3; ++i) {
     next.clear();
     for (std::size_t k = 0; k < poly.size(); ++k) {
@@ -166,17 +167,17 @@ std::vector<Vec4> clip(std::vector<Vec4> poly, const std::array<ClipPlane, kClip
     }
     poly.swap(next);
   }
-  return poly;
 }
 
 }  // namespace
 
-std::vector<FixedPoint> snapped_polygon(std::span<const HomogeneousPoint> corners,
-                                        const RasterProjection& view) {
+void snapped_polygon(std::span<const HomogeneousPoint> corners, const RasterProjection& view,
+                     std::vector<FixedPoint>& fixed) {
   // Points at infinity project like any other: pixel = offset + scale * x / z needs no w.
   SHADOWKIT_CHECK(!view.orthographic);
-  std::vector<Vec4> poly;
-  poly.reserve(corners.size());
+  // Scratch kept per thread: this runs per shadow polygon, hundreds of thousands a frame.
+  thread_local std::vector<Vec4> poly, next;
+  poly.clear();
   for (const HomogeneousPoint& c : corners) {
     const Vec3 v = c.xyz - view.eye * c.w;
     poly.push_back({dot(v, view.right), dot(v, view.up), dot(v, view.forward), c.w});
@@ -186,17 +187,16 @@ std::vector<FixedPoint> snapped_polygon(std::span<const HomogeneousPoint> corner
     return std::all_of(planes.begin(), planes.end(),
                        [&](const ClipPlane& plane) { return eval(plane, v) >= 0; });
   });
-  if (!inside) poly = clip(std::move(poly), planes);  // else clipping would keep it as it is
-  std::vector<FixedPoint> fixed;
-  if (poly.size() < 3) return fixed;
-  fixed.reserve(poly.size());
+  if (!inside) clip(poly, next, planes);  // else clipping would keep it as it is
+  fixed.clear();
+  if (poly.size() < 3) return;
   for (const Vec4& p : poly) fixed.push_back(to_fixed(view, p.xyz()));
-  return fixed;
 }
 
 void setup_polygon(std::span<const HomogeneousPoint> corners, std::uint32_t id,
                    const RasterProjection& view, std::vector<ScreenTriangle>& out) {
-  const std::vector<FixedPoint> fixed = snapped_polygon(corners, view);
+  thread_local std::vector<FixedPoint> fixed;
+  snapped_polygon(corners, view, fixed);
   TriangleBuilder builder(view, out);
   const DepthPlane none{0, 0, 0, true};
   for (std::size_t i = 2; i < fixed.size(); ++i)

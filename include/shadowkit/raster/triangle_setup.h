@@ -53,9 +53,10 @@ void setup_polygon(std::span<const HomogeneousPoint> corners, std::uint32_t id,
                    const RasterProjection& view, std::vector<ScreenTriangle>& out);
 
 /// The corners that setup_polygon fans into triangles: \p corners clipped against the near
-/// plane and the guard band of the perspective \p view and snapped to fixed point, in order.
-std::vector<FixedPoint> snapped_polygon(std::span<const HomogeneousPoint> corners,
-                                        const RasterProjection& view);
+/// plane and the guard band of the perspective \p view and snapped to fixed point, in order,
+/// into \p fixed.
+void snapped_polygon(std::span<const HomogeneousPoint> corners, const RasterProjection& view,
+                     std::vector<FixedPoint>& fixed);
 
 /// \brief One edge's boundary column, row after row, in exact integer arithmetic.
 class EdgeWalker {
