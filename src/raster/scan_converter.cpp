@@ -86,7 +86,7 @@ double nearest_key(const ScreenTriangle& t, int xa, int xb, int ya, int yb) {
 // Depth-tests the triangles \p bin over one tile. The winner of a pixel is the nearest
 // triangle and, between equally near ones, the lowest face id: the first in triangle order,
 // whatever order they are drawn in.
-void raster_tile(const std::vector<ScreenTriangle>& tris, const std::uint32_t* bin,
+void raster_tile(const raster::ScreenTriangles& tris, const std::uint32_t* bin,
                  std::size_t bin_size, int x0, int y0, int w, int h, TileBuffers& buf) {
   std::fill_n(buf.key, w * h, -INFINITY);
   std::fill_n(buf.face, w * h, kNoFace);
@@ -130,7 +130,7 @@ void raster_tile(const std::vector<ScreenTriangle>& tris, const std::uint32_t* b
 
 void ScanConverter::rasterize_tiles(const RasterProjection& view, const Context& /*ctx*/,
                                     const std::function<void(const RasterTile&)>& fn) const {
-  const std::vector<ScreenTriangle> tris = raster::setup_triangles(scene_, view);
+  const raster::ScreenTriangles tris = raster::setup_triangles(scene_, view);
   const TileBins bins(tris, view.width, view.height);
   const int tile_count = bins.tiles_x * bins.tiles_y;
   tbb::parallel_for(0, tile_count, [&](int tile) {

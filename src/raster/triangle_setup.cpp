@@ -241,7 +241,7 @@ SpanWalker::SpanWalker(const ScreenTriangle& t, int first_row)
     : edges_{EdgeWalker(t, 0, first_row), EdgeWalker(t, 1, first_row),
              EdgeWalker(t, 2, first_row)} {}
 
-std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const RasterProjection& view) {
+ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view) {
   const TriangleList& list = scene.triangles();
   const auto planes = clip_planes(view);
 
@@ -262,8 +262,12 @@ std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const RasterProj
   });
 
   const std::size_t nt = list.triangles.size();
-  constexpr std::size_t kChunk = 2048;
-  std::vector<std::vector<ScreenTriangle>> chunks((nt + kChunk - 1) / kChunk);
+  // A triangle clipped by the five planes has at most eight corners: six triangles.
+  constexpr std::size_t kChunk = ScreenTriangles::kChunkSize / 6;
+  ScreenTriangles out;
+  auto& chunks = out.chunks_;
+  chunks.resize((nt + kChunk - 1) / kChunk);
+  SHADOWKIT_CHECK(chunks.size() < (std::size_t(1) << (32 - ScreenTriangles::kPlaceBits)));
   tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
     TriangleBuilder builder(view, chunks[c]);
     Polygon poly;
@@ -291,12 +295,7 @@ std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const RasterProj
     }
   });
 
-  std::vector<ScreenTriangle> all;
-  std::size_t total = 0;
-  for (const auto& c : chunks) total += c.size();
-  all.reserve(total);
-  for (const auto& c : chunks) all.insert(all.end(), c.begin(), c.end());
-  return all;
+  return out;
 }
 
 }  // namespace shadowkit::raster

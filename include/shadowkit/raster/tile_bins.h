@@ -10,15 +10,15 @@
 
 namespace shadowkit::raster {
 
-/// \brief Counting sort of triangle indices into the tiles their bounds overlap; each bin
-/// keeps triangle order.
+/// \brief Counting sort of triangle ids into the tiles their bounds overlap; each bin keeps
+/// triangle order.
 struct TileBins {
   static constexpr int kTile = ScanConverter::kTileSize;
   int tiles_x = 0, tiles_y = 0;
   std::vector<std::uint32_t> start;
   std::vector<std::uint32_t> items;
 
-  TileBins(const std::vector<ScreenTriangle>& tris, int width, int height)
+  TileBins(const ScreenTriangles& tris, int width, int height)
       : tiles_x((width + kTile - 1) / kTile), tiles_y((height + kTile - 1) / kTile) {
     std::vector<std::uint32_t> count(std::size_t(tiles_x) * tiles_y + 1, 0);
     for_each_tile(tris, [&](std::size_t tile, std::uint32_t) { ++count[tile + 1]; });
@@ -34,15 +34,14 @@ struct TileBins {
   int tile_count() const { return tiles_x * tiles_y; }
 
   template <class Fn>
-  void for_each_tile(const std::vector<ScreenTriangle>& tris, Fn&& fn) const {
-    for (std::uint32_t t = 0; t < tris.size(); ++t) {
-      const ScreenTriangle& s = tris[t];
+  void for_each_tile(const ScreenTriangles& tris, Fn&& fn) const {
+    tris.for_each([&](std::uint32_t t, const ScreenTriangle& s) {
       for (int ty = s.min_y / kTile; ty <= s.max_y / kTile; ++ty) {
         for (int tx = s.min_x / kTile; tx <= s.max_x / kTile; ++tx) {
           fn(std::size_t(ty) * tiles_x + tx, t);
         }
       }
-    }
+    });
   }
 };
 

@@ -28,9 +28,38 @@ struct ScreenTriangle {
   std::uint32_t face;
 };
 
+/// \brief Screen triangles in chunks, as they were set up in parallel, never copied into one
+/// array: at 360k triangles that copy and the page faults of its fresh storage cost more
+/// than the set-up. An id holds the chunk and the place in it; ids follow triangle order.
+class ScreenTriangles {
+ public:
+  static constexpr int kPlaceBits = 12;
+  static constexpr std::size_t kChunkSize = std::size_t(1) << kPlaceBits;
+
+  const ScreenTriangle& operator[](std::uint32_t id) const {
+    return chunks_[id >> kPlaceBits][id & (kChunkSize - 1)];
+  }
+  /// Calls fn(id, triangle) for every triangle, in id order.
+  template <class Fn>
+  void for_each(Fn&& fn) const {
+    for (std::uint32_t c = 0; c < chunks_.size(); ++c) {
+      for (std::uint32_t i = 0; i < chunks_[c].size(); ++i) fn(c << kPlaceBits | i, chunks_[c][i]);
+    }
+  }
+  std::size_t size() const {
+    std::size_t n = 0;
+    for (const auto& c : chunks_) n += c.size();
+    return n;
+  }
+
+ private:
+  friend ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view);
+  std::vector<std::vector<ScreenTriangle>> chunks_;
+};
+
 /// Clips and sets up every triangle of \p scene for \p view, in triangle order (so that the
 /// tie rule "lower triangle index wins" survives binning). Runs in parallel.
-std::vector<ScreenTriangle> setup_triangles(const Scene& scene, const RasterProjection& view);
+ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view);
 
 /// \brief A point in fixed-point pixel coordinates (1/kSubpixel pixel, y down).
 struct FixedPoint {
