@@ -42,10 +42,14 @@ class ScreenTriangles {
   /// Calls fn(id, triangle) for every triangle, in id order.
   template <class Fn>
   void for_each(Fn&& fn) const {
-    for (std::uint32_t c = 0; c < chunks_.size(); ++c) {
-      for (std::uint32_t i = 0; i < chunks_[c].size(); ++i) fn(c << kPlaceBits | i, chunks_[c][i]);
-    }
+    for (std::uint32_t c = 0; c < chunks_.size(); ++c) for_each_in_chunk(c, fn);
   }
+  /// Calls fn(id, triangle) for the triangles of chunk \p c, in id order.
+  template <class Fn>
+  void for_each_in_chunk(std::uint32_t c, Fn&& fn) const {
+    for (std::uint32_t i = 0; i < chunks_[c].size(); ++i) fn(c << kPlaceBits | i, chunks_[c][i]);
+  }
+  std::uint32_t chunk_count() const { return std::uint32_t(chunks_.size()); }
   std::size_t size() const {
     std::size_t n = 0;
     for (const auto& c : chunks_) n += c.size();
