@@ -150,6 +150,23 @@ def code(scene):
 
 # ---------------------------------------------------------------------------- report
 
+def raytrace_medians(rows):
+    """raytrace per light: the median of its runs among ROWS (several processes' rows)."""
+    rows = [r for r in rows if r.get("method") == "raytrace"]
+    out = []
+    for light in sorted({r["light"] for r in rows}):
+        mine = [r for r in rows if r["light"] == light]
+        ok = [r for r in mine if "failed" not in r]
+        if not ok:
+            out.append(mine[0])
+            continue
+        out.append({"method": "raytrace", "light": light,
+                    **{k: median([r[k] for r in ok]) for k in
+                       ("prepare_ms", "build_ms", "shade_ms", "memory_bytes")},
+                    "counters": ok[0].get("counters", {})})
+    return out
+
+
 def report(work, out, summary_path):
     meta = load(os.path.join(work, "meta.json"))
     scenes = meta["scenes"]
@@ -171,19 +188,7 @@ def report(work, out, summary_path):
 
     def raytrace_rows(p, scene):
         """raytrace per light in a pass: the median of its runs in every process of the pass."""
-        rows = [r for r in all_rows(p, scene) if r.get("method") == "raytrace"]
-        out = []
-        for light in sorted({r["light"] for r in rows}):
-            mine = [r for r in rows if r["light"] == light]
-            ok = [r for r in mine if "failed" not in r]
-            if not ok:
-                out.append(mine[0])
-                continue
-            out.append({"method": "raytrace", "light": light,
-                        **{k: median([r[k] for r in ok]) for k in
-                           ("prepare_ms", "build_ms", "shade_ms", "memory_bytes")},
-                        "counters": ok[0].get("counters", {})})
-        return out
+        return raytrace_medians(all_rows(p, scene))
 
     # cells[method][scene] = [Cell per pass]
     cells = {m: {s: [Cell(rows_of(p, s, m, m), rows_of(p, s, m, "raytrace"))

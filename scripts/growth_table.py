@@ -165,18 +165,7 @@ class Figures:
 
 def raytrace_rows(processes):
     """raytrace per light: the median of its runs in every process of a pass."""
-    rows = [r for rs in processes for r in rs if r.get("method") == "raytrace"]
-    out = []
-    for light in sorted({r["light"] for r in rows}):
-        mine = [r for r in rows if r["light"] == light]
-        ok = [r for r in mine if "failed" not in r]
-        if not ok:
-            out.append(mine[0])
-            continue
-        out.append({"method": "raytrace", "light": light,
-                    **{k: br.median([r[k] for r in ok])
-                       for k in ("prepare_ms", "build_ms", "shade_ms", "memory_bytes")}})
-    return out
+    return br.raytrace_medians([r for rs in processes for r in rs])
 
 
 def scan_ratio(rows):

@@ -14,18 +14,25 @@
 namespace shadowkit {
 namespace {
 
-// How many triangles own each pixel centre (the fill rule, independent of depth).
-Image<int> coverage(const Scene& scene, const RasterProjection& view) {
-  Image<int> count(view.width, view.height, 0);
+// Calls fn(triangle, x, y) for every pixel centre each set-up triangle owns, in triangle order.
+template <class Fn>
+void for_each_owned_pixel(const Scene& scene, const RasterProjection& view, Fn&& fn) {
   raster::setup_triangles(scene, view)
       .for_each([&](std::uint32_t, const raster::ScreenTriangle& t) {
         raster::SpanWalker walker(t, t.min_y);
         for (int y = t.min_y; y <= t.max_y; ++y, walker.next_row()) {
           int x0 = t.min_x, x1 = t.max_x;
           if (!walker.span(x0, x1)) continue;
-          for (int x = x0; x <= x1; ++x) ++count.at(x, y);
+          for (int x = x0; x <= x1; ++x) fn(t, x, y);
         }
       });
+}
+
+// How many triangles own each pixel centre (the fill rule, independent of depth).
+Image<int> coverage(const Scene& scene, const RasterProjection& view) {
+  Image<int> count(view.width, view.height, 0);
+  for_each_owned_pixel(scene, view,
+                       [&](const raster::ScreenTriangle&, int x, int y) { ++count.at(x, y); });
   return count;
 }
 
@@ -141,19 +148,11 @@ TEST(ScanConverter, NearestFaceWinsWithoutBackFaceCulling) {
 DepthFaceBuffer in_triangle_order(const Scene& scene, const RasterProjection& view) {
   std::vector<double> key(std::size_t(view.width) * view.height, -INFINITY);
   std::vector<std::uint32_t> face(key.size(), kNoFace);
-  raster::setup_triangles(scene, view)
-      .for_each([&](std::uint32_t, const raster::ScreenTriangle& t) {
-        raster::SpanWalker walker(t, t.min_y);
-        for (int y = t.min_y; y <= t.max_y; ++y, walker.next_row()) {
-          int x0 = t.min_x, x1 = t.max_x;
-          if (!walker.span(x0, x1)) continue;
-          for (int x = x0; x <= x1; ++x) {
-            const std::size_t i = std::size_t(y) * view.width + x;
-            const double z = t.key_a * x + (t.key_b * y + t.key_c);
-            if (z > key[i]) key[i] = z, face[i] = t.face;
-          }
-        }
-      });
+  for_each_owned_pixel(scene, view, [&](const raster::ScreenTriangle& t, int x, int y) {
+    const std::size_t i = std::size_t(y) * view.width + x;
+    const double z = t.key_a * x + (t.key_b * y + t.key_c);
+    if (z > key[i]) key[i] = z, face[i] = t.face;
+  });
   DepthFaceBuffer out;
   out.width = view.width, out.height = view.height, out.face = face;
   for (double k : key) out.depth_key.push_back(float(k));

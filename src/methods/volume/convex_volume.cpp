@@ -6,38 +6,15 @@
 #include <cstring>
 #include <limits>
 
+#include "convex_hull.h"
+
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
 namespace shadowkit::volume {
-namespace {
 
 using raster::FixedPoint;
-
-// The convex hull of \p p (Andrew's monotone chain), positively oriented as ScreenPolygon's
-// corners, without repeated or collinear corners; \p p is reordered. Exact: fixed point.
-std::size_t convex_hull(std::span<FixedPoint> p, std::vector<FixedPoint>& hull) {
-  std::sort(p.begin(), p.end(),
-            [](FixedPoint a, FixedPoint b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  const auto turn = [](FixedPoint o, FixedPoint a, FixedPoint b) {
-    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-  };
-  if (p.empty()) return 0;
-  hull.resize(2 * p.size() + 1);
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    while (n >= 2 && turn(hull[n - 2], hull[n - 1], p[i]) <= 0) --n;
-    hull[n++] = p[i];
-  }
-  for (std::size_t i = p.size() - 1, lower = n + 1; i-- > 0;) {
-    while (n >= lower && turn(hull[n - 2], hull[n - 1], p[i]) <= 0) --n;
-    hull[n++] = p[i];
-  }
-  return n > 1 ? n - 1 : n;  // the last corner repeats the first
-}
-
-}  // namespace
 
 bool outline_columns(std::span<const OutlineEdge> outline, int ya, int yb, int& xa, int& xb) {
   // Rows widened by a pixel: the corners were snapped, the centres' coverage is the raster's.

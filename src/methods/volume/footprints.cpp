@@ -6,6 +6,8 @@
 #include <numeric>
 #include <optional>
 
+#include "convex_hull.h"
+
 namespace shadowkit::volume {
 namespace {
 
@@ -106,30 +108,6 @@ class LightView {
   Point2 origin_{};
   double scale_ = 0;
 };
-
-// Convex hull of \p p (Andrew's monotone chain), counter-clockwise, into \p hull.
-void convex_hull(std::vector<Point2> p, std::vector<Point2>& hull) {
-  if (p.size() < 3) {
-    hull = p;
-    return;
-  }
-  std::sort(p.begin(), p.end(),
-            [](Point2 a, Point2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  hull.assign(2 * p.size(), {});
-  std::size_t k = 0;
-  const auto turn = [](Point2 o, Point2 a, Point2 b) {
-    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-  };
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && turn(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-    hull[k++] = p[i];
-  }
-  for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && turn(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-    hull[k++] = p[i];
-  }
-  hull.resize(k > 1 ? k - 1 : k);
-}
 
 // The columns [left, right] of a convex polygon along the line at height \p y; empty
 // (left > right) where the line misses it.
@@ -237,7 +215,7 @@ std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& lig
     }
     if (!parts.convex[k]) continue;  // only a convex hull of its corners is its footprint
     if (const auto face = view.project(parts.corners(k), points)) {
-      convex_hull(points, hull);
+      hull.resize(convex_hull(std::span(points), hull));
       if (hull.size() >= 3) grid.add(*face, hull, view.far(parts.corners(k)));
     }
   }
