@@ -95,7 +95,9 @@ void raster_tile(const raster::ScreenTriangles& tris, const std::uint32_t* bin,
   buf.order.clear();
   for (std::size_t k = 0; k < bin_size; ++k) {
     const ScreenTriangle& t = tris[bin[k]];
-    buf.order.emplace_back(nearest_key(t, t.min_x, t.max_x, t.min_y, t.max_y), bin[k]);
+    buf.order.emplace_back(nearest_key(t, std::max(x0, t.min_x), std::min(x0 + w - 1, t.max_x),
+                                       std::max(y0, t.min_y), std::min(y0 + h - 1, t.max_y)),
+                           bin[k]);
   }
   std::sort(buf.order.begin(), buf.order.end(),
             [](const auto& a, const auto& b) { return a.first > b.first; });
