@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "shadowkit/methods/shadow_method.h"
 
@@ -37,6 +38,11 @@ void merge_if_uniform(const ConvexPolygon& piece, std::size_t first, std::vector
 
 }  // namespace
 
+FarSide far_side_of(const OutwardSolids& solids, const Scene& scene, const Light& light) {
+  return
+      [&solids, &scene, light](std::uint32_t face) { return solids.far_side(scene, face, light); };
+}
+
 FrontFacing front_facing(const Scene& scene, const Light& light) {
   const double in_plane = in_plane_tolerance(scene, light);
   FrontFacing count;
@@ -50,9 +56,11 @@ FrontFacing front_facing(const Scene& scene, const Light& light) {
   return count;
 }
 
-ShadowGenerator::ShadowGenerator(const Scene& scene, const Light& light, bool merge_siblings)
+ShadowGenerator::ShadowGenerator(const Scene& scene, const Light& light, bool merge_siblings,
+                                 FarSide far_side)
     : scene_(scene),
       light_(light),
+      far_side_(std::move(far_side)),
       in_plane_(in_plane_tolerance(scene, light)),
       tree_(light, plane_tolerance(scene, light), merge_siblings) {}
 
@@ -63,12 +71,14 @@ bool ShadowGenerator::in_light_plane(const ConvexPolygon& piece) const {
 void ShadowGenerator::process(std::span<const ConvexPolygon> coplanar, std::vector<Fragment>& out) {
   // Pieces of one plane cannot shadow one another, but where two of them overlap, the
   // first one's volume would hold the second: classify all, then enlarge.
-  const bool together = coplanar.size() > 1;
+  const auto far = std::count_if(coplanar.begin(), coplanar.end(),
+                                 [this](const ConvexPolygon& p) { return far_side(p); });
+  const bool together = std::ssize(coplanar) - far > 1;
   const std::size_t group = out.size();
   for (const ConvexPolygon& piece : coplanar) {
     const std::size_t first = out.size();
-    if (in_light_plane(piece)) {
-      out.push_back({piece, false});  // Fig. 3: the light is in its plane
+    if ((far > 0 && far_side(piece)) || in_light_plane(piece)) {
+      out.push_back({piece, false});  // Fig. 3: the light is in its plane, or the far side
       continue;
     }
     ++light_facing_;
@@ -85,8 +95,8 @@ void ShadowGenerator::process(std::span<const ConvexPolygon> coplanar, std::vect
 }
 
 LightFragments generate_shadows(const SceneBsp& bsp, const Scene& scene, const Light& light,
-                                bool merge_siblings) {
-  ShadowGenerator generator(scene, light, merge_siblings);
+                                bool merge_siblings, const FarSide& far_side) {
+  ShadowGenerator generator(scene, light, merge_siblings, far_side);
   LightFragments result;
   bsp.front_to_back(light, [&](std::span<const ConvexPolygon> coplanar) {
     generator.process(coplanar, result.fragments);

@@ -1,6 +1,5 @@
 // The lit area of every face for a sequence of directional lights (the sun study): one
 // scene BSP tree (§3), one SVBSP tree per light (§4), areas summed as fragments come.
-#include <numeric>
 #include <span>
 
 #include "fragment_raster.h"
@@ -11,39 +10,12 @@
 namespace shadowkit::svbsp {
 namespace {
 
-std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t f) {
-  while (parent[f] != f) f = parent[f] = parent[parent[f]];
-  return f;
-}
-
-// Per global face: 1 when the face bounds a solid and its normal points out of it, so that
-// a face turned from the light is shadowed by the solid's own faces turned toward it (a ray
-// entering the solid there leaves it through one of those). Such faces neither receive light
-// nor cast a shadow that the solid does not, and the SVBSP tree need not see them. The
-// solids: the connected parts of closed, consistently oriented meshes whose signed volume is
-// positive (a part turned inside out, or a cavity's lining, keeps every face).
+// Per global face: 1 when it bounds an outward solid (OutwardSolids): turned from the sun,
+// it neither receives light nor casts a shadow that the solid does not.
 std::vector<char> outward_solid_faces(const Scene& scene) {
-  std::vector<char> outward(scene.face_count(), 0);
-  for (const SceneObject& object : scene.objects) {
-    const Mesh& mesh = object.mesh;
-    if (!mesh.closed() || !mesh.consistently_oriented()) continue;
-    std::vector<std::uint32_t> part(mesh.face_count());
-    std::iota(part.begin(), part.end(), 0u);
-    for (const MeshEdge& edge : mesh.edges) {
-      const std::uint32_t a = find_root(part, mesh.edge_uses[edge.first_use].face);
-      const std::uint32_t b = find_root(part, mesh.edge_uses[edge.first_use + 1].face);
-      part[a] = b;
-    }
-    // The divergence theorem: volume = sum of area * (normal . a point of the face) / 3.
-    std::vector<double> volume(mesh.face_count(), 0.0);
-    for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
-      const Vec3 corner = mesh.vertices[mesh.face_vertex(f, 0)];
-      volume[find_root(part, f)] += mesh.areas[f] * dot(mesh.planes[f].normal, corner) / 3;
-    }
-    for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
-      outward[object.first_face + f] = volume[find_root(part, f)] > 0;
-    }
-  }
+  const OutwardSolids solids(scene);
+  std::vector<char> outward(scene.face_count());
+  for (std::uint32_t f = 0; f < scene.face_count(); ++f) outward[f] = solids.bounds_solid(f);
   return outward;
 }
 
@@ -71,28 +43,16 @@ std::vector<double> SunlitAreas::lit_areas(Vec3 toward_light, const VisibleSurfa
 std::vector<double> SunlitAreas::filter(Vec3 toward_light, std::vector<Fragment>* lit_out) const {
   const Light light = Light::directional(-toward_light);
   std::vector<double> lit(scene_.face_count(), 0.0);
-  ShadowGenerator generator(scene_, light);
-  const auto turned_away = [&](const ConvexPolygon& piece) {
-    return outward_solid_faces_[piece.face] &&
-           dot(scene_.face_plane(piece.face).normal, toward_light) < 0;
-  };
+  // The sun is outside every solid: a face of one is on its far side when turned away.
+  ShadowGenerator generator(scene_, light, true, [&](std::uint32_t face) {
+    return outward_solid_faces_[face] && dot(scene_.face_plane(face).normal, toward_light) < 0;
+  });
   // Fragments are summed node by node and dropped: only the tree must grow (§4), not the
   // list of every fragment the fragments command keeps.
   std::vector<Fragment> fragments;
-  std::vector<ConvexPolygon> kept;
   bsp_->front_to_back(light, [&](std::span<const ConvexPolygon> coplanar) {
     fragments.clear();
-    // A node's pieces share a plane but may face either way along it.
-    const auto away = std::count_if(coplanar.begin(), coplanar.end(), turned_away);
-    if (away == std::ssize(coplanar)) return;
-    if (away == 0) {
-      generator.process(coplanar, fragments);
-    } else {
-      kept.clear();
-      std::copy_if(coplanar.begin(), coplanar.end(), std::back_inserter(kept),
-                   [&](const ConvexPolygon& p) { return !turned_away(p); });
-      generator.process(kept, fragments);
-    }
+    generator.process(coplanar, fragments);
     for (Fragment& f : fragments) {
       if (!f.lit) continue;
       lit[f.polygon.face] += area(f.polygon);

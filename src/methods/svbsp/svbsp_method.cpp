@@ -24,12 +24,14 @@ SvbspMethod::SvbspMethod(const MethodOptions& options) {
 
 void SvbspMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
   bsp_ = svbsp::SceneBsp::build(scene);
+  solids_.emplace(scene);
 }
 
 void SvbspMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
-  SHADOWKIT_CHECK(bsp_.has_value());
+  SHADOWKIT_CHECK(bsp_.has_value() && solids_.has_value());
   light_ = scene.lights[light];
-  result_ = svbsp::generate_shadows(*bsp_, scene, light_, merge_siblings_);
+  result_ = svbsp::generate_shadows(*bsp_, scene, light_, merge_siblings_,
+                                    svbsp::far_side_of(*solids_, scene, light_));
   if (shadowed_only_) {  // §6: one light at a time, the lit fragments are thrown away
     std::erase_if(result_.fragments, [](const svbsp::Fragment& f) { return f.lit; });
   }

@@ -11,7 +11,8 @@ namespace shadowkit::svbsp {
 
 /// \brief Chin & Feiner 1989: a scene BSP tree built once (prepare), per light an SVBSP
 /// tree grown from the light-facing pieces in front-to-back order, which splits every piece
-/// into lit and shadowed fragments (build); the mask renders the lit fragments with the
+/// into lit and shadowed fragments (build; pieces on the far side of their solid are
+/// shadowed whole, OutwardSolids); the mask renders the lit fragments with the
 /// shared scan converter (shade). Option shadowed_only=1 (§6): keep only the shadowed
 /// fragments and draw them over the lit faces; the same mask but at a rare pixel on a
 /// face's outline (see shade_fragments), less memory. Option merge_siblings=0 turns off
@@ -35,6 +36,7 @@ class SvbspMethod final : public ShadowMethod {
   bool shadowed_only_ = false;
   bool merge_siblings_ = true;
   std::optional<svbsp::SceneBsp> bsp_;
+  std::optional<svbsp::OutwardSolids> solids_;
   Light light_;
   svbsp::LightFragments result_;
   // Table 1's columns for the last light.

@@ -1,0 +1,69 @@
+#include "outward_solids.h"
+
+#include <numeric>
+
+#include "shadowkit/methods/shadow_method.h"
+
+namespace shadowkit::svbsp {
+namespace {
+
+std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t f) {
+  while (parent[f] != f) f = parent[f] = parent[parent[f]];
+  return f;
+}
+
+// Per local face of \p mesh, its connected part: faces sharing an edge are in one part.
+std::vector<std::uint32_t> connected_parts(const Mesh& mesh) {
+  std::vector<std::uint32_t> part(mesh.face_count());
+  std::iota(part.begin(), part.end(), 0u);
+  for (const MeshEdge& edge : mesh.edges) {
+    const std::uint32_t a = find_root(part, mesh.edge_uses[edge.first_use].face);
+    const std::uint32_t b = find_root(part, mesh.edge_uses[edge.first_use + 1].face);
+    part[a] = b;
+  }
+  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) find_root(part, f);
+  return part;
+}
+
+bool outside(const Bounds3& box, Vec3 p) {
+  return p.x < box.lo.x || p.y < box.lo.y || p.z < box.lo.z || p.x > box.hi.x || p.y > box.hi.y ||
+         p.z > box.hi.z;
+}
+
+}  // namespace
+
+OutwardSolids::OutwardSolids(const Scene& scene) : solid_(scene.face_count(), -1) {
+  for (const SceneObject& object : scene.objects) {
+    const Mesh& mesh = object.mesh;
+    if (!mesh.closed() || !mesh.consistently_oriented()) continue;
+    const std::vector<std::uint32_t> part = connected_parts(mesh);
+    // The divergence theorem: volume = sum of area * (normal . a point of the face) / 3.
+    std::vector<double> volume(mesh.face_count(), 0.0);
+    std::vector<Bounds3> box(mesh.face_count());
+    for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
+      const Vec3 corner = mesh.vertices[mesh.face_vertex(f, 0)];
+      volume[part[f]] += mesh.areas[f] * dot(mesh.planes[f].normal, corner) / 3;
+      for (std::uint32_t k = 0; k < mesh.face_size(f); ++k) {
+        box[part[f]].add(mesh.vertices[mesh.face_vertex(f, k)]);
+      }
+    }
+    std::vector<std::int32_t> solid_of_part(mesh.face_count(), -1);
+    for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
+      const std::uint32_t p = part[f];
+      if (!(volume[p] > 0)) continue;
+      if (solid_of_part[p] < 0) {
+        solid_of_part[p] = std::int32_t(bounds_.size());
+        bounds_.push_back(box[p]);
+      }
+      solid_[object.first_face + f] = solid_of_part[p];
+    }
+  }
+}
+
+bool OutwardSolids::far_side(const Scene& scene, std::uint32_t face, const Light& light) const {
+  const std::int32_t solid = solid_[face];
+  if (solid < 0 || !(light_side(scene.face_plane(face), light) < 0)) return false;
+  return light.type != Light::Type::point || outside(bounds_[std::size_t(solid)], light.position);
+}
+
+}  // namespace shadowkit::svbsp
