@@ -1,7 +1,13 @@
 #include "scene_bsp.h"
 
+#include <tbb/concurrent_vector.h>
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 #include <array>
+#include <memory>
+#include <numeric>
+#include <optional>
 #include <utility>
 
 #include "shadowkit/scene/triangulate.h"
@@ -11,8 +17,15 @@ namespace {
 
 // Candidate planes tried per node: enough to avoid bad roots, few enough for O(n log n).
 constexpr std::size_t kCandidates = 8;
+// Polygons the candidates are scored on: past this many, an evenly spread sample, so that
+// choosing costs the same at every node and the build is the partitioning's O(n log n).
+constexpr std::size_t kSample = 128;
+// Subtrees of at least this many polygons are built in parallel: they are independent.
+constexpr std::size_t kParallelGrain = 2048;
 // No polygon defines the splitter.
-constexpr std::size_t kNoPolygon = ~std::size_t(0);
+constexpr std::uint32_t kNoPolygon = ~std::uint32_t(0);
+
+using Ids = std::vector<std::uint32_t>;
 
 bool is_convex(const Mesh& mesh, std::size_t f) {
   const std::uint32_t n = mesh.face_size(f);
@@ -38,10 +51,12 @@ struct PlaneScore {
   }
 };
 
-PlaneScore score(const std::vector<ConvexPolygon>& polygons, const Plane& plane, double eps) {
+using Sample = std::vector<const ConvexPolygon*>;
+
+PlaneScore score(const Sample& polygons, const Plane& plane, double eps) {
   PlaneScore s;
-  for (const ConvexPolygon& p : polygons) {
-    const PlaneSides sides = classify(p, plane, eps);
+  for (const ConvexPolygon* p : polygons) {
+    const PlaneSides sides = classify(*p, plane, eps);
     s.splits += sides.spanning();
     s.front += sides.positive;
     s.back += sides.negative;
@@ -49,34 +64,61 @@ PlaneScore score(const std::vector<ConvexPolygon>& polygons, const Plane& plane,
   return s;
 }
 
-// The plane across the longest axis of the polygons' centroids, through their median: a
-// splitter that holds no polygon but halves the set.
-Plane median_plane(const std::vector<ConvexPolygon>& polygons) {
-  std::vector<Vec3> centroids;
-  Bounds3 box;
-  for (const ConvexPolygon& p : polygons) {
-    Vec3 c;
-    for (const Vec3& v : p.vertices) c += v;
-    centroids.push_back(c / double(p.vertices.size()));
-    box.add(centroids.back());
+// The plane across \p axis that a sweep over the polygons' extents along it finds cheapest,
+// and its score from the extents: it holds no polygon, and in a field of objects it runs
+// through the gaps between them.
+std::pair<Plane, PlaneScore> axis_plane(const Sample& polygons, int axis) {
+  std::vector<double> lo, hi;
+  for (const ConvexPolygon* p : polygons) {
+    double a = p->vertices[0][axis], b = a;
+    for (const Vec3& v : p->vertices) a = std::min(a, v[axis]), b = std::max(b, v[axis]);
+    lo.push_back(a);
+    hi.push_back(b);
   }
-  const Vec3 e = box.extent();
-  const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
-  std::vector<double> coordinate;
-  for (const Vec3& c : centroids) coordinate.push_back(c[axis]);
-  const auto mid = coordinate.begin() + std::ptrdiff_t(coordinate.size() / 2);
-  std::nth_element(coordinate.begin(), mid, coordinate.end());
+  std::sort(lo.begin(), lo.end());
+  std::sort(hi.begin(), hi.end());
+  // Positions: past each polygon's far end, halfway to the next start (off every vertex,
+  // in the gap if there is one). Behind: the polygons ending before c; in front: those
+  // starting after it; split: the others, counted on both sides as score() does.
+  // c grows with the far end, so the counts come from pointers that only move forward.
+  double best = 0;
+  PlaneScore best_score{polygons.size(), 0, 0};
+  std::size_t next = 0, back = 0;
+  for (const double end : hi) {
+    while (next < lo.size() && lo[next] <= end) ++next;
+    if (next == lo.size()) break;
+    const double c = 0.5 * (end + lo[next]);
+    while (back < hi.size() && hi[back] < c) ++back;
+    const std::size_t front = lo.size() - next;  // no start lies in (end, c)
+    const std::size_t splits = polygons.size() - std::min(polygons.size(), back + front);
+    const PlaneScore s{splits, front + splits, back + splits};
+    if (s.cost() < best_score.cost()) best = c, best_score = s;
+  }
   Plane plane;
   plane.normal[axis] = 1;
-  plane.d = -*mid;
-  return plane;
+  plane.d = -best;
+  return {plane, best_score};
 }
 
-std::size_t largest(const std::vector<ConvexPolygon>& polygons) {
+// The cheapest of the three axis planes that leave a whole polygon on each side (holding
+// no polygon, a splitter must, or a half would not be smaller).
+std::optional<std::pair<Plane, PlaneScore>> best_axis_plane(const Sample& polygons) {
+  std::optional<std::pair<Plane, PlaneScore>> best;
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto candidate = axis_plane(polygons, axis);
+    const PlaneScore& s = candidate.second;
+    if (s.front > s.splits && s.back > s.splits && (!best || s.cost() < best->second.cost())) {
+      best = candidate;
+    }
+  }
+  return best;
+}
+
+std::size_t largest(const Sample& polygons) {
   std::size_t best = 0;
   double best_area = -1;
   for (std::size_t i = 0; i < polygons.size(); ++i) {
-    const double a = area(polygons[i]);
+    const double a = area(*polygons[i]);
     if (a > best_area) best = i, best_area = a;
   }
   return best;
@@ -109,70 +151,130 @@ std::vector<ConvexPolygon> convex_faces(const Scene& scene) {
   return out;
 }
 
+// A node under construction: subtrees are built in parallel into drafts, which are then
+// laid out in one fixed order.
+struct SceneBsp::Draft {
+  Plane plane;
+  Ids here;  ///< pieces in the plane, into the builder's pool
+  std::unique_ptr<Draft> front, back;
+};
+
+// Builds drafts over a pool of polygons that splitting only appends to, so that ids and
+// references stay valid while other subtrees grow it.
+class SceneBsp::Builder {
+ public:
+  Builder(const Scene& scene, double eps, std::vector<ConvexPolygon> inputs)
+      : scene_(scene), eps_(eps), pool_(inputs.begin(), inputs.end()) {}
+
+  std::size_t size() const { return pool_.size(); }
+  ConvexPolygon& polygon(std::uint32_t id) { return pool_[id]; }
+
+  std::unique_ptr<Draft> build(const Ids& ids) {
+    if (ids.empty()) return nullptr;
+    auto draft = std::make_unique<Draft>();
+    const auto [plane, best] = choose_splitter(ids);
+    draft->plane = plane;
+    Ids front, back;
+    partition(ids, best, *draft, front, back);
+    if (ids.size() >= kParallelGrain) {
+      tbb::parallel_invoke([&] { draft->front = build(front); },
+                           [&] { draft->back = build(back); });
+    } else {
+      draft->front = build(front);
+      draft->back = build(back);
+    }
+    return draft;
+  }
+
+ private:
+  // Up to kSample of \p ids, evenly spread.
+  static Ids sample(const Ids& ids) {
+    const std::size_t n = std::min(ids.size(), kSample);
+    Ids out(n);
+    for (std::size_t i = 0; i < n; ++i) out[i] = ids[i * ids.size() / n];
+    return out;
+  }
+
+  // The splitter of \p ids and the polygon defining it (kNoPolygon for none). A plane across
+  // an axis that splits no polygon of the sample runs through a gap: taken at once. Else
+  // the face plane or axis plane of lowest cost.
+  std::pair<Plane, std::uint32_t> choose_splitter(const Ids& ids) {
+    const Ids sampled = sample(ids);
+    Sample polygons;
+    for (const std::uint32_t id : sampled) polygons.push_back(&pool_[id]);
+    std::optional<std::pair<Plane, PlaneScore>> across;
+    if (polygons.size() > kCandidates) across = best_axis_plane(polygons);
+    if (across && across->second.splits == 0) return {across->first, kNoPolygon};
+    const auto [face, cost] = best_face_plane(polygons);
+    if (across && across->second.cost() < cost) return {across->first, kNoPolygon};
+    return {scene_.face_plane(polygons[face]->face), sampled[face]};
+  }
+
+  // Candidates: face planes of a few polygons spread over the sample and of the largest one
+  // (the one most planes would split). The best one's index in \p polygons, and its cost.
+  std::pair<std::size_t, std::size_t> best_face_plane(const Sample& polygons) const {
+    const std::size_t step = std::max<std::size_t>(1, polygons.size() / kCandidates);
+    std::vector<std::size_t> candidates;
+    for (std::size_t c = 0; c < polygons.size() && c / step < kCandidates; c += step) {
+      candidates.push_back(c);
+    }
+    candidates.push_back(largest(polygons));
+    std::size_t best = 0, best_cost = ~std::size_t(0);
+    for (std::size_t c : candidates) {
+      const std::size_t cost = score(polygons, scene_.face_plane(polygons[c]->face), eps_).cost();
+      if (cost < best_cost) best = c, best_cost = cost;
+    }
+    return {best, best_cost};
+  }
+
+  // Pieces in the plane stay at the node, the others go front or back, split if need be.
+  void partition(const Ids& ids, std::uint32_t best, Draft& draft, Ids& front, Ids& back) {
+    ConvexPolygon neg, pos;
+    for (const std::uint32_t id : ids) {
+      const ConvexPolygon& p = pool_[id];
+      const PlaneSides sides = classify(p, draft.plane, eps_);
+      if (id == best || sides.on()) {
+        draft.here.push_back(id);
+      } else if (!sides.spanning()) {
+        (sides.positive ? front : back).push_back(id);
+      } else {
+        split_polygon(p, draft.plane, eps_, false, neg, pos);
+        back.push_back(add(std::move(neg)));
+        front.push_back(add(std::move(pos)));
+      }
+    }
+  }
+
+  std::uint32_t add(ConvexPolygon&& p) {
+    return std::uint32_t(pool_.push_back(std::move(p)) - pool_.begin());
+  }
+
+  const Scene& scene_;
+  double eps_;
+  tbb::concurrent_vector<ConvexPolygon> pool_;
+};
+
 SceneBsp SceneBsp::build(const Scene& scene) {
   SceneBsp bsp;
   bsp.eps_ = kRelativeTolerance * std::max(1.0, scene.bounds().diagonal());
-  std::vector<ConvexPolygon> polygons = convex_faces(scene);
-  const std::size_t inputs = polygons.size();
-  bsp.root_ = bsp.build_node(std::move(polygons), scene, 1);
+  Builder builder(scene, bsp.eps_, convex_faces(scene));
+  const std::size_t inputs = builder.size();
+  Ids ids(inputs);
+  std::iota(ids.begin(), ids.end(), 0u);
+  const std::unique_ptr<Draft> root = builder.build(ids);
+  if (root) bsp.root_ = bsp.lay_out(*root, builder, 1);
   bsp.splits_ = bsp.pieces_.size() - inputs;
   return bsp;
 }
 
-std::pair<Plane, std::size_t> SceneBsp::choose_splitter(const std::vector<ConvexPolygon>& polygons,
-                                                        const Scene& scene) const {
-  // Candidates: face planes of a few polygons spread over the list and of the largest one
-  // (the one most planes would split); past a few polygons also the median plane.
-  const std::size_t step = std::max<std::size_t>(1, polygons.size() / kCandidates);
-  std::vector<std::size_t> candidates;
-  for (std::size_t c = 0; c < polygons.size() && c / step < kCandidates; c += step) {
-    candidates.push_back(c);
-  }
-  candidates.push_back(largest(polygons));
-  std::size_t best = candidates[0];
-  Plane plane = scene.face_plane(polygons[best].face);
-  std::size_t best_cost = score(polygons, plane, eps_).cost();
-  for (std::size_t c : candidates) {
-    const Plane candidate = scene.face_plane(polygons[c].face);
-    const std::size_t cost = score(polygons, candidate, eps_).cost();
-    if (cost < best_cost) best = c, plane = candidate, best_cost = cost;
-  }
-  if (polygons.size() > kCandidates) {
-    const Plane median = median_plane(polygons);
-    if (score(polygons, median, eps_).cost() < best_cost) return {median, kNoPolygon};
-  }
-  return {plane, best};
-}
-
-std::int32_t SceneBsp::build_node(std::vector<ConvexPolygon> polygons, const Scene& scene,
-                                  std::size_t depth) {
-  if (polygons.empty()) return -1;
+std::int32_t SceneBsp::lay_out(Draft& draft, Builder& builder, std::size_t depth) {
   depth_ = std::max(depth_, depth);
-  const auto [plane, best] = choose_splitter(polygons, scene);
-  // Partition: pieces in the plane stay at the node, the others go front or back.
-  std::vector<ConvexPolygon> front, back, here;
-  ConvexPolygon neg, pos;
-  for (std::size_t i = 0; i < polygons.size(); ++i) {
-    ConvexPolygon& p = polygons[i];
-    const PlaneSides sides = classify(p, plane, eps_);
-    if (i == best || sides.on()) {
-      here.push_back(std::move(p));
-    } else if (!sides.spanning()) {
-      (sides.positive ? front : back).push_back(std::move(p));
-    } else {
-      split_polygon(p, plane, eps_, false, neg, pos);
-      back.push_back(std::move(neg));
-      front.push_back(std::move(pos));
-    }
-  }
-  polygons = {};
   const std::int32_t index = std::int32_t(nodes_.size());
-  nodes_.push_back({plane, std::uint32_t(pieces_.size()), std::uint32_t(here.size()), -1, -1});
-  for (ConvexPolygon& p : here) pieces_.push_back(std::move(p));
-  const std::int32_t f = build_node(std::move(front), scene, depth + 1);
-  const std::int32_t b = build_node(std::move(back), scene, depth + 1);
-  nodes_[index].front = f;
-  nodes_[index].back = b;
+  nodes_.push_back(
+      {draft.plane, std::uint32_t(pieces_.size()), std::uint32_t(draft.here.size()), -1, -1});
+  for (const std::uint32_t id : draft.here) pieces_.push_back(std::move(builder.polygon(id)));
+  if (draft.front) nodes_[index].front = lay_out(*draft.front, builder, depth + 1);
+  if (draft.back) nodes_[index].back = lay_out(*draft.back, builder, depth + 1);
   return index;
 }
 

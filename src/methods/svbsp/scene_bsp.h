@@ -17,9 +17,10 @@ namespace shadowkit::svbsp {
 /// split by it.
 class SceneBsp {
  public:
-  /// Builds the tree from every face of \p scene (non-convex faces as triangles). Root
-  /// choice samples a few candidate planes and keeps the one with the lowest weighted sum of
-  /// splits and imbalance; a node may split by a plane holding no polygon.
+  /// Builds the tree from every face of \p scene (non-convex faces as triangles). Each node
+  /// tries a few candidate planes on a sample of its polygons and keeps the one with the
+  /// lowest weighted sum of splits and imbalance; a node may split by a plane holding no
+  /// polygon. Large subtrees are built in parallel; the tree does not depend on threads.
   static SceneBsp build(const Scene& scene);
 
   /// Calls \p visit with the pieces of each node, nodes in front-to-back order as seen from
@@ -47,10 +48,10 @@ class SceneBsp {
     std::uint32_t first = 0, count = 0;  ///< pieces in the plane, into pieces_
     std::int32_t front = -1, back = -1;  ///< children, -1: empty half-space
   };
-  std::pair<Plane, std::size_t> choose_splitter(const std::vector<ConvexPolygon>& polygons,
-                                                const Scene& scene) const;
-  std::int32_t build_node(std::vector<ConvexPolygon> polygons, const Scene& scene,
-                          std::size_t depth);
+  struct Draft;
+  class Builder;
+  // Appends \p draft's subtree in preorder, front before back; returns its root.
+  std::int32_t lay_out(Draft& draft, Builder& builder, std::size_t depth);
   void visit(std::int32_t node, const Light& light,
              const std::function<void(std::span<const ConvexPolygon>)>& fn) const;
 

@@ -1,6 +1,7 @@
 #include "scene_bsp.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <map>
 
@@ -57,11 +58,63 @@ TEST(SceneBsp, PiecesOfEveryFaceSumToItsArea) {
 }
 
 TEST(SceneBsp, RootChoiceKeepsSplitsLowOnACubeField) {
-  // Jittered cubes: a plane taken at random would split far more polygons.
-  const Scene scene = load_scene("cubes:125", {});
+  // Jittered cubes: planes across an axis mostly run between them (about 3% of the faces
+  // are split; a plane taken at random would split far more).
+  for (const char* name : {"cubes:125", "cubes:1000"}) {
+    const Scene scene = load_scene(name, {});
+    const SceneBsp bsp = SceneBsp::build(scene);
+    EXPECT_LT(bsp.split_count(), scene.face_count() / 20) << name;
+    EXPECT_LT(bsp.depth(), 32u) << name;
+  }
+}
+
+TEST(SceneBsp, TreeDoesNotDependOnThreads) {
+  // Past kParallelGrain polygons, subtrees are built in parallel.
+  const Scene scene = load_scene("cubes:512", {});
+  const SceneBsp parallel = SceneBsp::build(scene);
+  const SceneBsp serial = [&] {
+    const tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    return SceneBsp::build(scene);
+  }();
+  ASSERT_EQ(parallel.node_count(), serial.node_count());
+  ASSERT_EQ(parallel.piece_count(), serial.piece_count());
+  for (std::size_t i = 0; i < serial.piece_count(); ++i) {
+    EXPECT_EQ(parallel.pieces()[i].face, serial.pieces()[i].face) << i;
+    EXPECT_EQ(parallel.pieces()[i].vertices, serial.pieces()[i].vertices) << i;
+  }
+  const Light light = scene.lights[0];
+  EXPECT_EQ(visit_order(parallel, light), visit_order(serial, light));
+}
+
+Scene coplanar_squares(int count, double spacing) {
+  std::vector<PolygonSoup> squares;
+  for (int i = 0; i < count; ++i) {
+    squares.push_back(testing::horizontal_quad(i * spacing, i * spacing + 1, 0, 1, 0));
+  }
+  return testing::make_scene(testing::camera({0, 5, 9}, {0, 0, 0}, 64, 48),
+                             {testing::point_light({0, 10, 0})}, squares);
+}
+
+TEST(SceneBsp, CoplanarPolygonsShareOneNodeOrAreSeparatedWithoutSplits) {
+  // Twenty squares in one plane, more than the face-plane candidates. Stacked on one
+  // another, no plane across an axis leaves a whole square on each side: one node holds
+  // them all. Side by side, planes through the gaps separate them and cut none.
+  const SceneBsp stacked = SceneBsp::build(coplanar_squares(20, 0));
+  EXPECT_EQ(stacked.node_count(), 1u);
+  EXPECT_EQ(stacked.piece_count(), 20u);
+  const SceneBsp apart = SceneBsp::build(coplanar_squares(20, 2));
+  EXPECT_EQ(apart.piece_count(), 20u);
+  EXPECT_EQ(apart.split_count(), 0u);
+  EXPECT_EQ(visit_order(apart, Light::point({0, 10, 0})).size(), 20u);
+}
+
+TEST(SceneBsp, EmptySceneHasNoNode) {
+  const Scene scene = testing::make_scene(testing::camera({0, 5, 9}, {0, 0, 0}, 64, 48),
+                                          {testing::point_light({0, 10, 0})}, {});
   const SceneBsp bsp = SceneBsp::build(scene);
-  EXPECT_LT(bsp.split_count(), scene.face_count() / 2);
-  EXPECT_LT(bsp.depth(), 64u);
+  EXPECT_EQ(bsp.node_count(), 0u);
+  EXPECT_EQ(bsp.piece_count(), 0u);
+  EXPECT_TRUE(visit_order(bsp, Light::point({0, 10, 0})).empty());
 }
 
 }  // namespace
