@@ -67,17 +67,6 @@ double area(const ConvexPolygon& p) {
   return 0.5 * length(sum);
 }
 
-PlaneSides classify(const ConvexPolygon& p, const Plane& plane, double eps) {
-  PlaneSides s;
-  for (const Vec3& v : p.vertices) {
-    const int k = side_of(plane.distance(v), eps);
-    s.negative = s.negative || k < 0;
-    s.positive = s.positive || k > 0;
-    s.touching = s.touching || k == 0;
-  }
-  return s;
-}
-
 void split_polygon(const ConvexPolygon& p, const Plane& plane, double eps, bool mark_edges,
                    ConvexPolygon& negative, ConvexPolygon& positive) {
   const std::size_t n = p.vertices.size();

@@ -47,7 +47,18 @@ struct PlaneSides {
 };
 
 /// Where \p p lies against \p plane with tolerance \p eps (one tolerance everywhere, §7).
-PlaneSides classify(const ConvexPolygon& p, const Plane& plane, double eps);
+/// Inline: the trees' inner loops call it at every node, and a call returning the three
+/// flags through memory stalls them.
+inline PlaneSides classify(const ConvexPolygon& p, const Plane& plane, double eps) {
+  PlaneSides s;
+  for (const Vec3& v : p.vertices) {
+    const double d = plane.distance(v);
+    s.negative = s.negative || d < -eps;
+    s.positive = s.positive || d > eps;
+    s.touching = s.touching || !(d > eps || d < -eps);
+  }
+  return s;
+}
 
 /// splitPolygon of Fig. 4: the parts of \p p on the negative and the positive side of
 /// \p plane. A polygon on one side (or wholly within eps of the plane: positive) is copied
