@@ -1,5 +1,7 @@
 #include "svbsp_method.h"
 
+#include <tbb/parallel_invoke.h>
+
 #include <algorithm>
 
 #include "fragment_raster.h"
@@ -23,8 +25,9 @@ SvbspMethod::SvbspMethod(const MethodOptions& options) {
 }
 
 void SvbspMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
-  bsp_ = svbsp::SceneBsp::build(scene);
-  solids_.emplace(scene);
+  // Independent: the solids' faces are found while the tree is built.
+  tbb::parallel_invoke([&] { bsp_ = svbsp::SceneBsp::build(scene); },
+                       [&] { solids_.emplace(scene); });
 }
 
 void SvbspMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
