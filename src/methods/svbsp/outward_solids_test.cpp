@@ -93,7 +93,9 @@ TEST(OutwardSolids, SkippingTheFarSideKeepsEveryFragmentAndTheLitAreas) {
     const LightFragments skipped =
         generate_shadows(bsp, scene, light, true, far_side_of(solids, scene, light));
     EXPECT_LE(skipped.light_facing, all.light_facing) << name;
-    if (std::string_view(name) == "cubes:27") EXPECT_LT(skipped.light_facing, all.light_facing);
+    if (std::string_view(name) == "cubes:27") {
+      EXPECT_LT(skipped.light_facing, all.light_facing);
+    }
     const auto want = face_areas(all.fragments);
     const auto got = face_areas(skipped.fragments);
     ASSERT_EQ(got.size(), scene.face_count()) << name;
@@ -101,7 +103,9 @@ TEST(OutwardSolids, SkippingTheFarSideKeepsEveryFragmentAndTheLitAreas) {
       const double size = face_area(scene, face);
       EXPECT_NEAR(a.lit + a.shadowed, size, 1e-9 * size) << name << " " << face;
       EXPECT_NEAR(a.lit, want.at(face).lit, 1e-9 * size) << name << " " << face;
-      if (solids.far_side(scene, face, light)) EXPECT_EQ(a.lit, 0) << name << " " << face;
+      if (solids.far_side(scene, face, light)) {
+        EXPECT_EQ(a.lit, 0) << name << " " << face;
+      }
     }
   }
 }
