@@ -1,7 +1,11 @@
 #include "cube_map.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
+
+#include "face_setup.h"
 
 namespace shadowkit::shadowmap {
 namespace {
@@ -38,9 +42,15 @@ RasterProjection CubeMap::face_view(int face, Vec3 eye, int resolution, double n
 void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution, const Context& ctx) {
   light_position_ = light_position;
   const double near = near_plane_for(scene.bounds(), light_position);
-  for (int f = 0; f < kFaces; ++f) {
-    faces_[f].render(scene, face_view(f, light_position, resolution, near), ctx);
-  }
+  std::array<RasterProjection, kFaces> views;
+  for (int f = 0; f < kFaces; ++f) views[f] = face_view(f, light_position, resolution, near);
+  // Each face is drawn with the triangles that can reach it only.
+  const FaceCulling culling(scene, views);
+  std::array<DepthMap::Drawing, kFaces> drawings;
+  tbb::parallel_for(0, kFaces, [&](int f) {
+    drawings[f] = {&faces_[f], views[f], face_triangles(scene, culling, f, views[f])};
+  });
+  DepthMap::draw(drawings, ctx);
 }
 
 std::size_t CubeMap::texel_count() const {

@@ -1,14 +1,22 @@
 #include "depth_map.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <optional>
 
-#include "shadowkit/raster/scan_converter.h"
+#include "shadowkit/raster/tile_bins.h"
 
 namespace shadowkit::shadowmap {
 namespace {
+
+using raster::ScreenTriangle;
+constexpr int kTile = DepthMap::kTile;
+constexpr float kEmpty = std::numeric_limits<float>::infinity();
 
 // Index of the texel whose span [i, i + 1) contains continuous coordinate s, clamped to
 // [0, n - 1]; NaN goes to 0.
@@ -18,29 +26,98 @@ int texel_index(double s, int n) {
   return int(s);
 }
 
+// Williams 1978, first pass: a z-buffer rendering of the scene from the light, keeping only
+// depth. The nearest depth key per texel of a w x h tile at (x0, y0), -infinity where nothing
+// is drawn; the scan converter's fill rule and depth planes, without its face ids.
+void nearest_keys(const std::vector<ScreenTriangle>& triangles, std::span<const std::uint32_t> bin,
+                  int x0, int y0, int w, int h, double* keys) {
+  std::fill_n(keys, kTile * h, -INFINITY);
+  for (const std::uint32_t index : bin) {
+    const ScreenTriangle& t = triangles[index];
+    const int ya = std::max(y0, t.min_y), yb = std::min(y0 + h - 1, t.max_y);
+    raster::SpanWalker walker(t, ya);
+    for (int py = ya; py <= yb; ++py, walker.next_row()) {
+      int xa = std::max(x0, t.min_x), xb = std::min(x0 + w - 1, t.max_x);
+      if (!walker.span(xa, xb)) continue;
+      double* row = keys + (py - y0) * kTile - x0;
+      const double base = t.key_b * py + t.key_c, key_a = t.key_a;
+      for (int px = xa; px <= xb; ++px) {
+        const double z = key_a * px + base;
+        row[px] = z > row[px] ? z : row[px];
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void DepthMap::render(const Scene& scene, const RasterProjection& view, const Context& ctx) {
-  view_ = view;
-  depth_.assign(std::size_t(view.width) * view.height, std::numeric_limits<float>::infinity());
-  std::atomic<std::size_t> covered{0};
-  // Williams 1978, first pass: a z-buffer rendering of the scene from the light, keeping only
-  // depth. Each finished tile is converted to linear depth while it is in cache.
-  ScanConverter(scene).rasterize_tiles(view, ctx, [&](const RasterTile& tile) {
-    std::size_t drawn = 0;
-    for (int y = 0; y < tile.height; ++y) {
-      float* row = depth_.data() + std::size_t(tile.y0 + y) * view.width + tile.x0;
-      for (int x = 0; x < tile.width; ++x) {
-        const int k = y * tile.width + x;
-        if (tile.face[k] == kNoFace) continue;
-        const double key = tile.depth_key[k];
-        row[x] = float(view.orthographic ? -key : 1.0 / key);
-        ++drawn;
-      }
-    }
-    covered.fetch_add(drawn, std::memory_order_relaxed);
+  Drawing drawing{this, view, raster::setup_triangles(scene, view)};
+  draw({&drawing, 1}, ctx);
+}
+
+void DepthMap::draw(std::span<Drawing> drawings, const Context& /*ctx*/) {
+  std::vector<std::optional<raster::TileBins>> bins(drawings.size());
+  tbb::parallel_for(std::size_t(0), drawings.size(), [&](std::size_t d) {
+    bins[d].emplace(drawings[d].triangles, drawings[d].view.width, drawings[d].view.height);
   });
-  covered_ = covered.load();
+  // Only the tiles some triangle reaches are drawn, the tiles of all maps in one pass.
+  struct Job {
+    std::uint32_t drawing, tile;
+  };
+  std::vector<Job> jobs;
+  for (std::size_t d = 0; d < drawings.size(); ++d) {
+    drawings[d].map->allocate(drawings[d].view, bins[d]->start);
+    for (int t = 0; t < bins[d]->tile_count(); ++t) {
+      if (bins[d]->start[t + 1] > bins[d]->start[t])
+        jobs.push_back({std::uint32_t(d), std::uint32_t(t)});
+    }
+  }
+  std::vector<std::atomic<std::size_t>> covered(drawings.size());
+  tbb::parallel_for(std::size_t(0), jobs.size(), [&](std::size_t j) {
+    const Job job = jobs[j];
+    const raster::TileBins& b = *bins[job.drawing];
+    const std::span<const std::uint32_t> bin(b.items.data() + b.start[job.tile],
+                                             b.start[job.tile + 1] - b.start[job.tile]);
+    const std::size_t drawn =
+        drawings[job.drawing].map->draw_tile(int(job.tile), drawings[job.drawing].triangles, bin);
+    covered[job.drawing].fetch_add(drawn, std::memory_order_relaxed);
+  });
+  for (std::size_t d = 0; d < drawings.size(); ++d) drawings[d].map->covered_ = covered[d].load();
+}
+
+void DepthMap::allocate(const RasterProjection& view, std::span<const std::uint32_t> bin_start) {
+  view_ = view;
+  texel_side_ = std::max(1.0 / view.scale_x, 1.0 / view.scale_y);
+  tiles_x_ = (view.width + kTile - 1) / kTile;
+  slot_.assign(bin_start.size() - 1, 0);
+  std::uint32_t slots = 1;
+  for (std::size_t t = 0; t + 1 < bin_start.size(); ++t) {
+    if (bin_start[t + 1] > bin_start[t]) slot_[t] = slots++;
+  }
+  if (texels_.size() < slots * kTileTexels) texels_.resize(slots * kTileTexels);
+  std::fill_n(texels_.begin(), kTileTexels, kEmpty);
+}
+
+std::size_t DepthMap::draw_tile(int tile, const std::vector<ScreenTriangle>& triangles,
+                                std::span<const std::uint32_t> bin) {
+  thread_local std::array<double, kTileTexels> keys;
+  const int x0 = (tile % tiles_x_) * kTile, y0 = (tile / tiles_x_) * kTile;
+  const int w = std::min(kTile, view_.width - x0), h = std::min(kTile, view_.height - y0);
+  nearest_keys(triangles, bin, x0, y0, w, h, keys.data());
+  float* out = texels_.data() + std::size_t(slot_[std::size_t(tile)]) * kTileTexels;
+  std::size_t drawn = 0;
+  for (int k = 0; k < kTile * h; ++k) {
+    const double key = keys[k];
+    drawn += key != -INFINITY;
+    out[k] = key == -INFINITY ? kEmpty : float(view_.orthographic ? -key : 1.0 / key);
+  }
+  // Columns past the map's right edge hold -infinity keys: not drawn.
+  return drawn;
+}
+
+std::size_t DepthMap::memory_bytes() const {
+  return texels_.capacity() * sizeof(float) + slot_.capacity() * sizeof(std::uint32_t);
 }
 
 void DepthMap::texel_of(Vec3 v, int& x, int& y) const {
@@ -48,20 +125,18 @@ void DepthMap::texel_of(Vec3 v, int& x, int& y) const {
   y = texel_index(view_.pixel_y(v), view_.height);
 }
 
-double DepthMap::texel_size(double zv) const {
-  const double size = std::max(1.0 / view_.scale_x, 1.0 / view_.scale_y);
-  return view_.orthographic ? size : size * zv;
+double DepthMap::lateral(Vec3 n) {
+  return std::hypot(n.x, n.y);
 }
 
-double DepthMap::depth_slope(Vec3 n, Vec3 v) const {
+double DepthMap::depth_slope(Vec3 n, double lateral_n, Vec3 v) const {
   // On the plane n · x = c (view space), zv = c / (n · d) along the ray x = zv d, d = (u, w, 1)
   // with (u, w) the screen position: moving a lateral distance s at depth zv changes (u, w) by
   // s / zv and zv by s (n.x, n.y) / (n · d). Orthographic: d = (0, 0, 1).
   if (!view_.orthographic && !(v.z > 0)) return kMaxSlope;
   const Vec3 d = view_.orthographic ? Vec3{0, 0, 1} : Vec3{v.x / v.z, v.y / v.z, 1};
   const double along = std::abs(dot(n, d));
-  const double across = std::hypot(n.x, n.y);
-  return across >= kMaxSlope * along ? kMaxSlope : across / along;
+  return lateral_n >= kMaxSlope * along ? kMaxSlope : lateral_n / along;
 }
 
 int DepthMap::passing_tests(Vec3 v, double bias, int kernel) const {

@@ -83,12 +83,13 @@ void ShadowMapMethod::build(const Scene& scene, std::size_t light, const Context
   light_ = scene.lights.at(light);
   // Default bias: relative to the scene's size, so that it means the same for any units.
   bias_ = bias_option_.value_or(kDefaultBiasPerDiagonal * scene.bounds().diagonal());
-  // Only the current light's map is kept.
-  cube_ = {};
-  ortho_ = {};
+  // Only the current light's map is kept; its storage is reused from the last build of the
+  // same kind of light.
   if (light_.type == Light::Type::point) {
+    ortho_ = {};
     cube_.render(scene, light_.position, resolution_, ctx);
   } else {
+    cube_ = {};
     ortho_.render(scene, directional_light_view(scene.bounds(), light_.direction, resolution_),
                   ctx);
   }

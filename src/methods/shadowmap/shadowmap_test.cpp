@@ -336,7 +336,14 @@ TEST(ShadowMap, MemoryAndCounters) {
   const Scene point = square_scene(Light::point({0, 4, 0}), kTopCamera);
   ShadowMapMethod method = make({{"resolution", "32"}});
   render(point, method);
-  EXPECT_EQ(method.memory_bytes(), 6u * 32 * 32 * sizeof(float));
+  // A 32 x 32 face is one tile. Nothing is above the light: the +Y face holds only the shared
+  // tile of +infinity; the five others hold it and their one drawn tile.
+  constexpr std::size_t kTileBytes = DepthMap::kTileTexels * sizeof(float);
+  const CubeMap& cube = method.cube_map();
+  EXPECT_EQ(cube.face(2).covered_texels(), 0u);
+  EXPECT_EQ(cube.face(2).memory_bytes(), kTileBytes + sizeof(std::uint32_t));
+  EXPECT_EQ(cube.face(3).covered_texels(), 32u * 32);  // -Y: the ground fills it
+  EXPECT_EQ(method.memory_bytes(), 6 * kTileBytes + 5 * kTileBytes + 6 * sizeof(std::uint32_t));
   std::map<std::string, double> c;
   for (const auto& [k, v] : method.counters()) c[k] = v;
   EXPECT_EQ(c["faces"], 6);
@@ -345,7 +352,7 @@ TEST(ShadowMap, MemoryAndCounters) {
 
   const Scene directional = square_scene(Light::directional({0, -1, 0.1}), kTopCamera);
   render(directional, method);
-  EXPECT_EQ(method.memory_bytes(), 32u * 32 * sizeof(float));
+  EXPECT_EQ(method.memory_bytes(), 2 * kTileBytes + sizeof(std::uint32_t));
   c.clear();
   for (const auto& [k, v] : method.counters()) c[k] = v;
   EXPECT_EQ(c["faces"], 1);

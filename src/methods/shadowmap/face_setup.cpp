@@ -1,0 +1,185 @@
+#include "face_setup.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <span>
+
+#include "shadowkit/core/error.h"
+
+namespace shadowkit::shadowmap {
+namespace {
+
+using raster::FixedPoint;
+using raster::kSubpixel;
+using raster::kSubpixelBits;
+using raster::ScreenTriangle;
+
+constexpr int kFaceBits = 5;
+constexpr std::uint32_t kFaceMask = (1u << kFaceBits) - 1;
+constexpr std::size_t kChunk = 2048;
+
+// A coordinate of a cube face's view: a face's right, up and forward vectors are signed world
+// axes, so its view coordinates are signed components of (p - eye), exactly as to_view
+// computes them.
+struct Axis {
+  int index;
+  double sign;
+  double of(Vec3 d) const { return sign * d[index]; }
+};
+
+Axis axis_of(Vec3 unit) {
+  const int index = unit.x != 0 ? 0 : (unit.y != 0 ? 1 : 2);
+  return {index, unit[index]};
+}
+
+std::uint32_t pyramid_outside(const RasterProjection& view, Vec3 d) {
+  const double x = axis_of(view.right).of(d), y = axis_of(view.up).of(d);
+  const double z = axis_of(view.forward).of(d);
+  return std::uint32_t(z < view.near) | std::uint32_t(x > z) << 1 | std::uint32_t(-x > z) << 2 |
+         std::uint32_t(y > z) << 3 | std::uint32_t(-y > z) << 4;
+}
+
+// raster::setup_triangles' snapping of a view-space point to fixed point.
+FixedPoint to_fixed(const RasterProjection& view, Vec3 v) {
+  return {std::llround(view.pixel_x(v) * double(kSubpixel)),
+          std::llround(view.pixel_y(v) * double(kSubpixel))};
+}
+
+// Inside raster::setup_triangles' clip volume with a margin of half its guard band, so that
+// its own tests, rounded as they are, agree: such a vertex is set up unclipped there too.
+bool well_inside(const RasterProjection& view, Vec3 v) {
+  const double reach = 1 + 0.5 * raster::kGuardBand / std::max(view.scale_x, view.scale_y);
+  return v.z >= view.near && std::abs(v.x) <= reach * v.z && std::abs(v.y) <= reach * v.z;
+}
+
+// The depth-key plane of a face in a perspective view, as raster::setup_triangles computes
+// it: key = a px + b py + c at pixel (px, py). False for a plane through the eye (edge-on).
+bool key_plane(const Plane& plane, const RasterProjection& p, ScreenTriangle& t) {
+  const Vec3 n{dot(plane.normal, p.right), dot(plane.normal, p.up), dot(plane.normal, p.forward)};
+  const double dv = plane.distance(p.eye);
+  if (dv == 0) return false;
+  t.key_a = -n.x / (p.scale_x * dv);
+  t.key_b = n.y / (p.scale_y * dv);
+  t.key_c = (n.x * p.offset_x / p.scale_x - n.y * p.offset_y / p.scale_y - n.z) / dv;
+  t.key_c += 0.5 * (t.key_a + t.key_b);  // sampled at pixel centres
+  return true;
+}
+
+// Appends the screen triangle (v0, v1, v2) with the depth plane of \p key, as the scan
+// converter's setup does: positively oriented, the top-left rule in the edge biases, pixel
+// bounds clamped to the raster; nothing if it has no area or misses the raster.
+void emit(FixedPoint v0, FixedPoint v1, FixedPoint v2, const ScreenTriangle& key,
+          const RasterProjection& view, std::vector<ScreenTriangle>& out) {
+  const std::int64_t area = (v1.x - v0.x) * (v2.y - v0.y) - (v1.y - v0.y) * (v2.x - v0.x);
+  if (area == 0) return;
+  if (area < 0) std::swap(v1, v2);
+  ScreenTriangle t = key;
+  const FixedPoint v[3] = {v0, v1, v2};
+  for (int i = 0; i < 3; ++i) {
+    t.x[i] = v[i].x;
+    t.y[i] = v[i].y;
+    const FixedPoint d{v[(i + 1) % 3].x - v[i].x, v[(i + 1) % 3].y - v[i].y};
+    t.bias[i] = (d.y < 0 || (d.y == 0 && d.x > 0)) ? 0 : 1;
+  }
+  const auto lo = [](std::int64_t a) {
+    return int((a - kSubpixel / 2 + kSubpixel - 1) >> kSubpixelBits);
+  };
+  const auto hi = [](std::int64_t a) { return int((a - kSubpixel / 2) >> kSubpixelBits); };
+  t.min_x = std::max(0, lo(std::min({v0.x, v1.x, v2.x})));
+  t.min_y = std::max(0, lo(std::min({v0.y, v1.y, v2.y})));
+  t.max_x = std::min(view.width - 1, hi(std::max({v0.x, v1.x, v2.x})));
+  t.max_y = std::min(view.height - 1, hi(std::max({v0.y, v1.y, v2.y})));
+  if (t.min_x > t.max_x || t.min_y > t.max_y) return;
+  out.push_back(t);
+}
+
+}  // namespace
+
+FaceCulling::FaceCulling(const Scene& scene, std::span<const RasterProjection> views)
+    : scene_(scene), outside_(scene.triangles().positions.size()) {
+  SHADOWKIT_CHECK(views.size() * kFaceBits <= 32);
+  const std::vector<Vec3>& positions = scene.triangles().positions;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, positions.size(), 4096), [&](auto r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      std::uint32_t bits = 0;
+      for (std::size_t f = 0; f < views.size(); ++f) {
+        bits |= pyramid_outside(views[f], positions[i] - views[f].eye) << (kFaceBits * f);
+      }
+      outside_[i] = bits;
+    }
+  });
+}
+
+bool FaceCulling::reaches(std::size_t t, int face) const {
+  const auto& tri = scene_.triangles().triangles[t];
+  const std::uint32_t all = outside_[tri[0]] & outside_[tri[1]] & outside_[tri[2]];
+  return ((all >> (kFaceBits * face)) & kFaceMask) == 0;
+}
+
+std::vector<ScreenTriangle> face_triangles(const Scene& scene, const FaceCulling& culling, int face,
+                                           const RasterProjection& view) {
+  const TriangleList& list = scene.triangles();
+  const std::size_t nv = list.positions.size(), nt = list.triangles.size();
+
+  // The triangles that reach the face, and the vertices they use.
+  std::vector<std::vector<std::uint32_t>> reaching((nt + kChunk - 1) / kChunk);
+  const std::unique_ptr<std::uint8_t[]> used(new std::uint8_t[nv]());
+  tbb::parallel_for(std::size_t(0), reaching.size(), [&](std::size_t c) {
+    for (std::size_t t = c * kChunk; t < std::min(nt, (c + 1) * kChunk); ++t) {
+      if (!culling.reaches(t, face)) continue;
+      reaching[c].push_back(std::uint32_t(t));
+      // Several threads may store the same value here.
+      for (const std::uint32_t v : list.triangles[t]) {
+        std::atomic_ref<std::uint8_t>(used[v]).store(1, std::memory_order_relaxed);
+      }
+    }
+  });
+
+  // Per used vertex, once: whether it is well inside the clip volume, and if so its
+  // fixed-point position, so that every triangle sharing it snaps it identically.
+  const std::unique_ptr<FixedPoint[]> fixed(new FixedPoint[nv]);
+  const std::unique_ptr<std::uint8_t[]> inside(new std::uint8_t[nv]);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 4096), [&](auto r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      if (!used[i]) continue;
+      const Vec3 v = view.to_view(list.positions[i]);
+      inside[i] = well_inside(view, v);
+      if (inside[i]) fixed[i] = to_fixed(view, v);
+    }
+  });
+
+  std::vector<std::vector<ScreenTriangle>> chunks(reaching.size());
+  tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
+    for (const std::uint32_t t : reaching[c]) {
+      ScreenTriangle key{};
+      if (!key_plane(scene.face_plane(list.triangle_face[t]), view, key)) continue;
+      key.face = list.triangle_face[t];
+      const auto& tri = list.triangles[t];
+      if (inside[tri[0]] && inside[tri[1]] && inside[tri[2]]) {
+        emit(fixed[tri[0]], fixed[tri[1]], fixed[tri[2]], key, view, chunks[c]);
+        continue;
+      }
+      // Near the light or far past the face's edges: the scan converter's own clipping.
+      const raster::HomogeneousPoint corners[3] = {
+          {list.positions[tri[0]], 1}, {list.positions[tri[1]], 1}, {list.positions[tri[2]], 1}};
+      const std::vector<FixedPoint> polygon = raster::snapped_polygon(corners, view);
+      for (std::size_t i = 2; i < polygon.size(); ++i) {
+        emit(polygon[0], polygon[i - 1], polygon[i], key, view, chunks[c]);
+      }
+    }
+  });
+
+  std::vector<ScreenTriangle> all;
+  std::size_t total = 0;
+  for (const auto& c : chunks) total += c.size();
+  all.reserve(total);
+  for (const auto& c : chunks) all.insert(all.end(), c.begin(), c.end());
+  return all;
+}
+
+}  // namespace shadowkit::shadowmap

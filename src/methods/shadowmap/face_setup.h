@@ -1,0 +1,43 @@
+#pragma once
+// Triangle setup for the six faces of a cube map, each triangle set up only for the faces it
+// can reach. raster::setup_triangles run once per face would transform, clip and set up every
+// triangle of the scene six times, though most triangles reach one face.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "shadowkit/core/vec.h"
+#include "shadowkit/raster/projection.h"
+#include "shadowkit/raster/triangle_setup.h"
+#include "shadowkit/scene/scene.h"
+
+namespace shadowkit::shadowmap {
+
+/// \brief Where each scene vertex lies against the pyramids |xv| <= zv, |yv| <= zv of cube
+/// faces (CubeMap::face_view), in front of their near planes.
+///
+/// A triangle whose three vertices lie beyond one plane of a face's pyramid (or all behind its
+/// near plane) lies beyond it whole: it projects past the face's edge, at least half a texel
+/// from the nearest texel centre, and covers none.
+class FaceCulling {
+ public:
+  /// \p views: at most six views whose right, up and forward vectors are signed world axes.
+  FaceCulling(const Scene& scene, std::span<const RasterProjection> views);
+
+  /// Whether triangle \p t of the scene's TriangleList can cover a texel of view \p face.
+  bool reaches(std::size_t t, int face) const;
+
+ private:
+  const Scene& scene_;
+  /// Per vertex, five bits per face: behind the near plane, xv > zv, -xv > zv, yv > zv,
+  /// -yv > zv.
+  std::vector<std::uint32_t> outside_;
+};
+
+/// The triangles of \p scene that \p culling lets reach cube face \p face, set up for the
+/// face's \p view bit for bit as raster::setup_triangles sets them up (fixed-point vertices,
+/// fill-rule biases, depth planes), so that the face's map is the scan converter's.
+std::vector<raster::ScreenTriangle> face_triangles(const Scene& scene, const FaceCulling& culling,
+                                                   int face, const RasterProjection& view);
+
+}  // namespace shadowkit::shadowmap
