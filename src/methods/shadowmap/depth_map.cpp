@@ -18,14 +18,6 @@ using raster::ScreenTriangle;
 constexpr int kTile = DepthMap::kTile;
 constexpr float kEmpty = std::numeric_limits<float>::infinity();
 
-// Index of the texel whose span [i, i + 1) contains continuous coordinate s, clamped to
-// [0, n - 1]; NaN goes to 0.
-int texel_index(double s, int n) {
-  if (!(s > 0)) return 0;
-  if (s >= n) return n - 1;
-  return int(s);
-}
-
 // Williams 1978, first pass: a z-buffer rendering of the scene from the light, keeping only
 // depth. The nearest depth key per texel of a w x h tile at (x0, y0), -infinity where nothing
 // is drawn; the scan converter's fill rule and depth planes, without its face ids.
@@ -106,54 +98,23 @@ std::size_t DepthMap::draw_tile(int tile, const std::vector<ScreenTriangle>& tri
   const int w = std::min(kTile, view_.width - x0), h = std::min(kTile, view_.height - y0);
   nearest_keys(triangles, bin, x0, y0, w, h, keys.data());
   float* out = texels_.data() + std::size_t(slot_[std::size_t(tile)]) * kTileTexels;
-  std::size_t drawn = 0;
-  for (int k = 0; k < kTile * h; ++k) {
-    const double key = keys[k];
-    drawn += key != -INFINITY;
-    out[k] = key == -INFINITY ? kEmpty : float(view_.orthographic ? -key : 1.0 / key);
+  // Branch-free loops, which the compiler vectorizes; keys past the map's right edge stay
+  // -infinity and count as not drawn.
+  const int n = kTile * h;
+  if (view_.orthographic) {
+    for (int k = 0; k < n; ++k) out[k] = keys[k] == -INFINITY ? kEmpty : float(-keys[k]);
+  } else {
+    for (int k = 0; k < n; ++k) {
+      const double depth = 1.0 / keys[k];
+      out[k] = keys[k] == -INFINITY ? kEmpty : float(depth);
+    }
   }
-  // Columns past the map's right edge hold -infinity keys: not drawn.
-  return drawn;
+  return std::size_t(
+      std::count_if(keys.begin(), keys.begin() + n, [](double key) { return key != -INFINITY; }));
 }
 
 std::size_t DepthMap::memory_bytes() const {
   return texels_.capacity() * sizeof(float) + slot_.capacity() * sizeof(std::uint32_t);
-}
-
-void DepthMap::texel_of(Vec3 v, int& x, int& y) const {
-  x = texel_index(view_.pixel_x(v), view_.width);
-  y = texel_index(view_.pixel_y(v), view_.height);
-}
-
-double DepthMap::lateral(Vec3 n) {
-  return std::hypot(n.x, n.y);
-}
-
-double DepthMap::depth_slope(Vec3 n, double lateral_n, Vec3 v) const {
-  // On the plane n · x = c (view space), zv = c / (n · d) along the ray x = zv d, d = (u, w, 1)
-  // with (u, w) the screen position: moving a lateral distance s at depth zv changes (u, w) by
-  // s / zv and zv by s (n.x, n.y) / (n · d). Orthographic: d = (0, 0, 1).
-  if (!view_.orthographic && !(v.z > 0)) return kMaxSlope;
-  const Vec3 d = view_.orthographic ? Vec3{0, 0, 1} : Vec3{v.x / v.z, v.y / v.z, 1};
-  const double along = std::abs(dot(n, d));
-  return lateral_n >= kMaxSlope * along ? kMaxSlope : lateral_n / along;
-}
-
-int DepthMap::passing_tests(Vec3 v, double bias, int kernel) const {
-  int cx = 0, cy = 0;
-  texel_of(v, cx, cy);
-  const int r = kernel / 2;
-  int passed = 0;
-  for (int dy = -r; dy <= r; ++dy) {
-    const int y = std::clamp(cy + dy, 0, view_.height - 1);
-    for (int dx = -r; dx <= r; ++dx) {
-      const int x = std::clamp(cx + dx, 0, view_.width - 1);
-      // Williams 1978, second pass: the point is lit when it is not farther from the light
-      // than the nearest surface the light sees in its direction (within the bias).
-      if (v.z <= double(depth(x, y)) + bias) ++passed;
-    }
-  }
-  return passed;
 }
 
 }  // namespace shadowkit::shadowmap

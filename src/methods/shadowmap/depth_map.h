@@ -1,6 +1,8 @@
 #pragma once
 // One shadow-map depth image: the light's view of the scene, reduced to the linear depth of the
 // nearest surface per texel (Williams 1978's "light-source z-buffer").
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -63,31 +65,77 @@ class DepthMap {
     return texels_[std::size_t(slot_[tile]) * kTileTexels + (uy % kTile) * kTile + ux % kTile];
   }
 
-  /// The texel (x, y) whose footprint contains view-space point \p v; points off the map (and
-  /// points on its outer edges) take the nearest edge texel.
-  void texel_of(Vec3 v, int& x, int& y) const;
+  /// \brief A view-space point \p v and where it falls on the image plane: (xv / zv, yv / zv)
+  /// for a perspective view, (xv, yv) for an orthographic one. The texel lookup and the depth
+  /// slope both need it.
+  struct Sample {
+    Vec3 v;
+    double u, w;
+  };
+  Sample sample(Vec3 v) const {
+    return view_.orthographic ? Sample{v, v.x, v.y} : Sample{v, v.x / v.z, v.y / v.z};
+  }
+
+  /// The texel (x, y) whose footprint contains \p s; points off the map (and points on its
+  /// outer edges) take the nearest edge texel. (RasterProjection::pixel_x and pixel_y.)
+  void texel_of(const Sample& s, int& x, int& y) const {
+    x = texel_index(view_.offset_x + view_.scale_x * s.u, view_.width);
+    y = texel_index(view_.offset_y - view_.scale_y * s.w, view_.height);
+  }
 
   /// World size of one texel at view depth \p zv: the larger side of its footprint on the plane
   /// zv = const (2 zv / resolution for a 90° face, the fitted extent / resolution for an
   /// orthographic map).
   double texel_size(double zv) const { return view_.orthographic ? texel_side_ : texel_side_ * zv; }
 
-  /// How fast the view depth zv of the receiver's plane changes per unit of lateral distance
-  /// near the view-space point \p v, given the plane's normal \p n in view space, capped at
-  /// kMaxSlope. For an orthographic map it is tan(angle between normal and light direction);
-  /// for a perspective face it is |(n.x, n.y)| / |n · (v / v.z)|, which is the same tangent on
-  /// the face's axis and the exact zv gradient off it.
-  double depth_slope(Vec3 n, Vec3 v) const { return depth_slope(n, lateral(n), v); }
-  /// The same, given lateral(n).
-  double depth_slope(Vec3 n, double lateral_n, Vec3 v) const;
-  /// |(n.x, n.y)|, the part of depth_slope() that depends on the receiver alone.
-  static double lateral(Vec3 n);
+  /// |(n.x, n.y)| for a receiver's normal \p n in view space: the part of depth_slope() that
+  /// depends on the receiver alone.
+  static double lateral(Vec3 n) { return std::hypot(n.x, n.y); }
 
-  /// Depth tests of a kernel x kernel block of texels centred on the texel of \p v (kernel
+  /// How fast the view depth zv of the receiver's plane changes per unit of lateral distance
+  /// near \p s, given the plane's normal \p n in view space (lateral(n) = \p lateral_n),
+  /// capped at kMaxSlope. For an orthographic map it is tan(angle between normal and light
+  /// direction); for a perspective face it is |(n.x, n.y)| / |n · (v / v.z)|, which is the same
+  /// tangent on the face's axis and the exact zv gradient off it.
+  double depth_slope(Vec3 n, double lateral_n, const Sample& s) const {
+    // On the plane n · x = c (view space), zv = c / (n · d) along the ray x = zv d,
+    // d = (u, w, 1) with (u, w) the screen position: moving a lateral distance s at depth zv
+    // changes (u, w) by s / zv and zv by s (n.x, n.y) / (n · d). Orthographic: d = (0, 0, 1).
+    if (!view_.orthographic && !(s.v.z > 0)) return kMaxSlope;
+    const Vec3 d = view_.orthographic ? Vec3{0, 0, 1} : Vec3{s.u, s.w, 1};
+    const double along = std::abs(dot(n, d));
+    return lateral_n >= kMaxSlope * along ? kMaxSlope : lateral_n / along;
+  }
+
+  /// Depth tests of a kernel x kernel block of texels centred on the texel of \p s (kernel
   /// odd; texels past the map's edge are clamped to it): how many have v.z <= stored + bias.
-  int passing_tests(Vec3 v, double bias, int kernel) const;
+  int passing_tests(const Sample& s, double bias, int kernel) const {
+    int cx = 0, cy = 0;
+    texel_of(s, cx, cy);
+    // Williams 1978, second pass: the point is lit when it is not farther from the light
+    // than the nearest surface the light sees in its direction (within the bias).
+    if (kernel == 1) return s.v.z <= double(depth(cx, cy)) + bias;
+    const int r = kernel / 2;
+    int passed = 0;
+    for (int dy = -r; dy <= r; ++dy) {
+      const int y = std::clamp(cy + dy, 0, view_.height - 1);
+      for (int dx = -r; dx <= r; ++dx) {
+        const int x = std::clamp(cx + dx, 0, view_.width - 1);
+        passed += s.v.z <= double(depth(x, y)) + bias;
+      }
+    }
+    return passed;
+  }
 
  private:
+  // Index of the texel whose span [i, i + 1) contains continuous coordinate s, clamped to
+  // [0, n - 1]; NaN goes to 0.
+  static int texel_index(double s, int n) {
+    if (!(s > 0)) return 0;
+    if (s >= n) return n - 1;
+    return int(s);
+  }
+
   void allocate(const RasterProjection& view, std::span<const std::uint32_t> bin_start);
   std::size_t draw_tile(int tile, const std::vector<raster::ScreenTriangle>& triangles,
                         std::span<const std::uint32_t> bin);

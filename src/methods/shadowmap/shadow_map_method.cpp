@@ -1,5 +1,7 @@
 #include "shadow_map_method.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -14,6 +16,8 @@ namespace {
 constexpr double kDefaultBiasPerDiagonal = 1e-3;
 constexpr int kMinResolution = 16, kMaxResolution = 16384;
 constexpr int kMaxPcf = 31;
+// Pixels per side of the camera pass's screen tiles.
+constexpr int kShadeTile = 32;
 
 [[noreturn]] void bad_option(const std::string& key, const std::string& what) {
   throw InputError("option 'shadowmap." + key + "'", what);
@@ -28,6 +32,11 @@ int integer_option(const MethodOptions& options, const std::string& key, int fal
                         ", got " + options.text(key, ""));
   }
   return int(value);
+}
+
+// \p normal in the frame of \p view.
+Vec3 view_normal(const RasterProjection& view, Vec3 normal) {
+  return {dot(normal, view.right), dot(normal, view.up), dot(normal, view.forward)};
 }
 
 // A world axis far from \p forward, as the up hint of a view along it.
@@ -95,32 +104,93 @@ void ShadowMapMethod::build(const Scene& scene, std::size_t light, const Context
   }
 }
 
+// What the camera pass knows of the receiving face of the last pixel, kept while a run of
+// pixels stays on one face and one map.
+struct ShadowMapMethod::Receiver {
+  std::uint32_t face = kNoFace;
+  const Plane* plane = nullptr;
+  bool faces_light = false;
+  double eye_distance = 0;
+  const DepthMap* map = nullptr;
+  Vec3 n;  ///< the plane's normal in the map's view
+  double lateral = 0;
+};
+
 void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
                             ShadowMask& mask, const Context& /*ctx*/) {
   const bool point_light = light_.type == Light::Type::point;
   SHADOWKIT_CHECK((point_light ? cube_.texel_count() : ortho_.texel_count()) > 0);  // built
-  const Vec3 eye = scene.camera.position;
-  shade_each_pixel(surfaces, mask, [&](std::size_t i) {
-    const Plane& plane = scene.face_plane(surfaces.face[i]);
-    // Contract condition 1: a surface is two-sided, lit only on the side the light is on.
-    if (!faces_light(plane, eye, light_)) return false;
-    return passes_depth_test(plane, surfaces.point(i));
+  // The contract's pixel rays as VisibleSurfaceBuffer::ray() makes them, the column part
+  // computed once per column instead of from the pixel index.
+  const Camera& camera = scene.camera;
+  const Vec3 forward = camera.forward(), right = camera.right(), up = camera.true_up();
+  const Camera::PixelGrid grid = camera.pixel_grid();
+  std::vector<double> column(std::size_t(surfaces.width));
+  for (int c = 0; c < surfaces.width; ++c) column[c] = grid.x0 + grid.step * double(c);
+  // Screen tiles, so that neighbouring visible points, which look up neighbouring texels, come
+  // one after another.
+  const int tiles_x = (surfaces.width + kShadeTile - 1) / kShadeTile;
+  const int tiles_y = (surfaces.height + kShadeTile - 1) / kShadeTile;
+  tbb::parallel_for(0, tiles_x * tiles_y, [&](int tile) {
+    const int x0 = (tile % tiles_x) * kShadeTile, y0 = (tile / tiles_x) * kShadeTile;
+    const int x1 = std::min(x0 + kShadeTile, surfaces.width);
+    const int y1 = std::min(y0 + kShadeTile, surfaces.height);
+    Receiver receiver;
+    for (int y = y0; y < y1; ++y) {
+      const double row = grid.y0 - grid.step * double(y);
+      for (int x = x0; x < x1; ++x) {
+        const std::size_t i = surfaces.index(x, y);
+        if (!surfaces.covered(i)) continue;
+        const Vec3 ray = forward + column[x] * right + row * up;
+        const bool lit = lit_at(scene, surfaces.face[i], ray, receiver);
+        mask.pixels[i] = lit ? kMaskLit : kMaskShadow;
+      }
+    }
   });
 }
 
+bool ShadowMapMethod::lit_at(const Scene& scene, std::uint32_t face, Vec3 ray,
+                             Receiver& receiver) const {
+  const Vec3 eye = scene.camera.position;
+  if (face != receiver.face) {
+    receiver = Receiver{};
+    receiver.face = face;
+    receiver.plane = &scene.face_plane(face);
+    // Contract condition 1: a surface is two-sided, lit only on the side the light is on.
+    receiver.faces_light = faces_light(*receiver.plane, eye, light_);
+    receiver.eye_distance = receiver.plane->distance(eye);
+  }
+  if (!receiver.faces_light) return false;
+  // The visible point as VisibleSurfaceBuffer::point() computes it.
+  const Vec3 p = eye + ray * (-receiver.eye_distance / dot(receiver.plane->normal, ray));
+  const DepthMap& map = map_for(p);
+  if (&map != receiver.map) {
+    receiver.map = &map;
+    receiver.n = view_normal(map.view(), receiver.plane->normal);
+    receiver.lateral = DepthMap::lateral(receiver.n);
+  }
+  return depth_test(map, receiver.n, receiver.lateral, p);
+}
+
 bool ShadowMapMethod::passes_depth_test(const Plane& plane, Vec3 p) const {
+  const DepthMap& map = map_for(p);
+  const Vec3 n = view_normal(map.view(), plane.normal);
+  return depth_test(map, n, DepthMap::lateral(n), p);
+}
+
+const DepthMap& ShadowMapMethod::map_for(Vec3 p) const {
+  return light_.type == Light::Type::point ? cube_.map_for(p) : ortho_;
+}
+
+bool ShadowMapMethod::depth_test(const DepthMap& map, Vec3 n, double lateral, Vec3 p) const {
   // Williams 1978, second pass: transform the visible point into the light's view.
-  const shadowmap::DepthMap& map = light_.type == Light::Type::point ? cube_.map_for(p) : ortho_;
-  const RasterProjection& view = map.view();
-  const Vec3 v = view.to_view(p);
-  const Vec3 n{dot(plane.normal, view.right), dot(plane.normal, view.up),
-               dot(plane.normal, view.forward)};
+  const DepthMap::Sample s = map.sample(map.view().to_view(p));
   // The map sampled each surface at texel centres, so a plane's stored depth differs from
   // its depth at p by up to its slope times half a texel, and float storage adds rounding:
   // without a bias surfaces shadow themselves, the self-shadowing problem Williams 1978
   // describes ("acne").
-  const double bias = bias_ + slope_bias_ * map.texel_size(v.z) * map.depth_slope(n, v);
-  return 2 * map.passing_tests(v, bias, pcf_) >= pcf_ * pcf_;  // lit if half the tests pass
+  const double bias = bias_ + slope_bias_ * map.texel_size(s.v.z) * map.depth_slope(n, lateral, s);
+  return 2 * map.passing_tests(s, bias, pcf_) >= pcf_ * pcf_;  // lit if half the tests pass
 }
 
 std::size_t ShadowMapMethod::memory_bytes() const {

@@ -51,6 +51,9 @@ class ShadowMapMethod final : public ShadowMethod {
   /// the light of the last build().
   bool passes_depth_test(const Plane& plane, Vec3 p) const;
 
+  /// The map of the last build() that holds world point \p p.
+  const shadowmap::DepthMap& map_for(Vec3 p) const;
+
   /// The constant bias of the last build(), in world units.
   double bias() const { return bias_; }
   /// The map of the last build() for a directional light.
@@ -59,6 +62,14 @@ class ShadowMapMethod final : public ShadowMethod {
   const shadowmap::CubeMap& cube_map() const { return cube_; }
 
  private:
+  struct Receiver;
+  /// Whether the visible point on \p face along the camera's \p ray is lit; \p receiver
+  /// carries what the last pixel learnt of its face.
+  bool lit_at(const Scene& scene, std::uint32_t face, Vec3 ray, Receiver& receiver) const;
+  /// The depth comparison in \p map for a receiver whose normal in the map's view is \p n
+  /// (DepthMap::lateral(n) = \p lateral).
+  bool depth_test(const shadowmap::DepthMap& map, Vec3 n, double lateral, Vec3 p) const;
+
   int resolution_ = 2048;
   std::optional<double> bias_option_;
   double slope_bias_ = 1.0;
