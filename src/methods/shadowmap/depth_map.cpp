@@ -98,17 +98,15 @@ std::size_t DepthMap::draw_tile(int tile, const std::vector<ScreenTriangle>& tri
   const int w = std::min(kTile, view_.width - x0), h = std::min(kTile, view_.height - y0);
   nearest_keys(triangles, bin, x0, y0, w, h, keys.data());
   float* out = texels_.data() + std::size_t(slot_[std::size_t(tile)]) * kTileTexels;
-  // Branch-free loops, which the compiler vectorizes; keys past the map's right edge stay
+  // Loops without branches, which the compiler vectorizes; keys past the map's right edge stay
   // -infinity and count as not drawn.
   const int n = kTile * h;
   if (view_.orthographic) {
-    for (int k = 0; k < n; ++k) out[k] = keys[k] == -INFINITY ? kEmpty : float(-keys[k]);
+    for (int k = 0; k < n; ++k) out[k] = float(-keys[k]);
   } else {
-    for (int k = 0; k < n; ++k) {
-      const double depth = 1.0 / keys[k];
-      out[k] = keys[k] == -INFINITY ? kEmpty : float(depth);
-    }
+    for (int k = 0; k < n; ++k) out[k] = float(1.0 / keys[k]);
   }
+  for (int k = 0; k < n; ++k) out[k] = keys[k] == -INFINITY ? kEmpty : out[k];
   return std::size_t(
       std::count_if(keys.begin(), keys.begin() + n, [](double key) { return key != -INFINITY; }));
 }

@@ -59,7 +59,7 @@ class DepthMap {
   std::size_t memory_bytes() const;
 
   /// Stored linear depth of texel (x, y); +infinity where nothing was drawn.
-  float depth(int x, int y) const {
+  const float& depth(int x, int y) const {
     const unsigned ux = unsigned(x), uy = unsigned(y);
     const std::size_t tile = std::size_t(uy / kTile) * tiles_x_ + ux / kTile;
     return texels_[std::size_t(slot_[tile]) * kTileTexels + (uy % kTile) * kTile + ux % kTile];
@@ -107,21 +107,31 @@ class DepthMap {
     return lateral_n >= kMaxSlope * along ? kMaxSlope : lateral_n / along;
   }
 
+  /// The stored depth of the texel of \p s.
+  const float& stored(const Sample& s) const {
+    int x = 0, y = 0;
+    texel_of(s, x, y);
+    return depth(x, y);
+  }
+
+  /// Williams 1978, second pass: a point at view depth \p z is lit when it is not farther
+  /// from the light than the nearest surface the light sees in its direction, \p stored
+  /// (within the \p bias).
+  static bool passes(double z, float stored, double bias) { return z <= double(stored) + bias; }
+
   /// Depth tests of a kernel x kernel block of texels centred on the texel of \p s (kernel
   /// odd; texels past the map's edge are clamped to it): how many have v.z <= stored + bias.
   int passing_tests(const Sample& s, double bias, int kernel) const {
+    if (kernel == 1) return passes(s.v.z, stored(s), bias);
     int cx = 0, cy = 0;
     texel_of(s, cx, cy);
-    // Williams 1978, second pass: the point is lit when it is not farther from the light
-    // than the nearest surface the light sees in its direction (within the bias).
-    if (kernel == 1) return s.v.z <= double(depth(cx, cy)) + bias;
     const int r = kernel / 2;
     int passed = 0;
     for (int dy = -r; dy <= r; ++dy) {
       const int y = std::clamp(cy + dy, 0, view_.height - 1);
       for (int dx = -r; dx <= r; ++dx) {
         const int x = std::clamp(cx + dx, 0, view_.width - 1);
-        passed += s.v.z <= double(depth(x, y)) + bias;
+        passed += passes(s.v.z, depth(x, y), bias);
       }
     }
     return passed;

@@ -3,8 +3,10 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "shadowkit/core/error.h"
@@ -116,6 +118,13 @@ struct ShadowMapMethod::Receiver {
   double lateral = 0;
 };
 
+// A point's depth test, ready to be made: where the point falls in which map, and its bias.
+struct ShadowMapMethod::DepthTest {
+  const DepthMap* map;
+  DepthMap::Sample s;
+  double bias;
+};
+
 void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
                             ShadowMask& mask, const Context& /*ctx*/) {
   const bool point_light = light_.type == Light::Type::point;
@@ -136,21 +145,40 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
     const int x1 = std::min(x0 + kShadeTile, surfaces.width);
     const int y1 = std::min(y0 + kShadeTile, surfaces.height);
     Receiver receiver;
+    // A row's one-texel comparisons wait until the row is set up: their loads, independent of
+    // one another, then overlap instead of each stalling the setup of the next point.
+    struct Comparison {
+      std::size_t pixel;
+      const float* stored;
+      double z, bias;
+    };
+    std::array<Comparison, kShadeTile> pending;
     for (int y = y0; y < y1; ++y) {
       const double row = grid.y0 - grid.step * double(y);
+      std::size_t waiting = 0;
       for (int x = x0; x < x1; ++x) {
         const std::size_t i = surfaces.index(x, y);
         if (!surfaces.covered(i)) continue;
         const Vec3 ray = forward + column[x] * right + row * up;
-        const bool lit = lit_at(scene, surfaces.face[i], ray, receiver);
-        mask.pixels[i] = lit ? kMaskLit : kMaskShadow;
+        const std::optional<DepthTest> test = depth_test_at(scene, surfaces.face[i], ray, receiver);
+        if (test && pcf_ == 1) {
+          pending[waiting++] = {i, &test->map->stored(test->s), test->s.v.z, test->bias};
+        } else {
+          mask.pixels[i] = test && passes(*test) ? kMaskLit : kMaskShadow;
+        }
+      }
+      for (std::size_t k = 0; k < waiting; ++k) {
+        const Comparison& c = pending[k];
+        mask.pixels[c.pixel] = DepthMap::passes(c.z, *c.stored, c.bias) ? kMaskLit : kMaskShadow;
       }
     }
   });
 }
 
-bool ShadowMapMethod::lit_at(const Scene& scene, std::uint32_t face, Vec3 ray,
-                             Receiver& receiver) const {
+std::optional<ShadowMapMethod::DepthTest> ShadowMapMethod::depth_test_at(const Scene& scene,
+                                                                         std::uint32_t face,
+                                                                         Vec3 ray,
+                                                                         Receiver& receiver) const {
   const Vec3 eye = scene.camera.position;
   if (face != receiver.face) {
     receiver = Receiver{};
@@ -160,7 +188,7 @@ bool ShadowMapMethod::lit_at(const Scene& scene, std::uint32_t face, Vec3 ray,
     receiver.faces_light = faces_light(*receiver.plane, eye, light_);
     receiver.eye_distance = receiver.plane->distance(eye);
   }
-  if (!receiver.faces_light) return false;
+  if (!receiver.faces_light) return std::nullopt;
   // The visible point as VisibleSurfaceBuffer::point() computes it.
   const Vec3 p = eye + ray * (-receiver.eye_distance / dot(receiver.plane->normal, ray));
   const DepthMap& map = map_for(p);
@@ -175,14 +203,15 @@ bool ShadowMapMethod::lit_at(const Scene& scene, std::uint32_t face, Vec3 ray,
 bool ShadowMapMethod::passes_depth_test(const Plane& plane, Vec3 p) const {
   const DepthMap& map = map_for(p);
   const Vec3 n = view_normal(map.view(), plane.normal);
-  return depth_test(map, n, DepthMap::lateral(n), p);
+  return passes(depth_test(map, n, DepthMap::lateral(n), p));
 }
 
 const DepthMap& ShadowMapMethod::map_for(Vec3 p) const {
   return light_.type == Light::Type::point ? cube_.map_for(p) : ortho_;
 }
 
-bool ShadowMapMethod::depth_test(const DepthMap& map, Vec3 n, double lateral, Vec3 p) const {
+ShadowMapMethod::DepthTest ShadowMapMethod::depth_test(const DepthMap& map, Vec3 n, double lateral,
+                                                       Vec3 p) const {
   // Williams 1978, second pass: transform the visible point into the light's view.
   const DepthMap::Sample s = map.sample(map.view().to_view(p));
   // The map sampled each surface at texel centres, so a plane's stored depth differs from
@@ -190,7 +219,12 @@ bool ShadowMapMethod::depth_test(const DepthMap& map, Vec3 n, double lateral, Ve
   // without a bias surfaces shadow themselves, the self-shadowing problem Williams 1978
   // describes ("acne").
   const double bias = bias_ + slope_bias_ * map.texel_size(s.v.z) * map.depth_slope(n, lateral, s);
-  return 2 * map.passing_tests(s, bias, pcf_) >= pcf_ * pcf_;  // lit if half the tests pass
+  return {&map, s, bias};
+}
+
+bool ShadowMapMethod::passes(const DepthTest& test) const {
+  // Lit if half the tests pass.
+  return 2 * test.map->passing_tests(test.s, test.bias, pcf_) >= pcf_ * pcf_;
 }
 
 std::size_t ShadowMapMethod::memory_bytes() const {

@@ -63,12 +63,16 @@ class ShadowMapMethod final : public ShadowMethod {
 
  private:
   struct Receiver;
-  /// Whether the visible point on \p face along the camera's \p ray is lit; \p receiver
-  /// carries what the last pixel learnt of its face.
-  bool lit_at(const Scene& scene, std::uint32_t face, Vec3 ray, Receiver& receiver) const;
-  /// The depth comparison in \p map for a receiver whose normal in the map's view is \p n
+  struct DepthTest;
+  /// The depth test of the visible point on \p face along the camera's \p ray, or nothing
+  /// when the face does not face the light; \p receiver carries what the last pixel learnt
+  /// of its face.
+  std::optional<DepthTest> depth_test_at(const Scene& scene, std::uint32_t face, Vec3 ray,
+                                         Receiver& receiver) const;
+  /// The depth test of \p p in \p map on a receiver whose normal in the map's view is \p n
   /// (DepthMap::lateral(n) = \p lateral).
-  bool depth_test(const shadowmap::DepthMap& map, Vec3 n, double lateral, Vec3 p) const;
+  DepthTest depth_test(const shadowmap::DepthMap& map, Vec3 n, double lateral, Vec3 p) const;
+  bool passes(const DepthTest& test) const;
 
   int resolution_ = 2048;
   std::optional<double> bias_option_;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <map>
 #include <string>
@@ -12,6 +13,7 @@
 #include "cube_map.h"
 #include "shadow_map_method.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/raster/scan_converter.h"
 #include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/mesh.h"
 
@@ -275,6 +277,117 @@ TEST(ShadowMap, CubeMapEdgesAndCornersLookUpCorrectly) {
     for (std::size_t k = 0; k < pts.size(); ++k) {
       const bool behind = pts[k] == Vec3{5, 5, 5};
       EXPECT_EQ(occluded[k], !behind) << pts[k].x << " " << pts[k].y << " " << pts[k].z;
+    }
+  }
+}
+
+// The scan converter's depth of every texel of \p view, converted as the map stores it: what
+// a map drawn with its own triangle setup and depth-only tiles must hold, bit for bit.
+std::vector<float> scan_converter_depths(const Scene& scene, const RasterProjection& view) {
+  std::vector<float> depth(std::size_t(view.width) * view.height, INFINITY);
+  ScanConverter(scene).rasterize_tiles(view, quiet(), [&](const RasterTile& tile) {
+    for (int y = 0; y < tile.height; ++y) {
+      for (int x = 0; x < tile.width; ++x) {
+        const int k = y * tile.width + x;
+        if (tile.face[k] == kNoFace) continue;
+        const double key = tile.depth_key[k];
+        depth[std::size_t(tile.y0 + y) * view.width + tile.x0 + x] =
+            float(view.orthographic ? -key : 1.0 / key);
+      }
+    }
+  });
+  return depth;
+}
+
+// Texels of \p map whose bits differ from \p expected's.
+int differing_texels(const DepthMap& map, const std::vector<float>& expected) {
+  int differ = 0;
+  for (int y = 0; y < map.height(); ++y) {
+    for (int x = 0; x < map.width(); ++x) {
+      differ += std::bit_cast<std::uint32_t>(map.depth(x, y)) !=
+                std::bit_cast<std::uint32_t>(expected[std::size_t(y) * map.width() + x]);
+    }
+  }
+  return differ;
+}
+
+// Each face is drawn with only the triangles its pyramid reaches, set up by the method itself:
+// the maps must still be the scan converter's. 100 texels leave partial tiles; at 1024 the
+// far ground of the third scene lies past the guard band and is clipped there.
+TEST(ShadowMap, CubeFacesHoldTheScanConvertersDepths) {
+  const struct {
+    const char* what;
+    Scene scene;
+    int faces_drawn;
+  } cases[] = {
+      // Every triangle of the box crosses four faces, and the faces' edges fall on its edges.
+      {"light at the centre of a closed box", box_scene(true), 6},
+      // The square's corner (1, 1, 1) lies in the direction (2, -0.5, 2), on the edge between
+      // the +X and +Z faces; the square's triangles cross -Y, +X and +Z.
+      {"a vertex on a face edge", square_scene(Light::point({-1, 1.5, -1}), kTopCamera), 5},
+      // Between the ground and the square: the square above, the ground on five faces, its
+      // corners behind the near planes of the side faces.
+      {"light inside the scene's bounds", square_scene(Light::point({0.3, 0.5, 0.2}), kTopCamera),
+       6},
+  };
+  for (const auto& c : cases) {
+    for (const int resolution : {100, 1024}) {
+      SCOPED_TRACE(std::string(c.what) + " at " + std::to_string(resolution));
+      CubeMap cube;
+      cube.render(c.scene, c.scene.lights[0].position, resolution, quiet());
+      int faces_drawn = 0;
+      for (int f = 0; f < CubeMap::kFaces; ++f) {
+        const std::vector<float> expected = scan_converter_depths(c.scene, cube.face(f).view());
+        EXPECT_EQ(differing_texels(cube.face(f), expected), 0) << "face " << f;
+        const auto covered =
+            std::count_if(expected.begin(), expected.end(), [](float d) { return d != INFINITY; });
+        EXPECT_EQ(cube.face(f).covered_texels(), std::size_t(covered)) << "face " << f;
+        faces_drawn += covered > 0;
+      }
+      EXPECT_EQ(faces_drawn, c.faces_drawn);
+    }
+  }
+}
+
+// The orthographic map of a directional light, drawn from the scan converter's setup.
+TEST(ShadowMap, DirectionalMapHoldsTheScanConvertersDepths) {
+  const Scene scene = square_scene(Light::directional({0.3, -1, 0.2}), kTopCamera);
+  ShadowMapMethod method = make({{"resolution", "100"}});
+  method.build(scene, 0, quiet());
+  const DepthMap& map = method.directional_map();
+  const std::vector<float> expected = scan_converter_depths(scene, map.view());
+  EXPECT_EQ(differing_texels(map, expected), 0);
+  const auto covered =
+      std::count_if(expected.begin(), expected.end(), [](float d) { return d != INFINITY; });
+  EXPECT_EQ(map.covered_texels(), std::size_t(covered));
+  EXPECT_GT(covered, 9000);  // the ground fills most of the view fitted to the scene's box
+}
+
+// The camera pass, in screen tiles with a face's data kept along runs of pixels and the
+// texel loads of a row made together, decides every pixel as the test of one point does.
+TEST(ShadowMap, CameraPassAgreesWithThePointTest) {
+  for (const Light& light : {Light::point({-1, 1.5, -1}), Light::point({0.3, 0.5, 0.2}),
+                             Light::directional({0.3, -1, 0.2})}) {
+    for (const int pcf : {1, 3}) {
+      SCOPED_TRACE(std::to_string(light.position.x) + " pcf " + std::to_string(pcf));
+      const Scene scene = square_scene(light, kTopCamera);
+      ShadowMapMethod method = make({{"resolution", "128"}, {"pcf", std::to_string(pcf)}});
+      const Rendered r = render(scene, method);
+      int lit = 0, shadowed = 0, differ = 0;
+      for (std::size_t i = 0; i < r.mask.pixels.size(); ++i) {
+        if (!r.surfaces.covered(i)) {
+          EXPECT_EQ(r.mask.pixels[i], kMaskBackground);
+          continue;
+        }
+        const Plane& plane = scene.face_plane(r.surfaces.face[i]);
+        const bool expected = faces_light(plane, scene.camera.position, light) &&
+                              method.passes_depth_test(plane, r.surfaces.point(i));
+        differ += (r.mask.pixels[i] == kMaskLit) != expected;
+        (expected ? lit : shadowed)++;
+      }
+      EXPECT_EQ(differ, 0);
+      EXPECT_GT(lit, 1000);
+      EXPECT_GT(shadowed, 100);
     }
   }
 }
