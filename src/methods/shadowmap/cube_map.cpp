@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "face_setup.h"
-
 namespace shadowkit::shadowmap {
 namespace {
 
@@ -26,13 +24,6 @@ constexpr std::array<FaceAxes, CubeMap::kFaces> kFaceAxes{{
 }};
 }  // namespace
 
-int CubeMap::face_of(Vec3 d) {
-  const double ax = std::abs(d.x), ay = std::abs(d.y), az = std::abs(d.z);
-  if (ax >= ay && ax >= az) return d.x >= 0 ? 0 : 1;
-  if (ay >= az) return d.y >= 0 ? 2 : 3;
-  return d.z >= 0 ? 4 : 5;
-}
-
 RasterProjection CubeMap::face_view(int face, Vec3 eye, int resolution, double near) {
   const FaceAxes& axes = kFaceAxes[face];
   return RasterProjection::perspective(eye, axes.forward, axes.up, 90.0, resolution, resolution,
@@ -43,7 +34,10 @@ void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution, co
   light_position_ = light_position;
   const double near = near_plane_for(scene.bounds(), light_position);
   std::array<RasterProjection, kFaces> views;
-  for (int f = 0; f < kFaces; ++f) views[f] = face_view(f, light_position, resolution, near);
+  for (int f = 0; f < kFaces; ++f) {
+    views[f] = face_view(f, light_position, resolution, near);
+    frames_[f] = AxisFrame(views[f]);
+  }
   // Each face is drawn with the triangles that can reach it only.
   const FaceCulling culling(scene, views);
   std::array<DepthMap::Drawing, kFaces> drawings;

@@ -4,9 +4,11 @@
 // direction needs views that together see the whole sphere, and six cube faces are the usual
 // (environment-map) way to get that with ordinary perspective projections.
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 #include "depth_map.h"
+#include "face_setup.h"
 #include "shadowkit/core/context.h"
 #include "shadowkit/core/vec.h"
 #include "shadowkit/raster/projection.h"
@@ -27,7 +29,12 @@ class CubeMap {
 
   /// The face for direction \p d from the light: the dominant axis and its sign. Ties go to
   /// x before y before z; the zero vector gets face 0.
-  static int face_of(Vec3 d);
+  static int face_of(Vec3 d) {
+    const double ax = std::abs(d.x), ay = std::abs(d.y), az = std::abs(d.z);
+    if (ax >= ay && ax >= az) return d.x >= 0 ? 0 : 1;
+    if (ay >= az) return d.y >= 0 ? 2 : 3;
+    return d.z >= 0 ? 4 : 5;
+  }
   /// The view of face \p face for a light at \p eye: a square 90° perspective view.
   static RasterProjection face_view(int face, Vec3 eye, int resolution, double near);
 
@@ -35,8 +42,13 @@ class CubeMap {
   void render(const Scene& scene, Vec3 light_position, int resolution, const Context& ctx);
 
   const DepthMap& face(int f) const { return faces_[f]; }
-  /// The face map that holds world point \p p.
-  const DepthMap& map_for(Vec3 p) const { return faces_[face_of(p - light_position_)]; }
+  /// The face map that holds world point \p p, and \p p in its view (as its view's to_view).
+  const DepthMap& locate(Vec3 p, Vec3& v) const {
+    const Vec3 d = p - light_position_;
+    const int f = face_of(d);
+    v = frames_[f].to_view(d);
+    return faces_[f];
+  }
 
   std::size_t texel_count() const;
   std::size_t covered_texels() const;
@@ -44,6 +56,7 @@ class CubeMap {
 
  private:
   std::array<DepthMap, kFaces> faces_;
+  std::array<AxisFrame, kFaces> frames_;
   Vec3 light_position_;
 };
 

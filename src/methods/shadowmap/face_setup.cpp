@@ -23,25 +23,11 @@ constexpr int kFaceBits = 5;
 constexpr std::uint32_t kFaceMask = (1u << kFaceBits) - 1;
 constexpr std::size_t kChunk = 2048;
 
-// A coordinate of a cube face's view: a face's right, up and forward vectors are signed world
-// axes, so its view coordinates are signed components of (p - eye), exactly as to_view
-// computes them.
-struct Axis {
-  int index;
-  double sign;
-  double of(Vec3 d) const { return sign * d[index]; }
-};
-
-Axis axis_of(Vec3 unit) {
-  const int index = unit.x != 0 ? 0 : (unit.y != 0 ? 1 : 2);
-  return {index, unit[index]};
-}
-
 std::uint32_t pyramid_outside(const RasterProjection& view, Vec3 d) {
-  const double x = axis_of(view.right).of(d), y = axis_of(view.up).of(d);
-  const double z = axis_of(view.forward).of(d);
-  return std::uint32_t(z < view.near) | std::uint32_t(x > z) << 1 | std::uint32_t(-x > z) << 2 |
-         std::uint32_t(y > z) << 3 | std::uint32_t(-y > z) << 4;
+  const Vec3 v = AxisFrame(view).to_view(d);
+  return std::uint32_t(v.z < view.near) | std::uint32_t(v.x > v.z) << 1 |
+         std::uint32_t(-v.x > v.z) << 2 | std::uint32_t(v.y > v.z) << 3 |
+         std::uint32_t(-v.y > v.z) << 4;
 }
 
 // raster::setup_triangles' snapping of a view-space point to fixed point.
@@ -99,6 +85,14 @@ void emit(FixedPoint v0, FixedPoint v1, FixedPoint v2, const ScreenTriangle& key
 }
 
 }  // namespace
+
+AxisFrame::AxisFrame(const RasterProjection& view) {
+  const Vec3 axes[3] = {view.right, view.up, view.forward};
+  for (int k = 0; k < 3; ++k) {
+    index_[k] = axes[k].x != 0 ? 0 : (axes[k].y != 0 ? 1 : 2);
+    sign_[k] = axes[k][index_[k]];
+  }
+}
 
 FaceCulling::FaceCulling(const Scene& scene, std::span<const RasterProjection> views)
     : scene_(scene), outside_(scene.triangles().positions.size()) {

@@ -2,6 +2,7 @@
 // Triangle setup for the six faces of a cube map, each triangle set up only for the faces it
 // can reach. raster::setup_triangles run once per face would transform, clip and set up every
 // triangle of the scene six times, though most triangles reach one face.
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -12,6 +13,24 @@
 #include "shadowkit/scene/scene.h"
 
 namespace shadowkit::shadowmap {
+
+/// \brief The frame of a view whose right, up and forward vectors are signed world axes, as a
+/// cube face's are. A point's view coordinates are then signed components of p - eye: what
+/// RasterProjection::to_view computes, without its products (but for the sign of a zero,
+/// which no projection or depth comparison sees).
+class AxisFrame {
+ public:
+  AxisFrame() = default;
+  explicit AxisFrame(const RasterProjection& view);
+  /// The view coordinates of the point eye + \p d.
+  Vec3 to_view(Vec3 d) const {
+    return {sign_[0] * d[index_[0]], sign_[1] * d[index_[1]], sign_[2] * d[index_[2]]};
+  }
+
+ private:
+  std::array<int, 3> index_{};
+  std::array<double, 3> sign_{};
+};
 
 /// \brief Where each scene vertex lies against the pyramids |xv| <= zv, |yv| <= zv of cube
 /// faces (CubeMap::face_view), in front of their near planes.

@@ -18,8 +18,8 @@ namespace {
 constexpr double kDefaultBiasPerDiagonal = 1e-3;
 constexpr int kMinResolution = 16, kMaxResolution = 16384;
 constexpr int kMaxPcf = 31;
-// Pixels per side of the camera pass's screen tiles.
-constexpr int kShadeTile = 32;
+// The camera pass's screen tiles: wide, so that the hardware prefetcher follows each row.
+constexpr int kShadeTileW = 128, kShadeTileH = 8;
 
 [[noreturn]] void bad_option(const std::string& key, const std::string& what) {
   throw InputError("option 'shadowmap." + key + "'", what);
@@ -129,40 +129,44 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
                             ShadowMask& mask, const Context& /*ctx*/) {
   const bool point_light = light_.type == Light::Type::point;
   SHADOWKIT_CHECK((point_light ? cube_.texel_count() : ortho_.texel_count()) > 0);  // built
-  // The contract's pixel rays as VisibleSurfaceBuffer::ray() makes them, the column part
-  // computed once per column instead of from the pixel index.
+  // The contract's pixel rays as VisibleSurfaceBuffer::ray() makes them, (forward + x right)
+  // + y up, with the column's part computed once per column and the row's once per row.
   const Camera& camera = scene.camera;
   const Vec3 forward = camera.forward(), right = camera.right(), up = camera.true_up();
   const Camera::PixelGrid grid = camera.pixel_grid();
-  std::vector<double> column(std::size_t(surfaces.width));
-  for (int c = 0; c < surfaces.width; ++c) column[c] = grid.x0 + grid.step * double(c);
+  std::vector<Vec3> column(std::size_t(surfaces.width));
+  for (int c = 0; c < surfaces.width; ++c) {
+    column[c] = forward + (grid.x0 + grid.step * double(c)) * right;
+  }
   // Screen tiles, so that neighbouring visible points, which look up neighbouring texels, come
   // one after another.
-  const int tiles_x = (surfaces.width + kShadeTile - 1) / kShadeTile;
-  const int tiles_y = (surfaces.height + kShadeTile - 1) / kShadeTile;
+  const int tiles_x = (surfaces.width + kShadeTileW - 1) / kShadeTileW;
+  const int tiles_y = (surfaces.height + kShadeTileH - 1) / kShadeTileH;
   tbb::parallel_for(0, tiles_x * tiles_y, [&](int tile) {
-    const int x0 = (tile % tiles_x) * kShadeTile, y0 = (tile / tiles_x) * kShadeTile;
-    const int x1 = std::min(x0 + kShadeTile, surfaces.width);
-    const int y1 = std::min(y0 + kShadeTile, surfaces.height);
+    const int x0 = (tile % tiles_x) * kShadeTileW, y0 = (tile / tiles_x) * kShadeTileH;
+    const int x1 = std::min(x0 + kShadeTileW, surfaces.width);
+    const int y1 = std::min(y0 + kShadeTileH, surfaces.height);
     Receiver receiver;
-    // A row's one-texel comparisons wait until the row is set up: their loads, independent of
-    // one another, then overlap instead of each stalling the setup of the next point.
+    // A row's one-texel comparisons wait until the row is set up, their texels prefetched: a
+    // texel not in cache then no longer stalls the setup of the points after it.
     struct Comparison {
       std::size_t pixel;
       const float* stored;
       double z, bias;
     };
-    std::array<Comparison, kShadeTile> pending;
+    std::array<Comparison, kShadeTileW> pending;
     for (int y = y0; y < y1; ++y) {
-      const double row = grid.y0 - grid.step * double(y);
+      const Vec3 row = (grid.y0 - grid.step * double(y)) * up;
       std::size_t waiting = 0;
       for (int x = x0; x < x1; ++x) {
         const std::size_t i = surfaces.index(x, y);
         if (!surfaces.covered(i)) continue;
-        const Vec3 ray = forward + column[x] * right + row * up;
+        const Vec3 ray = column[x] + row;
         const std::optional<DepthTest> test = depth_test_at(scene, surfaces.face[i], ray, receiver);
         if (test && pcf_ == 1) {
-          pending[waiting++] = {i, &test->map->stored(test->s), test->s.v.z, test->bias};
+          const float* stored = &test->map->stored(test->s);
+          __builtin_prefetch(stored);
+          pending[waiting++] = {i, stored, test->s.v.z, test->bias};
         } else {
           mask.pixels[i] = test && passes(*test) ? kMaskLit : kMaskShadow;
         }
@@ -191,29 +195,33 @@ std::optional<ShadowMapMethod::DepthTest> ShadowMapMethod::depth_test_at(const S
   if (!receiver.faces_light) return std::nullopt;
   // The visible point as VisibleSurfaceBuffer::point() computes it.
   const Vec3 p = eye + ray * (-receiver.eye_distance / dot(receiver.plane->normal, ray));
-  const DepthMap& map = map_for(p);
+  Vec3 v;
+  const DepthMap& map = locate(p, v);
   if (&map != receiver.map) {
     receiver.map = &map;
     receiver.n = view_normal(map.view(), receiver.plane->normal);
     receiver.lateral = DepthMap::lateral(receiver.n);
   }
-  return depth_test(map, receiver.n, receiver.lateral, p);
+  return depth_test(map, receiver.n, receiver.lateral, v);
 }
 
 bool ShadowMapMethod::passes_depth_test(const Plane& plane, Vec3 p) const {
-  const DepthMap& map = map_for(p);
+  Vec3 v;
+  const DepthMap& map = locate(p, v);
   const Vec3 n = view_normal(map.view(), plane.normal);
-  return passes(depth_test(map, n, DepthMap::lateral(n), p));
+  return passes(depth_test(map, n, DepthMap::lateral(n), v));
 }
 
-const DepthMap& ShadowMapMethod::map_for(Vec3 p) const {
-  return light_.type == Light::Type::point ? cube_.map_for(p) : ortho_;
+const DepthMap& ShadowMapMethod::locate(Vec3 p, Vec3& v) const {
+  // Williams 1978, second pass: transform the visible point into the light's view.
+  if (light_.type == Light::Type::point) return cube_.locate(p, v);
+  v = ortho_.view().to_view(p);
+  return ortho_;
 }
 
 ShadowMapMethod::DepthTest ShadowMapMethod::depth_test(const DepthMap& map, Vec3 n, double lateral,
-                                                       Vec3 p) const {
-  // Williams 1978, second pass: transform the visible point into the light's view.
-  const DepthMap::Sample s = map.sample(map.view().to_view(p));
+                                                       Vec3 v) const {
+  const DepthMap::Sample s = map.sample(v);
   // The map sampled each surface at texel centres, so a plane's stored depth differs from
   // its depth at p by up to its slope times half a texel, and float storage adds rounding:
   // without a bias surfaces shadow themselves, the self-shadowing problem Williams 1978

@@ -51,9 +51,6 @@ class ShadowMapMethod final : public ShadowMethod {
   /// the light of the last build().
   bool passes_depth_test(const Plane& plane, Vec3 p) const;
 
-  /// The map of the last build() that holds world point \p p.
-  const shadowmap::DepthMap& map_for(Vec3 p) const;
-
   /// The constant bias of the last build(), in world units.
   double bias() const { return bias_; }
   /// The map of the last build() for a directional light.
@@ -69,9 +66,11 @@ class ShadowMapMethod final : public ShadowMethod {
   /// of its face.
   std::optional<DepthTest> depth_test_at(const Scene& scene, std::uint32_t face, Vec3 ray,
                                          Receiver& receiver) const;
-  /// The depth test of \p p in \p map on a receiver whose normal in the map's view is \p n
-  /// (DepthMap::lateral(n) = \p lateral).
-  DepthTest depth_test(const shadowmap::DepthMap& map, Vec3 n, double lateral, Vec3 p) const;
+  /// The map of the last build() that holds world point \p p, and \p p in its view.
+  const shadowmap::DepthMap& locate(Vec3 p, Vec3& v) const;
+  /// The depth test of the point \p v (in \p map's view) on a receiver whose normal there is
+  /// \p n (DepthMap::lateral(n) = \p lateral).
+  DepthTest depth_test(const shadowmap::DepthMap& map, Vec3 n, double lateral, Vec3 v) const;
   bool passes(const DepthTest& test) const;
 
   int resolution_ = 2048;
