@@ -179,10 +179,11 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
   });
 }
 
-std::optional<ShadowMapMethod::DepthTest> ShadowMapMethod::depth_test_at(const Scene& scene,
-                                                                         std::uint32_t face,
-                                                                         Vec3 ray,
-                                                                         Receiver& receiver) const {
+// The per-pixel path is declared inline, down to the depth test, so that the compiler folds it
+// into the camera pass's loop: without the calls (and their results passed in memory) it
+// overlaps the divisions and loads of neighbouring pixels.
+inline std::optional<ShadowMapMethod::DepthTest> ShadowMapMethod::depth_test_at(
+    const Scene& scene, std::uint32_t face, Vec3 ray, Receiver& receiver) const {
   const Vec3 eye = scene.camera.position;
   if (face != receiver.face) {
     receiver = Receiver{};
@@ -212,15 +213,15 @@ bool ShadowMapMethod::passes_depth_test(const Plane& plane, Vec3 p) const {
   return passes(depth_test(map, n, DepthMap::lateral(n), v));
 }
 
-const DepthMap& ShadowMapMethod::locate(Vec3 p, Vec3& v) const {
+inline const DepthMap& ShadowMapMethod::locate(Vec3 p, Vec3& v) const {
   // Williams 1978, second pass: transform the visible point into the light's view.
   if (light_.type == Light::Type::point) return cube_.locate(p, v);
   v = ortho_.view().to_view(p);
   return ortho_;
 }
 
-ShadowMapMethod::DepthTest ShadowMapMethod::depth_test(const DepthMap& map, Vec3 n, double lateral,
-                                                       Vec3 v) const {
+inline ShadowMapMethod::DepthTest ShadowMapMethod::depth_test(const DepthMap& map, Vec3 n,
+                                                              double lateral, Vec3 v) const {
   const DepthMap::Sample s = map.sample(v);
   // The map sampled each surface at texel centres, so a plane's stored depth differs from
   // its depth at p by up to its slope times half a texel, and float storage adds rounding:
