@@ -30,7 +30,8 @@ RasterProjection CubeMap::face_view(int face, Vec3 eye, int resolution, double n
                                        near);
 }
 
-void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution, const Context& ctx) {
+void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution,
+                     const Context& /*ctx*/) {
   light_position_ = light_position;
   const double near = near_plane_for(scene.bounds(), light_position);
   std::array<RasterProjection, kFaces> views;
@@ -44,7 +45,7 @@ void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution, co
   tbb::parallel_for(0, kFaces, [&](int f) {
     drawings[f] = {&faces_[f], views[f], face_triangles(scene, culling, f, views[f])};
   });
-  DepthMap::draw(drawings, ctx);
+  DepthMap::draw(drawings);
 }
 
 std::size_t CubeMap::texel_count() const {

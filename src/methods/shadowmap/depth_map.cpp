@@ -43,12 +43,12 @@ void nearest_keys(const std::vector<ScreenTriangle>& triangles, std::span<const 
 
 }  // namespace
 
-void DepthMap::render(const Scene& scene, const RasterProjection& view, const Context& ctx) {
+void DepthMap::render(const Scene& scene, const RasterProjection& view, const Context& /*ctx*/) {
   Drawing drawing{this, view, raster::setup_triangles(scene, view)};
-  draw({&drawing, 1}, ctx);
+  draw({&drawing, 1});
 }
 
-void DepthMap::draw(std::span<Drawing> drawings, const Context& /*ctx*/) {
+void DepthMap::draw(std::span<Drawing> drawings) {
   std::vector<std::optional<raster::TileBins>> bins(drawings.size());
   tbb::parallel_for(std::size_t(0), drawings.size(), [&](std::size_t d) {
     bins[d].emplace(drawings[d].triangles, drawings[d].view.width, drawings[d].view.height);

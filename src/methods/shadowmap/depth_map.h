@@ -48,7 +48,7 @@ class DepthMap {
   /// Renders \p scene through \p view with the scan converter's triangle setup.
   void render(const Scene& scene, const RasterProjection& view, const Context& ctx);
   /// Draws every map of \p drawings, all their tiles in one parallel pass.
-  static void draw(std::span<Drawing> drawings, const Context& ctx);
+  static void draw(std::span<Drawing> drawings);
 
   const RasterProjection& view() const { return view_; }
   int width() const { return view_.width; }

@@ -12,8 +12,9 @@
 namespace shadowkit::shadowmap {
 
 /// \brief Shadow maps: build() renders the scene's depth from the light with the shared
-/// ScanConverter, shade() transforms each visible point into the light's view and compares
-/// its depth with the stored one.
+/// scan converter's triangle setup and fill rule (each cube face with only the triangles that
+/// reach it), shade() transforms each visible point into the light's view and compares its
+/// depth with the stored one, in screen tiles.
 ///
 /// Options (`--set shadowmap.KEY=VALUE`):
 /// - `resolution` (default 2048): texels per side of each cube face (point light) or of the
