@@ -41,10 +41,9 @@ void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution,
   }
   // Each face is drawn with the triangles that can reach it only.
   const FaceCulling culling(scene, views);
+  tbb::parallel_for(0, kFaces, [&](int f) { setups_[f].run(scene, culling, f, views[f]); });
   std::array<DepthMap::Drawing, kFaces> drawings;
-  tbb::parallel_for(0, kFaces, [&](int f) {
-    drawings[f] = {&faces_[f], views[f], face_triangles(scene, culling, f, views[f])};
-  });
+  for (int f = 0; f < kFaces; ++f) drawings[f] = {&faces_[f], views[f], &setups_[f].triangles()};
   DepthMap::draw(drawings);
 }
 
@@ -63,6 +62,7 @@ std::size_t CubeMap::covered_texels() const {
 std::size_t CubeMap::memory_bytes() const {
   std::size_t n = 0;
   for (const DepthMap& m : faces_) n += m.memory_bytes();
+  for (const FaceSetup& s : setups_) n += s.memory_bytes();
   return n;
 }
 

@@ -52,10 +52,12 @@ class CubeMap {
 
   std::size_t texel_count() const;
   std::size_t covered_texels() const;
+  /// The maps' bytes and those of the triangle setup's buffers, kept for the next render().
   std::size_t memory_bytes() const;
 
  private:
   std::array<DepthMap, kFaces> faces_;
+  std::array<FaceSetup, kFaces> setups_;
   std::array<AxisFrame, kFaces> frames_;
   Vec3 light_position_;
 };

@@ -44,14 +44,15 @@ void nearest_keys(const std::vector<ScreenTriangle>& triangles, std::span<const 
 }  // namespace
 
 void DepthMap::render(const Scene& scene, const RasterProjection& view, const Context& /*ctx*/) {
-  Drawing drawing{this, view, raster::setup_triangles(scene, view)};
+  const std::vector<ScreenTriangle> triangles = raster::setup_triangles(scene, view);
+  Drawing drawing{this, view, &triangles};
   draw({&drawing, 1});
 }
 
 void DepthMap::draw(std::span<Drawing> drawings) {
   std::vector<std::optional<raster::TileBins>> bins(drawings.size());
   tbb::parallel_for(std::size_t(0), drawings.size(), [&](std::size_t d) {
-    bins[d].emplace(drawings[d].triangles, drawings[d].view.width, drawings[d].view.height);
+    bins[d].emplace(*drawings[d].triangles, drawings[d].view.width, drawings[d].view.height);
   });
   // Only the tiles some triangle reaches are drawn, the tiles of all maps in one pass.
   struct Job {
@@ -72,7 +73,7 @@ void DepthMap::draw(std::span<Drawing> drawings) {
     const std::span<const std::uint32_t> bin(b.items.data() + b.start[job.tile],
                                              b.start[job.tile + 1] - b.start[job.tile]);
     const std::size_t drawn =
-        drawings[job.drawing].map->draw_tile(int(job.tile), drawings[job.drawing].triangles, bin);
+        drawings[job.drawing].map->draw_tile(int(job.tile), *drawings[job.drawing].triangles, bin);
     covered[job.drawing].fetch_add(drawn, std::memory_order_relaxed);
   });
   for (std::size_t d = 0; d < drawings.size(); ++d) drawings[d].map->covered_ = covered[d].load();

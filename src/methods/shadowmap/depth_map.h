@@ -42,7 +42,7 @@ class DepthMap {
   struct Drawing {
     DepthMap* map;
     RasterProjection view;
-    std::vector<raster::ScreenTriangle> triangles;
+    const std::vector<raster::ScreenTriangle>* triangles;
   };
 
   /// Renders \p scene through \p view with the scan converter's triangle setup.

@@ -6,7 +6,6 @@
 #include <array>
 #include <atomic>
 #include <cmath>
-#include <memory>
 #include <span>
 
 #include "shadowkit/core/error.h"
@@ -115,47 +114,51 @@ bool FaceCulling::reaches(std::size_t t, int face) const {
   return ((all >> (kFaceBits * face)) & kFaceMask) == 0;
 }
 
-std::vector<ScreenTriangle> face_triangles(const Scene& scene, const FaceCulling& culling, int face,
-                                           const RasterProjection& view) {
+void FaceSetup::run(const Scene& scene, const FaceCulling& culling, int face,
+                    const RasterProjection& view) {
   const TriangleList& list = scene.triangles();
   const std::size_t nv = list.positions.size(), nt = list.triangles.size();
+  const std::size_t chunk_count = (nt + kChunk - 1) / kChunk;
 
   // The triangles that reach the face, and the vertices they use.
-  std::vector<std::vector<std::uint32_t>> reaching((nt + kChunk - 1) / kChunk);
-  const std::unique_ptr<std::uint8_t[]> used(new std::uint8_t[nv]());
-  tbb::parallel_for(std::size_t(0), reaching.size(), [&](std::size_t c) {
+  reaching_.resize(chunk_count);
+  used_.assign(nv, 0);
+  tbb::parallel_for(std::size_t(0), chunk_count, [&](std::size_t c) {
+    reaching_[c].clear();
     for (std::size_t t = c * kChunk; t < std::min(nt, (c + 1) * kChunk); ++t) {
       if (!culling.reaches(t, face)) continue;
-      reaching[c].push_back(std::uint32_t(t));
+      reaching_[c].push_back(std::uint32_t(t));
       // Several threads may store the same value here.
       for (const std::uint32_t v : list.triangles[t]) {
-        std::atomic_ref<std::uint8_t>(used[v]).store(1, std::memory_order_relaxed);
+        std::atomic_ref<std::uint8_t>(used_[v]).store(1, std::memory_order_relaxed);
       }
     }
   });
 
   // Per used vertex, once: whether it is well inside the clip volume, and if so its
   // fixed-point position, so that every triangle sharing it snaps it identically.
-  const std::unique_ptr<FixedPoint[]> fixed(new FixedPoint[nv]);
-  const std::unique_ptr<std::uint8_t[]> inside(new std::uint8_t[nv]);
+  inside_.resize(nv);
+  fixed_.resize(nv);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 4096), [&](auto r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      if (!used[i]) continue;
+      if (!used_[i]) continue;
       const Vec3 v = view.to_view(list.positions[i]);
-      inside[i] = well_inside(view, v);
-      if (inside[i]) fixed[i] = to_fixed(view, v);
+      inside_[i] = well_inside(view, v);
+      if (inside_[i]) fixed_[i] = to_fixed(view, v);
     }
   });
 
-  std::vector<std::vector<ScreenTriangle>> chunks(reaching.size());
-  tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
-    for (const std::uint32_t t : reaching[c]) {
+  chunks_.resize(chunk_count);
+  tbb::parallel_for(std::size_t(0), chunk_count, [&](std::size_t c) {
+    std::vector<ScreenTriangle>& out = chunks_[c];
+    out.clear();
+    for (const std::uint32_t t : reaching_[c]) {
       ScreenTriangle key{};
       if (!key_plane(scene.face_plane(list.triangle_face[t]), view, key)) continue;
       key.face = list.triangle_face[t];
       const auto& tri = list.triangles[t];
-      if (inside[tri[0]] && inside[tri[1]] && inside[tri[2]]) {
-        emit(fixed[tri[0]], fixed[tri[1]], fixed[tri[2]], key, view, chunks[c]);
+      if (inside_[tri[0]] && inside_[tri[1]] && inside_[tri[2]]) {
+        emit(fixed_[tri[0]], fixed_[tri[1]], fixed_[tri[2]], key, view, out);
         continue;
       }
       // Near the light or far past the face's edges: the scan converter's own clipping.
@@ -163,17 +166,26 @@ std::vector<ScreenTriangle> face_triangles(const Scene& scene, const FaceCulling
           {list.positions[tri[0]], 1}, {list.positions[tri[1]], 1}, {list.positions[tri[2]], 1}};
       const std::vector<FixedPoint> polygon = raster::snapped_polygon(corners, view);
       for (std::size_t i = 2; i < polygon.size(); ++i) {
-        emit(polygon[0], polygon[i - 1], polygon[i], key, view, chunks[c]);
+        emit(polygon[0], polygon[i - 1], polygon[i], key, view, out);
       }
     }
   });
 
-  std::vector<ScreenTriangle> all;
-  std::size_t total = 0;
-  for (const auto& c : chunks) total += c.size();
-  all.reserve(total);
-  for (const auto& c : chunks) all.insert(all.end(), c.begin(), c.end());
-  return all;
+  // The chunks one after another, copied in parallel.
+  std::vector<std::size_t> offset(chunk_count + 1, 0);
+  for (std::size_t c = 0; c < chunk_count; ++c) offset[c + 1] = offset[c] + chunks_[c].size();
+  triangles_.resize(offset.back());
+  tbb::parallel_for(std::size_t(0), chunk_count, [&](std::size_t c) {
+    std::copy(chunks_[c].begin(), chunks_[c].end(), triangles_.begin() + std::ptrdiff_t(offset[c]));
+  });
+}
+
+std::size_t FaceSetup::memory_bytes() const {
+  std::size_t n = used_.capacity() + inside_.capacity() + fixed_.capacity() * sizeof(FixedPoint) +
+                  triangles_.capacity() * sizeof(ScreenTriangle);
+  for (const auto& r : reaching_) n += r.capacity() * sizeof(std::uint32_t);
+  for (const auto& c : chunks_) n += c.capacity() * sizeof(ScreenTriangle);
+  return n;
 }
 
 }  // namespace shadowkit::shadowmap

@@ -53,10 +53,25 @@ class FaceCulling {
   std::vector<std::uint32_t> outside_;
 };
 
-/// The triangles of \p scene that \p culling lets reach cube face \p face, set up for the
-/// face's \p view bit for bit as raster::setup_triangles sets them up (fixed-point vertices,
-/// fill-rule biases, depth planes), so that the face's map is the scan converter's.
-std::vector<raster::ScreenTriangle> face_triangles(const Scene& scene, const FaceCulling& culling,
-                                                   int face, const RasterProjection& view);
+/// \brief One cube face's triangle setup: the triangles of a scene that a FaceCulling lets
+/// reach the face, set up for the face's view bit for bit as raster::setup_triangles sets them
+/// up (fixed-point vertices, fill-rule biases, depth planes), so that the face's map is the
+/// scan converter's. Its buffers are kept from one setup to the next: a new light's setup
+/// then neither allocates nor faults in memory.
+class FaceSetup {
+ public:
+  /// Sets up the triangles of \p scene that reach cube face \p face, whose view is \p view.
+  void run(const Scene& scene, const FaceCulling& culling, int face, const RasterProjection& view);
+  /// The triangles of the last run(), in no particular order.
+  const std::vector<raster::ScreenTriangle>& triangles() const { return triangles_; }
+  std::size_t memory_bytes() const;
+
+ private:
+  std::vector<std::vector<std::uint32_t>> reaching_;  ///< per chunk of the scene's triangles
+  std::vector<std::uint8_t> used_, inside_;           ///< per vertex
+  std::vector<raster::FixedPoint> fixed_;             ///< per vertex
+  std::vector<std::vector<raster::ScreenTriangle>> chunks_;
+  std::vector<raster::ScreenTriangle> triangles_;
+};
 
 }  // namespace shadowkit::shadowmap
