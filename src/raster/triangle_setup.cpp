@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <tuple>
 
@@ -242,17 +243,36 @@ SpanWalker::SpanWalker(const ScreenTriangle& t, int first_row)
              EdgeWalker(t, 2, first_row)} {}
 
 ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view) {
+  return setup_triangles(scene, view, {});
+}
+
+ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view,
+                                const std::function<bool(std::uint32_t)>& keep) {
   const TriangleList& list = scene.triangles();
   const auto planes = clip_planes(view);
+  const std::size_t nt = list.triangles.size();
+  const std::size_t nv = list.positions.size();
+  // With a filter, the vertices of the triangles kept (several threads may store a 1).
+  std::vector<std::uint8_t> used(keep ? nv : 0);
+  if (keep) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nt, 4096), [&](const auto& r) {
+      for (std::size_t t = r.begin(); t != r.end(); ++t) {
+        if (!keep(std::uint32_t(t))) continue;
+        for (const std::uint32_t v : list.triangles[t]) {
+          std::atomic_ref<std::uint8_t>(used[v]).store(1, std::memory_order_relaxed);
+        }
+      }
+    });
+  }
 
   // Per vertex, once: view-space position, outcode and (if inside) fixed-point position,
   // so that every triangle sharing a vertex snaps it identically.
-  const std::size_t nv = list.positions.size();
   std::vector<Vec3> view_pos(nv);
   std::vector<unsigned> outcode(nv);
   std::vector<FixedPoint> fixed(nv);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 4096), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      if (keep && !used[i]) continue;
       view_pos[i] = view.to_view(list.positions[i]);
       unsigned code = 0;
       for (int k = 0; k < kClipPlanes; ++k) code |= (planes[k].eval(view_pos[i]) < 0) << k;
@@ -261,7 +281,6 @@ ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view
     }
   });
 
-  const std::size_t nt = list.triangles.size();
   // A triangle clipped by the five planes has at most eight corners: six triangles.
   constexpr std::size_t kChunk = ScreenTriangles::kChunkSize / 6;
   ScreenTriangles out;
@@ -272,6 +291,7 @@ ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view
     TriangleBuilder builder(view, chunks[c]);
     Polygon poly;
     for (std::size_t t = c * kChunk; t < std::min(nt, (c + 1) * kChunk); ++t) {
+      if (keep && !keep(std::uint32_t(t))) continue;
       const auto& tri = list.triangles[t];
       const unsigned all_out = outcode[tri[0]] & outcode[tri[1]] & outcode[tri[2]];
       const unsigned any_out = outcode[tri[0]] | outcode[tri[1]] | outcode[tri[2]];

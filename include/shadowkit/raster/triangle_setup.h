@@ -2,6 +2,7 @@
 // Triangle setup for the scan converter: clipping in view space and fixed-point edges.
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -57,13 +58,19 @@ class ScreenTriangles {
   }
 
  private:
-  friend ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view);
+  friend ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view,
+                                         const std::function<bool(std::uint32_t)>& keep);
   std::vector<std::vector<ScreenTriangle>> chunks_;
 };
 
 /// Clips and sets up every triangle of \p scene for \p view, in triangle order (so that the
 /// tie rule "lower triangle index wins" survives binning). Runs in parallel.
 ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view);
+/// As above, for the triangles t (indices into the scene's TriangleList) with keep(t) only;
+/// only their vertices are transformed. A cube face of a shadow map takes the sixth of the
+/// scene that can reach it.
+ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view,
+                                const std::function<bool(std::uint32_t)>& keep);
 
 /// \brief A point in fixed-point pixel coordinates (1/kSubpixel pixel, y down).
 struct FixedPoint {

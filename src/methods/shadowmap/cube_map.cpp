@@ -41,9 +41,13 @@ void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution,
   }
   // Each face is drawn with the triangles that can reach it only.
   const FaceCulling culling(scene, views);
-  tbb::parallel_for(0, kFaces, [&](int f) { setups_[f].run(scene, culling, f, views[f]); });
+  std::array<raster::ScreenTriangles, kFaces> triangles;
+  tbb::parallel_for(0, kFaces, [&](int f) {
+    triangles[f] = raster::setup_triangles(scene, views[f],
+                                           [&](std::uint32_t t) { return culling.reaches(t, f); });
+  });
   std::array<DepthMap::Drawing, kFaces> drawings;
-  for (int f = 0; f < kFaces; ++f) drawings[f] = {&faces_[f], views[f], &setups_[f].triangles()};
+  for (int f = 0; f < kFaces; ++f) drawings[f] = {&faces_[f], views[f], &triangles[f]};
   DepthMap::draw(drawings);
 }
 
@@ -62,7 +66,6 @@ std::size_t CubeMap::covered_texels() const {
 std::size_t CubeMap::memory_bytes() const {
   std::size_t n = 0;
   for (const DepthMap& m : faces_) n += m.memory_bytes();
-  for (const FaceSetup& s : setups_) n += s.memory_bytes();
   return n;
 }
 

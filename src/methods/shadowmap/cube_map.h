@@ -8,7 +8,7 @@
 #include <cstddef>
 
 #include "depth_map.h"
-#include "face_setup.h"
+#include "face_culling.h"
 #include "shadowkit/core/context.h"
 #include "shadowkit/core/vec.h"
 #include "shadowkit/raster/projection.h"
@@ -52,12 +52,11 @@ class CubeMap {
 
   std::size_t texel_count() const;
   std::size_t covered_texels() const;
-  /// The maps' bytes and those of the triangle setup's buffers, kept for the next render().
+  /// The maps' bytes.
   std::size_t memory_bytes() const;
 
  private:
   std::array<DepthMap, kFaces> faces_;
-  std::array<FaceSetup, kFaces> setups_;
   std::array<AxisFrame, kFaces> frames_;
   Vec3 light_position_;
 };

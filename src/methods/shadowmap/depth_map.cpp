@@ -21,7 +21,7 @@ constexpr float kEmpty = std::numeric_limits<float>::infinity();
 // Williams 1978, first pass: a z-buffer rendering of the scene from the light, keeping only
 // depth. The nearest depth key per texel of a w x h tile at (x0, y0), -infinity where nothing
 // is drawn; the scan converter's fill rule and depth planes, without its face ids.
-void nearest_keys(const std::vector<ScreenTriangle>& triangles, std::span<const std::uint32_t> bin,
+void nearest_keys(const raster::ScreenTriangles& triangles, std::span<const std::uint32_t> bin,
                   int x0, int y0, int w, int h, double* keys) {
   std::fill_n(keys, kTile * h, -INFINITY);
   for (const std::uint32_t index : bin) {
@@ -44,7 +44,7 @@ void nearest_keys(const std::vector<ScreenTriangle>& triangles, std::span<const 
 }  // namespace
 
 void DepthMap::render(const Scene& scene, const RasterProjection& view, const Context& /*ctx*/) {
-  const std::vector<ScreenTriangle> triangles = raster::setup_triangles(scene, view);
+  const raster::ScreenTriangles triangles = raster::setup_triangles(scene, view);
   Drawing drawing{this, view, &triangles};
   draw({&drawing, 1});
 }
@@ -92,7 +92,7 @@ void DepthMap::allocate(const RasterProjection& view, std::span<const std::uint3
   std::fill_n(texels_.begin(), kTileTexels, kEmpty);
 }
 
-std::size_t DepthMap::draw_tile(int tile, const std::vector<ScreenTriangle>& triangles,
+std::size_t DepthMap::draw_tile(int tile, const raster::ScreenTriangles& triangles,
                                 std::span<const std::uint32_t> bin) {
   thread_local std::array<double, kTileTexels> keys;
   const int x0 = (tile % tiles_x_) * kTile, y0 = (tile / tiles_x_) * kTile;

@@ -42,7 +42,7 @@ class DepthMap {
   struct Drawing {
     DepthMap* map;
     RasterProjection view;
-    const std::vector<raster::ScreenTriangle>* triangles;
+    const raster::ScreenTriangles* triangles;
   };
 
   /// Renders \p scene through \p view with the scan converter's triangle setup.
@@ -147,7 +147,7 @@ class DepthMap {
   }
 
   void allocate(const RasterProjection& view, std::span<const std::uint32_t> bin_start);
-  std::size_t draw_tile(int tile, const std::vector<raster::ScreenTriangle>& triangles,
+  std::size_t draw_tile(int tile, const raster::ScreenTriangles& triangles,
                         std::span<const std::uint32_t> bin);
 
   RasterProjection view_;

@@ -1,7 +1,7 @@
 #pragma once
-// Triangle setup for the six faces of a cube map, each triangle set up only for the faces it
-// can reach. raster::setup_triangles run once per face would transform, clip and set up every
-// triangle of the scene six times, though most triangles reach one face.
+// Which faces of a cube map each triangle can reach: raster::setup_triangles run for every
+// face with every triangle would transform, clip and set up the scene six times, though most
+// triangles reach one face.
 #include <array>
 #include <cstdint>
 #include <span>
@@ -9,7 +9,6 @@
 
 #include "shadowkit/core/vec.h"
 #include "shadowkit/raster/projection.h"
-#include "shadowkit/raster/triangle_setup.h"
 #include "shadowkit/scene/scene.h"
 
 namespace shadowkit::shadowmap {
@@ -51,27 +50,6 @@ class FaceCulling {
   /// Per vertex, five bits per face: behind the near plane, xv > zv, -xv > zv, yv > zv,
   /// -yv > zv.
   std::vector<std::uint32_t> outside_;
-};
-
-/// \brief One cube face's triangle setup: the triangles of a scene that a FaceCulling lets
-/// reach the face, set up for the face's view bit for bit as raster::setup_triangles sets them
-/// up (fixed-point vertices, fill-rule biases, depth planes), so that the face's map is the
-/// scan converter's. Its buffers are kept from one setup to the next: a new light's setup
-/// then neither allocates nor faults in memory.
-class FaceSetup {
- public:
-  /// Sets up the triangles of \p scene that reach cube face \p face, whose view is \p view.
-  void run(const Scene& scene, const FaceCulling& culling, int face, const RasterProjection& view);
-  /// The triangles of the last run(), in no particular order.
-  const std::vector<raster::ScreenTriangle>& triangles() const { return triangles_; }
-  std::size_t memory_bytes() const;
-
- private:
-  std::vector<std::vector<std::uint32_t>> reaching_;  ///< per chunk of the scene's triangles
-  std::vector<std::uint8_t> used_, inside_;           ///< per vertex
-  std::vector<raster::FixedPoint> fixed_;             ///< per vertex
-  std::vector<std::vector<raster::ScreenTriangle>> chunks_;
-  std::vector<raster::ScreenTriangle> triangles_;
 };
 
 }  // namespace shadowkit::shadowmap
