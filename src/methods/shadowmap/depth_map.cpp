@@ -14,32 +14,9 @@
 namespace shadowkit::shadowmap {
 namespace {
 
-using raster::ScreenTriangle;
 constexpr int kTile = DepthMap::kTile;
+static_assert(kTile == raster::TileBins::kTile, "a map's tiles are the scan converter's");
 constexpr float kEmpty = std::numeric_limits<float>::infinity();
-
-// Williams 1978, first pass: a z-buffer rendering of the scene from the light, keeping only
-// depth. The nearest depth key per texel of a w x h tile at (x0, y0), -infinity where nothing
-// is drawn; the scan converter's fill rule and depth planes, without its face ids.
-void nearest_keys(const raster::ScreenTriangles& triangles, std::span<const std::uint32_t> bin,
-                  int x0, int y0, int w, int h, double* keys) {
-  std::fill_n(keys, kTile * h, -INFINITY);
-  for (const std::uint32_t index : bin) {
-    const ScreenTriangle& t = triangles[index];
-    const int ya = std::max(y0, t.min_y), yb = std::min(y0 + h - 1, t.max_y);
-    raster::SpanWalker walker(t, ya);
-    for (int py = ya; py <= yb; ++py, walker.next_row()) {
-      int xa = std::max(x0, t.min_x), xb = std::min(x0 + w - 1, t.max_x);
-      if (!walker.span(xa, xb)) continue;
-      double* row = keys + (py - y0) * kTile - x0;
-      const double base = t.key_b * py + t.key_c, key_a = t.key_a;
-      for (int px = xa; px <= xb; ++px) {
-        const double z = key_a * px + base;
-        row[px] = z > row[px] ? z : row[px];
-      }
-    }
-  }
-}
 
 }  // namespace
 
@@ -96,11 +73,13 @@ std::size_t DepthMap::draw_tile(int tile, const raster::ScreenTriangles& triangl
                                 std::span<const std::uint32_t> bin) {
   thread_local std::array<double, kTileTexels> keys;
   const int x0 = (tile % tiles_x_) * kTile, y0 = (tile / tiles_x_) * kTile;
-  const int w = std::min(kTile, view_.width - x0), h = std::min(kTile, view_.height - y0);
-  nearest_keys(triangles, bin, x0, y0, w, h, keys.data());
+  const int h = std::min(kTile, view_.height - y0);
+  // Williams 1978, first pass: a z-buffer rendering of the scene from the light, keeping only
+  // depth; the scan converter's own, without face ids. Drawn kTile wide: texels past the
+  // map's right edge stay -infinity, and count as not drawn.
+  raster::draw_tile(triangles, bin, x0, y0, kTile, h, keys.data(), nullptr);
   float* out = texels_.data() + std::size_t(slot_[std::size_t(tile)]) * kTileTexels;
-  // Loops without branches, which the compiler vectorizes; keys past the map's right edge stay
-  // -infinity and count as not drawn.
+  // Loops without branches, which the compiler vectorizes.
   const int n = kTile * h;
   if (view_.orthographic) {
     for (int k = 0; k < n; ++k) out[k] = float(-keys[k]);
