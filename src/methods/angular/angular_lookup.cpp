@@ -4,10 +4,14 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 namespace shadowkit::angular {
+namespace {
 
-LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const LookupQuery& query) {
+// Sec. 7's lookup in list \p k of \p lists (an entry of the table, or a block of entries).
+LookupResult lookup_in(const AngularTable& table, const PairLists& lists, int k,
+                       const ScanLineRun& run, const LookupQuery& query) {
   const double phi = query.phi;
   const bool up = query.phi_increasing;
   double next_x = std::numeric_limits<double>::infinity();
@@ -33,14 +37,14 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
     return false;
   };
   // Shadow is a logical OR: the first pair that shadows the point answers (Sec. 7).
-  for (const AngularPair& pair : table.wide(query.entry)) {
+  for (const AngularPair& pair : lists.wide(k)) {
     if (pair.phi_begin > phi || pair.phi_end < phi) {
       if (up == (pair.phi_begin > phi)) ahead(up ? pair.phi_begin : pair.phi_end);
       continue;
     }
     if (shadows(pair)) return {true, next_x, 1, pair.hidden};
   }
-  const auto [before, narrow] = table.narrow_from(query.entry, phi);
+  const auto [before, narrow] = lists.narrow_from(k, phi);
   if (!up && before) ahead(before->reach);  // the narrow pairs skipped all end before phi
   for (const AngularPair& pair : narrow) {
     if (pair.phi_begin > phi) {  // sorted by phi_begin: no later pair holds the point
@@ -55,6 +59,21 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
   }
   if (std::isfinite(next_phi)) next_x = std::min(next_x, run.phi_crossing(next_phi, query.column));
   return {false, next_x};
+}
+
+}  // namespace
+
+LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const LookupQuery& query) {
+  return lookup_in(table, table.entries(), query.entry, run, query);
+}
+
+std::optional<double> lit_across_block(const AngularTable& table, const ScanLineRun& run,
+                                       const LookupQuery& query) {
+  if (query.entry < 0) return std::nullopt;
+  const LookupResult block =
+      lookup_in(table, table.blocks(), query.entry / kBlockEntries, run, query);
+  if (block.shadowed) return std::nullopt;
+  return block.next_x;
 }
 
 bool grazed(const LookupQuery& query, bool point_light) {

@@ -1,6 +1,7 @@
 #pragma once
 // The shadow query of the discretized-shadow-volume paper, Sec. 7, step 2.
 #include <cstdint>
+#include <optional>
 
 #include "angular_table.h"
 #include "scan_line_run.h"
@@ -33,6 +34,14 @@ struct LookupQuery {
 /// the pair's end, the start of the next pair, or where the run crosses the plane of the
 /// hidden face of a pair holding phi.
 LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const LookupQuery& query);
+
+/// The lookup in the block of the queried entry (AngularTable::blocks): where none of its
+/// pairs shadows the point, the point is lit in every entry of the block, and so is the run
+/// up to the returned column, as long as it stays in the block; nullopt where a pair may
+/// shadow it (the blocks' pairs span a face's pairs in several entries, so only their lit
+/// answers hold).
+std::optional<double> lit_across_block(const AngularTable& table, const ScanLineRun& run,
+                                       const LookupQuery& query);
 
 /// Whether the light grazes the queried point's face: the light's rays meet its plane there
 /// at a sine below kGrazingSine. An angular error of the table (a pair cut at its entry's

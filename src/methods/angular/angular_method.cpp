@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "angular_lookup.h"
 #include "occluders.h"
@@ -40,7 +41,41 @@ void AngularMethod::build(const Scene& scene, std::size_t light, const Context& 
   table_ = AngularTable::build(scene, *frame_, sheets, table_options_, &table_buffers_);
   boundaries_ = ThetaBoundaries(*frame_, table_.theta());
   depth_tolerance_ = 1e-7 * std::max(box.diagonal(), 1e-12);
+  // A block's boundary planes bound it only while it spans less than half a turn.
+  block_runs_ =
+      !frame_->point_light() || kBlockEntries * table_.theta().step < std::numbers::pi / 2;
   lookup_calls_ = 0;
+}
+
+namespace {
+
+// The column after a run from \p x that ends at \p end, within its stretch of one face.
+int run_stop(double end, int x, int face_end) {
+  return int(std::clamp(std::ceil(end), double(x + 1), double(face_end)));
+}
+
+}  // namespace
+
+std::optional<int> AngularMethod::lit_block_run(const ScanLineRun& run, const LookupQuery& query,
+                                                int k, int face_end) const {
+  if (!block_runs_ || grazed(query, frame_->point_light())) return std::nullopt;
+  const std::optional<double> lit = lit_across_block(table_, run, query);
+  if (!lit) return std::nullopt;
+  // The block's unwrapped entries [first, first + n): the run holds while it stays between
+  // their outer boundaries, like eq. 7's run within one entry.
+  const int first = k - query.entry % kBlockEntries;
+  const int n = std::min(kBlockEntries,
+                         table_.theta().resolution - (query.entry - query.entry % kBlockEntries));
+  const double x = query.column;
+  const int stop = run_stop(std::min({*lit, run.crossing(boundaries_.lower(first), x),
+                                      run.crossing(boundaries_.lower(first + n), x)}),
+                            int(x), face_end);
+  // A point light grazes a face where it is far from the light, and along the run the
+  // distance is largest at an end: the run's last pixel must not be grazed either.
+  LookupQuery last = query;
+  last.local = run.local(stop - 1);
+  if (grazed(last, frame_->point_light())) return std::nullopt;
+  return stop;
 }
 
 std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
@@ -88,9 +123,14 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
                                       ? lookup_grazing(table_, *frame_, run, query, k)
                                       : lookup(table_, run, query);
       lookups += std::size_t(result.lookups);
-      // Steps 3-4: hold the answer until nextX or the end of the maximum run (eq. 7).
-      const double end = std::min(result.next_x, max_run_end(run, boundaries_, k, x));
-      const int stop = int(std::clamp(std::ceil(end), double(x + 1), double(face_end)));
+      // Steps 3-4: hold the answer until nextX or the end of the maximum run (eq. 7); a lit
+      // run that leaves its entry first may go on across the entry's block.
+      const double entry_end = max_run_end(run, boundaries_, k, x);
+      int stop = run_stop(std::min(result.next_x, entry_end), x, face_end);
+      if (!result.shadowed && entry_end < result.next_x && stop < face_end) {
+        ++lookups;
+        stop = std::max(stop, lit_block_run(run, query, k, face_end).value_or(stop));
+      }
       std::fill_n(&mask.pixels[surfaces.index(x, row)], stop - x,
                   result.shadowed ? kMaskShadow : kMaskLit);
       x = stop;

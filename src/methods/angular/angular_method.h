@@ -2,6 +2,7 @@
 // angular: Thakur, Cheng & Miura, RE loops in an angular lookup table.
 #include <optional>
 
+#include "angular_lookup.h"
 #include "angular_table.h"
 #include "light_frame.h"
 #include "ridge_edges.h"
@@ -28,6 +29,11 @@ class AngularMethod final : public ShadowMethod {
   MethodCounters counters() const override;
 
  private:
+  // From the first pixel of a run (\p query, in unwrapped entry \p k) within a stretch of one
+  // face that ends at \p face_end: the column after the run lit across the entry's block
+  // (lit_across_block), where the light grazes neither end of it; nullopt otherwise.
+  std::optional<int> lit_block_run(const ScanLineRun& run, const LookupQuery& query, int k,
+                                   int face_end) const;
   // Shades one scan line; returns its lookup calls.
   std::size_t shade_row(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
                         int row) const;
@@ -39,6 +45,7 @@ class AngularMethod final : public ShadowMethod {
   AngularTableBuffers table_buffers_;
   ThetaBoundaries boundaries_;
   double depth_tolerance_ = 0;
+  bool block_runs_ = true;  ///< runs may be answered across a block of entries
   double lookup_calls_ = 0;
 };
 

@@ -46,6 +46,59 @@ struct LoopWork {
   std::uint32_t object = 0, loop = 0;
 };
 
+// Moves the wide pairs of \p pairs, sorted by phi_begin (longer than a sixteenth of their
+// extent), after the narrow ones, out of their reach, which then skips well, and sets the
+// narrow ones' reach; returns the wide pairs' count.
+std::uint32_t split_wide(std::span<AngularPair> pairs, std::vector<AngularPair>& wide_pairs) {
+  if (pairs.empty()) return 0;
+  double extent_end = -kInf;
+  for (const AngularPair& pair : pairs) extent_end = std::max(extent_end, pair.phi_end);
+  const double wide = (extent_end - pairs.front().phi_begin) / 16;
+  wide_pairs.clear();
+  std::size_t narrow = 0;
+  double reach = -kInf;
+  for (const AngularPair& pair : pairs) {
+    if (pair.phi_end - pair.phi_begin > wide) {
+      wide_pairs.push_back(pair);
+      continue;
+    }
+    pairs[narrow] = pair;
+    pairs[narrow++].reach = reach = std::max(reach, pair.phi_end);
+  }
+  std::copy(wide_pairs.begin(), wide_pairs.end(), pairs.begin() + narrow);
+  return std::uint32_t(wide_pairs.size());
+}
+
+// One block's pairs while they are made, per thread: per hidden face, the block it was last
+// seen in and its pair's slot there.
+struct BlockScratch {
+  std::vector<int> block;
+  std::vector<std::uint32_t> slot;
+  std::vector<AngularPair> wide;
+};
+
+// Block \p b of \p entries' pairs: one pair per hidden face, from the least phi_begin of its
+// pairs to the largest phi_end, sorted by phi_begin (then by face, for a table that is the
+// same from run to run).
+void span_faces(std::span<const AngularPair> entries, int b, BlockScratch& scratch,
+                std::vector<AngularPair>& out) {
+  out.clear();
+  for (const AngularPair& pair : entries) {
+    if (scratch.block[pair.hidden] != b) {
+      scratch.block[pair.hidden] = b;
+      scratch.slot[pair.hidden] = std::uint32_t(out.size());
+      out.push_back(pair);
+      continue;
+    }
+    AngularPair& span = out[scratch.slot[pair.hidden]];
+    span.phi_begin = std::min(span.phi_begin, pair.phi_begin);
+    span.phi_end = std::max(span.phi_end, pair.phi_end);
+  }
+  std::sort(out.begin(), out.end(), [](const AngularPair& x, const AngularPair& y) {
+    return std::tie(x.phi_begin, x.hidden) < std::tie(y.phi_begin, y.hidden);
+  });
+}
+
 // Every object's vertices in the light's frame, in parallel.
 void place_vertices(const Scene& scene, const LightFrame& frame,
                     std::vector<ObjectLoops>& objects) {
@@ -312,14 +365,14 @@ Occluders place_occluders(const Scene& scene, const std::vector<FarSheets>& shee
 
 }  // namespace
 
-std::pair<const AngularPair*, std::span<const AngularPair>> AngularTable::narrow_from(
+std::pair<const AngularPair*, std::span<const AngularPair>> PairLists::narrow_from(
     int k, double phi) const {
   if (k < 0) return {};
-  const std::span<const AngularPair> pairs = narrow(k);
-  const auto first = std::partition_point(pairs.begin(), pairs.end(),
+  const std::span<const AngularPair> sorted = narrow(k);
+  const auto first = std::partition_point(sorted.begin(), sorted.end(),
                                           [phi](const AngularPair& p) { return p.reach < phi; });
-  const std::size_t skipped = std::size_t(first - pairs.begin());
-  return {skipped ? &pairs[skipped - 1] : nullptr, pairs.subspan(skipped)};
+  const std::size_t skipped = std::size_t(first - sorted.begin());
+  return {skipped ? &sorted[skipped - 1] : nullptr, sorted.subspan(skipped)};
 }
 
 bool AngularTable::blocks(std::uint32_t i, Vec3 p, bool point_light, double tolerance) const {
@@ -423,10 +476,10 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
       }
     }
   });
-  table.pairs_ = std::move(storage.unsorted);
+  table.entries_.pairs = std::move(storage.unsorted);
   table.fill_entries(lists);
   // Step 1.7: sort each entry by phi; Sec. 10: saturate.
-  table.wide_.assign(table.theta_.resolution, 0);
+  table.entries_.wide_count.assign(table.theta_.resolution, 0);
   std::vector<std::uint32_t> kept(table.theta_.resolution);
   std::vector<DepthForm> forms(options.saturated ? table.hidden_.size() : 0);
   tbb::parallel_for(std::size_t(0), forms.size(), [&](std::size_t i) {
@@ -443,6 +496,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
                       }
                     });
   storage.unsorted = table.compact(kept, std::move(storage.kept));
+  table.fill_blocks();
   return table;
 }
 
@@ -453,60 +507,47 @@ void AngularTable::fill_entries(std::span<const std::vector<EntryPair>> lists) {
   tbb::parallel_for(std::size_t(0), lists.size(), [&](std::size_t l) {
     for (const EntryPair& it : lists[l]) ++slot[l][it.entry];
   });
-  start_.assign(r + 1, 0);
+  entries_.start.assign(r + 1, 0);
   std::uint32_t total = 0;
   for (std::size_t k = 0; k < r; ++k) {
-    start_[k] = total;
+    entries_.start[k] = total;
     for (std::vector<std::uint32_t>& counts : slot) {
       const std::uint32_t n = counts[k];
       counts[k] = total;
       total += n;
     }
   }
-  start_[r] = total;
-  pairs_.resize(total);
+  entries_.start[r] = total;
+  entries_.pairs.resize(total);
   tbb::parallel_for(std::size_t(0), lists.size(), [&](std::size_t l) {
     for (const EntryPair& it : lists[l]) {
-      pairs_[slot[l][it.entry]++] = {it.phi_begin, it.phi_end, 0, it.hidden};
+      entries_.pairs[slot[l][it.entry]++] = {it.phi_begin, it.phi_end, 0, it.hidden};
     }
   });
 }
 
 std::uint32_t AngularTable::sort_entry(int k, Saturation* saturation, SortScratch& scratch) {
-  const std::span<AngularPair> entry(pairs_.data() + start_[k], pairs_.data() + start_[k + 1]);
+  const std::span<AngularPair> entry(entries_.pairs.data() + entries_.start[k],
+                                     entries_.pairs.data() + entries_.start[k + 1]);
   if (entry.empty()) return 0;
   const std::span<const AngularPair> sorted = scratch.sort(entry);  // step 1.7
-  double extent_end = -kInf;
-  for (const AngularPair& pair : sorted) extent_end = std::max(extent_end, pair.phi_end);
-  // Sec. 10 drops only pairs within a kept one, and never the first: the kept pairs have the
-  // same extent. The wide pairs go after the narrow ones, out of their reach, which then
-  // skips well.
-  const double wide = (extent_end - sorted.front().phi_begin) / 16;
-  std::vector<AngularPair>& wide_pairs = scratch.pairs;
   std::vector<std::uint32_t>& covered = scratch.covered;
-  wide_pairs.clear();
   covered.clear();
-  std::size_t narrow = 0;
-  double reach = -kInf;
+  std::uint32_t kept = 0;
   for (const AngularPair& pair : sorted) {
     if (saturation && saturation->covers(pair)) {
       covered.push_back(pair.hidden);
       continue;
     }
     if (saturation) saturation->keep(pair);
-    if (pair.phi_end - pair.phi_begin > wide) {
-      wide_pairs.push_back(pair);
-      continue;
-    }
-    entry[narrow] = pair;
-    entry[narrow++].reach = reach = std::max(reach, pair.phi_end);
+    entry[kept++] = pair;
   }
-  std::copy(wide_pairs.begin(), wide_pairs.end(), entry.begin() + narrow);
-  wide_[k] = std::uint32_t(wide_pairs.size());
+  // Sec. 10 drops only pairs within a kept one, and never the first: the kept pairs have the
+  // extent of all.
+  entries_.wide_count[k] = split_wide(entry.first(kept), scratch.pairs);
   // The covered pairs' faces go in the slots after the kept pairs, for compact.
-  const std::size_t kept = narrow + wide_pairs.size();
   for (std::size_t i = 0; i < covered.size(); ++i) entry[kept + i].hidden = covered[i];
-  return std::uint32_t(kept);
+  return kept;
 }
 
 std::vector<AngularPair> AngularTable::compact(const std::vector<std::uint32_t>& kept,
@@ -515,20 +556,50 @@ std::vector<AngularPair> AngularTable::compact(const std::vector<std::uint32_t>&
   covered_start_.assign(kept.size() + 1, 0);
   for (std::size_t k = 0; k < kept.size(); ++k) {
     start[k + 1] = start[k] + kept[k];
-    covered_start_[k + 1] = covered_start_[k] + (start_[k + 1] - start_[k] - kept[k]);
+    covered_start_[k + 1] =
+        covered_start_[k] + (entries_.start[k + 1] - entries_.start[k] - kept[k]);
   }
   pairs.resize(start.back());
   covered_.resize(covered_start_.back());
   tbb::parallel_for(std::size_t(0), kept.size(), [&](std::size_t k) {
-    std::copy_n(pairs_.begin() + start_[k], kept[k], pairs.begin() + start[k]);
+    std::copy_n(entries_.pairs.begin() + entries_.start[k], kept[k], pairs.begin() + start[k]);
     for (std::uint32_t i = covered_start_[k]; i < covered_start_[k + 1]; ++i) {
-      covered_[i] = pairs_[start_[k] + kept[k] + (i - covered_start_[k])].hidden;
+      covered_[i] = entries_.pairs[entries_.start[k] + kept[k] + (i - covered_start_[k])].hidden;
     }
   });
-  saturated_ = pairs_.size() - pairs.size();
-  std::swap(pairs_, pairs);
-  start_ = std::move(start);
+  saturated_ = entries_.pairs.size() - pairs.size();
+  std::swap(entries_.pairs, pairs);
+  entries_.start = std::move(start);
   return pairs;
+}
+
+void AngularTable::fill_blocks() {
+  const int r = theta_.resolution, count = (r + kBlockEntries - 1) / kBlockEntries;
+  std::vector<std::vector<AngularPair>> lists(static_cast<std::size_t>(count));
+  blocks_.wide_count.assign(std::size_t(count), 0);
+  tbb::enumerable_thread_specific<BlockScratch> scratch;
+  tbb::parallel_for(0, count, [&](int b) {
+    BlockScratch& local = scratch.local();
+    if (local.block.size() != hidden_.size()) {
+      local.block.assign(hidden_.size(), -1);
+      local.slot.resize(hidden_.size());
+    }
+    // The entries of a block lie together in entries_.pairs.
+    const int first = b * kBlockEntries, last = std::min(r, first + kBlockEntries);
+    const std::span<const AngularPair> entries(entries_.pairs.data() + entries_.start[first],
+                                               entries_.pairs.data() + entries_.start[last]);
+    std::vector<AngularPair>& list = lists[std::size_t(b)];
+    span_faces(entries, b, local, list);
+    blocks_.wide_count[std::size_t(b)] = split_wide(list, local.wide);
+  });
+  blocks_.start.assign(std::size_t(count) + 1, 0);
+  for (std::size_t b = 0; b < lists.size(); ++b) {
+    blocks_.start[b + 1] = blocks_.start[b] + std::uint32_t(lists[b].size());
+  }
+  blocks_.pairs.resize(blocks_.start.back());
+  tbb::parallel_for(std::size_t(0), lists.size(), [&](std::size_t b) {
+    std::copy(lists[b].begin(), lists[b].end(), blocks_.pairs.begin() + blocks_.start[b]);
+  });
 }
 
 }  // namespace shadowkit::angular

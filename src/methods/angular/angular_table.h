@@ -74,6 +74,40 @@ struct AngularTableBuffers {
   }
 };
 
+/// \brief Lists of pairs (a table's entries, or its blocks), each with its narrow pairs first,
+/// sorted by phi_begin, and its wide ones last.
+struct PairLists {
+  std::vector<std::uint32_t> start;       ///< one offset per list into pairs, and the end
+  std::vector<std::uint32_t> wide_count;  ///< per list: its last wide_count[k] pairs are wide
+  std::vector<AngularPair> pairs;
+
+  std::span<const AngularPair> list(int k) const {
+    if (k < 0) return {};
+    return {pairs.data() + start[k], pairs.data() + start[k + 1]};
+  }
+  /// The wide pairs of list \p k (none for k = -1, outside the table), longer than a
+  /// sixteenth of the list's extent (such as a ground plane's): scanned whole by every query.
+  std::span<const AngularPair> wide(int k) const {
+    return k < 0 ? std::span<const AngularPair>{} : list(k).last(wide_count[k]);
+  }
+  /// The other pairs of list \p k, sorted by phi_begin.
+  std::span<const AngularPair> narrow(int k) const {
+    return k < 0 ? std::span<const AngularPair>{} : list(k).first(list(k).size() - wide_count[k]);
+  }
+  /// The narrow pairs of list \p k, sorted by phi_begin, from the first whose reach gets to
+  /// \p phi: the ones before it all end before phi (a binary search instead of the paper's
+  /// scan from the start of the entry); and the pair just before those, whose reach is the
+  /// largest end before phi (nullptr if none).
+  std::pair<const AngularPair*, std::span<const AngularPair>> narrow_from(int k, double phi) const;
+  std::size_t memory_bytes() const {
+    return pairs.capacity() * sizeof(AngularPair) +
+           (start.capacity() + wide_count.capacity()) * sizeof(std::uint32_t);
+  }
+};
+
+/// Entries per block of AngularTable::blocks().
+inline constexpr int kBlockEntries = 16;
+
 /// \brief The lookup table: per theta entry, pairs sorted by phi_begin (Sec. 7, step 1.7).
 class AngularTable {
  public:
@@ -89,29 +123,21 @@ class AngularTable {
   /// kept pairs, of about the same number, then need neither a fresh allocation nor its
   /// zero fill).
   void recycle(AngularTableBuffers& buffers) {
-    buffers.kept = std::move(pairs_);
+    buffers.kept = std::move(entries_.pairs);
     *this = AngularTable();
   }
 
   const ThetaQuantization& theta() const { return theta_; }
-  std::span<const AngularPair> entry(int k) const {
-    if (k < 0) return {};
-    return {pairs_.data() + start_[k], pairs_.data() + start_[k + 1]};
-  }
-  /// The wide pairs of entry \p k (none for k = -1, outside the table), longer than a
-  /// sixteenth of the entry's extent (such as a ground plane's): scanned whole by every query.
-  std::span<const AngularPair> wide(int k) const {
-    return k < 0 ? std::span<const AngularPair>{} : entry(k).last(wide_[k]);
-  }
-  /// The other pairs of entry \p k, sorted by phi_begin.
-  std::span<const AngularPair> narrow(int k) const {
-    return k < 0 ? std::span<const AngularPair>{} : entry(k).first(entry(k).size() - wide_[k]);
-  }
-  /// The narrow pairs of entry \p k, sorted by phi_begin, from the first whose reach gets to
-  /// \p phi: the ones before it all end before phi (a binary search instead of the paper's
-  /// scan from the start of the entry); and the pair just before those, whose reach is the
-  /// largest end before phi (nullptr if none).
-  std::pair<const AngularPair*, std::span<const AngularPair>> narrow_from(int k, double phi) const;
+  /// The entries, each sorted by phi (Sec. 7, step 1.7).
+  const PairLists& entries() const { return entries_; }
+  /// Runs of kBlockEntries entries (the last run shorter), each with one pair per hidden
+  /// face of its entries' pairs spanning them all: a point that no such pair shadows is lit in
+  /// every entry of its block, so one lookup may answer across all of them (scan-line
+  /// coherence across entries, where the paper's maximum run length, eq. 7, stops at one).
+  const PairLists& blocks() const { return blocks_; }
+  std::span<const AngularPair> entry(int k) const { return entries_.list(k); }
+  std::span<const AngularPair> wide(int k) const { return entries_.wide(k); }
+  std::span<const AngularPair> narrow(int k) const { return entries_.narrow(k); }
   const HiddenFace& hidden(std::uint32_t i) const { return hidden_[i]; }
   /// Occluding face \p i has a corner strictly on the light's side of \p receiver (a
   /// receiving face's plane, \p light_side its sign at the light), by more than
@@ -129,7 +155,7 @@ class AngularTable {
   /// The ray from the light to \p p (towards the light from \p p, for a directional light)
   /// passes through occluding face \p i before \p p, by more than \p tolerance.
   bool blocks(std::uint32_t i, Vec3 p, bool point_light, double tolerance) const;
-  std::size_t pair_count() const { return pairs_.size(); }
+  std::size_t pair_count() const { return entries_.pairs.size(); }
   /// The ridge edges and RE loops the table was built from.
   const RidgeEdgeStats& loop_stats() const { return loop_stats_; }
   /// Pairs dropped by saturation (Sec. 10).
@@ -143,8 +169,7 @@ class AngularTable {
     return {covered_.data() + covered_start_[k], covered_.data() + covered_start_[k + 1]};
   }
   std::size_t memory_bytes() const {
-    return pairs_.capacity() * sizeof(AngularPair) +
-           (start_.capacity() + wide_.capacity()) * sizeof(std::uint32_t) +
+    return entries_.memory_bytes() + blocks_.memory_bytes() +
            hidden_.capacity() * sizeof(HiddenFace) +
            corner_start_.capacity() * sizeof(std::uint32_t) + corners_.capacity() * sizeof(Vec3) +
            (covered_start_.capacity() + covered_.capacity()) * sizeof(std::uint32_t);
@@ -164,11 +189,12 @@ class AngularTable {
   // were in.
   std::vector<AngularPair> compact(const std::vector<std::uint32_t>& kept,
                                    std::vector<AngularPair> storage);
+  // The blocks from the kept pairs of the entries.
+  void fill_blocks();
 
   ThetaQuantization theta_;
-  std::vector<std::uint32_t> start_;  ///< R + 1 offsets into pairs_
-  std::vector<std::uint32_t> wide_;   ///< per entry: its last wide_[k] pairs are wide
-  std::vector<AngularPair> pairs_;
+  PairLists entries_;
+  PairLists blocks_;
   std::vector<HiddenFace> hidden_;
   std::vector<std::uint32_t> corner_start_;   ///< per hidden face, into corners_
   std::vector<Vec3> corners_;                 ///< hidden faces' corners, light frame

@@ -437,6 +437,45 @@ TEST(AngularTable, SaturationKeepsTheFacesOfThePairsItDrops) {
   EXPECT_TRUE(saturated.covered(-1).empty());
 }
 
+// Every pair of a block's entries lies within its face's one pair of the block, and the
+// block holds no other face: a point no block pair shadows is lit in all its entries.
+TEST(AngularTable, ABlockSpansThePairsOfItsEntriesFaceByFace) {
+  const Scene scene = load_scene("cubes:300", {});
+  const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center());
+  const AngularTable table =
+      AngularTable::build(scene, frame, occluding_sheets(scene, scene.lights[0]), {});
+  const int r = table.theta().resolution;
+  ASSERT_GT(r, 3 * kBlockEntries);
+  ASSERT_NE(r % kBlockEntries, 0);  // the last block is shorter
+  const PairLists& blocks = table.blocks();
+  ASSERT_EQ(blocks.start.size(), std::size_t((r + kBlockEntries - 1) / kBlockEntries + 1));
+  std::size_t spans = 0;
+  for (int b = 0; b + 1 < int(blocks.start.size()); ++b) {
+    std::map<std::uint32_t, AngularPair> span;  // per face, the hull of its entries' pairs
+    for (int k = b * kBlockEntries; k < std::min(r, (b + 1) * kBlockEntries); ++k) {
+      for (const AngularPair& p : table.entry(k)) {
+        const auto [it, first] = span.try_emplace(p.hidden, p);
+        it->second.phi_begin = std::min(it->second.phi_begin, p.phi_begin);
+        it->second.phi_end = std::max(it->second.phi_end, p.phi_end);
+      }
+    }
+    ASSERT_EQ(blocks.list(b).size(), span.size()) << "block " << b;
+    for (const AngularPair& p : blocks.list(b)) {
+      ASSERT_TRUE(span.count(p.hidden)) << "block " << b;
+      EXPECT_EQ(p.phi_begin, span[p.hidden].phi_begin);
+      EXPECT_EQ(p.phi_end, span[p.hidden].phi_end);
+    }
+    const auto narrow = blocks.narrow(b);
+    for (std::size_t i = 1; i < narrow.size(); ++i) {
+      EXPECT_LE(narrow[i - 1].phi_begin, narrow[i].phi_begin);
+      EXPECT_EQ(narrow[i].reach, std::max(narrow[i - 1].reach, narrow[i].phi_end));
+    }
+    spans += span.size();
+  }
+  EXPECT_LT(spans, table.pair_count() / 2);  // a face's pairs in several entries become one
+  EXPECT_TRUE(blocks.list(-1).empty());
+}
+
 // Buffers left by a larger table (longer lists, more pairs) change nothing in the next one.
 TEST(AngularTable, BuffersOfAnEarlierBuildLeaveTheTableAsItWas) {
   const auto build = [](const Scene& scene, AngularTableBuffers* buffers) {

@@ -88,6 +88,18 @@ TEST(AngularScenes, OneLookupServesManyPixels) {
   EXPECT_LT(lookups * 4, double(vsb.covered_count()));
 }
 
+// The light inside the room: the walls' pairs cover every phi, and on the walls theta
+// changes along the scan lines every few pixels; a lit run goes on across its entry's block.
+TEST(AngularScenes, ALitRunCrossesTheEntriesOfItsBlock) {
+  const Scene scene = reduced(load_scene("room", {}));
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  AngularMethod angular({});
+  testing::method_mask(angular, scene, vsb, 0);
+  EXPECT_GT(testing::counter(angular, "theta_resolution"), 500);
+  EXPECT_LT(testing::counter(angular, "lookup_calls") * 8, double(vsb.covered_count()));
+  EXPECT_LE(worst_interior_mismatch(scene), 0.01);
+}
+
 TEST(AngularScenes, RejectsAResolutionThatIsNotAWholeNumber) {
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"resolution", "2.5"}})), InputError);
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"bias", "1"}})), InputError);
