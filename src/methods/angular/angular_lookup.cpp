@@ -76,6 +76,26 @@ std::optional<double> lit_across_block(const AngularTable& table, const ScanLine
   return block.next_x;
 }
 
+std::optional<double> exact_shadow_end(const AngularTable& table, const LightFrame& frame,
+                                       const ScanLineRun& run, const LookupQuery& query,
+                                       std::uint32_t hidden) {
+  const HiddenFace& h = table.hidden(hidden);
+  if (!h.behind(query.local, query.depth_tolerance)) return std::nullopt;
+  double end = run.crossing(h.plane, query.column);
+  const std::span<const Vec3> corners = table.corners(hidden);
+  double side = 0;  // the sign of the first side's plane at the point
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    const FrameAffine sweep = frame.ray_plane(corners[i], corners[(i + 1) % corners.size()]);
+    // The point's distance from the swept plane, with the sign of its side.
+    const double distance = sweep.at(query.local) / length(sweep.a);
+    if (!(std::abs(distance) > query.depth_tolerance)) return std::nullopt;
+    if (side == 0) side = distance;
+    if ((distance > 0) != (side > 0)) return std::nullopt;
+    end = std::min(end, run.crossing(sweep, query.column));
+  }
+  return end;
+}
+
 bool grazed(const LookupQuery& query, bool point_light) {
   const FrameAffine& plane = query.face_plane;
   // Point light: the distance from the light (the origin) to the plane over the distance to

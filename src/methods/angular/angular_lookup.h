@@ -43,6 +43,16 @@ LookupResult lookup(const AngularTable& table, const ScanLineRun& run, const Loo
 std::optional<double> lit_across_block(const AngularTable& table, const ScanLineRun& run,
                                        const LookupQuery& query);
 
+/// Where the run from the queried point leaves the shadow that occluding face \p hidden casts
+/// on it, exactly: the point lies beyond the face's plane and on the face's side of every
+/// plane the light's rays sweep through its sides, so the ray from the light meets the face
+/// (a non-convex face: in its kernel); the run stays in that shadow, whatever entries it
+/// crosses, until it passes one of those planes. nullopt when the point is not within them
+/// by more than the query's depth tolerance.
+std::optional<double> exact_shadow_end(const AngularTable& table, const LightFrame& frame,
+                                       const ScanLineRun& run, const LookupQuery& query,
+                                       std::uint32_t hidden);
+
 /// Whether the light grazes the queried point's face: the light's rays meet its plane there
 /// at a sine below kGrazingSine. An angular error of the table (a pair cut at its entry's
 /// centre theta answers for the whole entry) moves a shadow's edge on such a face by that

@@ -58,7 +58,7 @@ int run_stop(double end, int x, int face_end) {
 
 std::optional<int> AngularMethod::lit_block_run(const ScanLineRun& run, const LookupQuery& query,
                                                 int k, int face_end) const {
-  if (!block_runs_ || grazed(query, frame_->point_light())) return std::nullopt;
+  if (grazed(query, frame_->point_light())) return std::nullopt;
   const std::optional<double> lit = lit_across_block(table_, run, query);
   if (!lit) return std::nullopt;
   // The block's unwrapped entries [first, first + n): the run holds while it stays between
@@ -106,6 +106,7 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
     const FrameAffine face_plane = frame_->plane(plane);
     const double face_light_side = light_side(plane, light_) > 0 ? 1 : -1;
     int k = -2;  // the entry of the previous run, unknown at the start of the stretch
+    bool try_blocks = block_runs_;  // until a block fails to answer on this stretch
     while (x < face_end) {
       // Sec. 7, step 2: query the first pixel of the run.
       LookupQuery query;
@@ -127,9 +128,19 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
       // run that leaves its entry first may go on across the entry's block.
       const double entry_end = max_run_end(run, boundaries_, k, x);
       int stop = run_stop(std::min(result.next_x, entry_end), x, face_end);
-      if (!result.shadowed && entry_end < result.next_x && stop < face_end) {
+      if (result.shadowed && stop < face_end) {
+        // The face that shadows the point may shadow the run further, across entries.
+        const std::optional<double> exact =
+            exact_shadow_end(table_, *frame_, run, query, result.hidden);
+        if (exact) stop = std::max(stop, run_stop(*exact, x, face_end));
+      }
+      if (try_blocks && !result.shadowed && entry_end < result.next_x && stop < face_end) {
         ++lookups;
-        stop = std::max(stop, lit_block_run(run, query, k, face_end).value_or(stop));
+        const std::optional<int> lit = lit_block_run(run, query, k, face_end);
+        // A block that does not answer here is no likelier to further along the stretch,
+        // nearer the same shadow.
+        try_blocks = lit.has_value();
+        stop = std::max(stop, lit.value_or(stop));
       }
       std::fill_n(&mask.pixels[surfaces.index(x, row)], stop - x,
                   result.shadowed ? kMaskShadow : kMaskLit);

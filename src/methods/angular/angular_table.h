@@ -152,6 +152,10 @@ class AngularTable {
     }
     return false;
   }
+  /// Occluding face \p i's corners in the light frame, in the face's order.
+  std::span<const Vec3> corners(std::uint32_t i) const {
+    return {corners_.data() + corner_start_[i], corners_.data() + corner_start_[i + 1]};
+  }
   /// The ray from the light to \p p (towards the light from \p p, for a directional light)
   /// passes through occluding face \p i before \p p, by more than \p tolerance.
   bool blocks(std::uint32_t i, Vec3 p, bool point_light, double tolerance) const;

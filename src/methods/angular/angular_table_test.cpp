@@ -7,10 +7,13 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 
+#include "angular_lookup.h"
 #include "angular_method.h"
 #include "loop_slicer.h"
 #include "occluders.h"
+#include "scan_line_run.h"
 #include "shadowkit/methods/raytrace.h"
 #include "shadowkit/scene/scene_file.h"
 #include "testing/method_testing.h"
@@ -365,6 +368,56 @@ TEST(AngularTable, AFaceBlocksExactlyThePointsBehindItsOwnOutline) {
     EXPECT_FALSE(
         table.blocks(l_face, frame.local(c.under_arm + Vec3{0, 1.5, 0}), point, tolerance));
     EXPECT_FALSE(table.blocks(l_face, frame.local({3, 0, 0.5}), point, tolerance));  // beside
+  }
+}
+
+// The exact shadow of one face along a scan line (angular_lookup.h), for the L-shaped face
+// above: from a point within it, every point up to the end is blocked by the face, and just
+// past a finite end the run is out of it (passed the face's plane or a plane swept through a
+// side, the kernel's boundary for the non-convex L); no end from a point it does not block.
+TEST(AngularLookup, ARunStaysInTheExactShadowOfOneFaceUpToItsEnd) {
+  PolygonSoup l_shape;
+  l_shape.positions = {{0, 1, 0}, {2, 1, 0}, {2, 1, 1}, {1, 1, 1}, {1, 1, 2}, {0, 1, 2}};
+  l_shape.add_face({0, 1, 2, 3, 4, 5});
+  for (const Light& light :
+       {Light::point({0.5, 5, 0.5}), Light::directional(normalize(Vec3{0.1, -1, 0.1}))}) {
+    const Scene scene =
+        testing::make_scene(testing::camera({1, 6, 6}, {1, 0, 1}, 160, 120), {light},
+                            {testing::horizontal_quad(-8, 8, -8, 8, 0), l_shape});
+    const LightFrame frame(light, scene.camera, scene.bounds().center());
+    const AngularTable table =
+        AngularTable::build(scene, frame, occluding_sheets(scene, light), {});
+    const std::uint32_t l_face = hidden_of(table, 1);
+    const bool point = light.type == Light::Type::point;
+    LookupQuery query;
+    query.depth_tolerance = 1e-9;
+    std::size_t blocked = 0, ends = 0;
+    for (int row = 0; row < 120; row += 3) {
+      const ScanLineRun run(frame, scene.camera, {{0, 1, 0}, 0}, row);
+      for (int c = 0; c < 160; ++c) {
+        query.local = run.local(c);
+        query.column = c;
+        const std::optional<double> end = exact_shadow_end(table, frame, run, query, l_face);
+        if (!table.blocks(l_face, query.local, point, 1e-9)) {
+          EXPECT_FALSE(end) << row << " " << c;
+          continue;
+        }
+        ++blocked;
+        if (!end) continue;  // outside the kernel
+        ++ends;
+        ASSERT_GT(*end, c);
+        const double last = std::min(*end, 1000.0);
+        for (const double t : {0.25, 0.5, 0.75, 0.999}) {
+          EXPECT_TRUE(table.blocks(l_face, run.local(c + t * (last - c)), point, 1e-9));
+        }
+        if (*end > 1000) continue;
+        query.local = run.local(*end + 0.01);
+        query.column = *end + 0.01;
+        EXPECT_FALSE(exact_shadow_end(table, frame, run, query, l_face)) << row << " " << c;
+      }
+    }
+    EXPECT_GT(ends, 50u);
+    EXPECT_GT(blocked, ends);  // under the arms, outside the kernel
   }
 }
 
