@@ -83,6 +83,10 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
   const Camera& cam = scene.camera;
   const ThetaQuantization& quant = table_.theta();
   std::size_t lookups = 0;
+  // Pixels the blocks tried on this scan line saved, less two runs of the fine lookup each (a
+  // block holds more and longer pairs: a lookup in it costs about two): the line stops
+  // trying them when they do not pay, where shadows or pairs crowd.
+  int block_credit = 0;
   int x = 0;
   while (x < surfaces.width) {
     const std::size_t i = surfaces.index(x, row);
@@ -134,12 +138,14 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
             exact_shadow_end(table_, *frame_, run, query, result.hidden);
         if (exact) stop = std::max(stop, run_stop(*exact, x, face_end));
       }
-      if (try_blocks && !result.shadowed && entry_end < result.next_x && stop < face_end) {
+      if (try_blocks && block_credit >= -kBlockEntries && !result.shadowed &&
+          entry_end < result.next_x && stop < face_end) {
         ++lookups;
         const std::optional<int> lit = lit_block_run(run, query, k, face_end);
         // A block that does not answer here is no likelier to further along the stretch,
         // nearer the same shadow.
         try_blocks = lit.has_value();
+        block_credit += lit.value_or(stop) - stop - 2 * (stop - x);
         stop = std::max(stop, lit.value_or(stop));
       }
       std::fill_n(&mask.pixels[surfaces.index(x, row)], stop - x,

@@ -74,29 +74,29 @@ std::uint32_t split_wide(std::span<AngularPair> pairs, std::vector<AngularPair>&
 struct BlockScratch {
   std::vector<int> block;
   std::vector<std::uint32_t> slot;
-  std::vector<AngularPair> wide;
+  std::vector<AngularPair> spans, wide;
+  PhiBeginSort sort;
 };
 
 // Block \p b of \p entries' pairs: one pair per hidden face, from the least phi_begin of its
-// pairs to the largest phi_end, sorted by phi_begin (then by face, for a table that is the
-// same from run to run).
+// pairs to the largest phi_end, sorted by phi_begin.
 void span_faces(std::span<const AngularPair> entries, int b, BlockScratch& scratch,
                 std::vector<AngularPair>& out) {
-  out.clear();
+  std::vector<AngularPair>& spans = scratch.spans;
+  spans.clear();
   for (const AngularPair& pair : entries) {
     if (scratch.block[pair.hidden] != b) {
       scratch.block[pair.hidden] = b;
-      scratch.slot[pair.hidden] = std::uint32_t(out.size());
-      out.push_back(pair);
+      scratch.slot[pair.hidden] = std::uint32_t(spans.size());
+      spans.push_back(pair);
       continue;
     }
-    AngularPair& span = out[scratch.slot[pair.hidden]];
+    AngularPair& span = spans[scratch.slot[pair.hidden]];
     span.phi_begin = std::min(span.phi_begin, pair.phi_begin);
     span.phi_end = std::max(span.phi_end, pair.phi_end);
   }
-  std::sort(out.begin(), out.end(), [](const AngularPair& x, const AngularPair& y) {
-    return std::tie(x.phi_begin, x.hidden) < std::tie(y.phi_begin, y.hidden);
-  });
+  const std::span<const AngularPair> sorted = scratch.sort(spans);
+  out.assign(sorted.begin(), sorted.end());
 }
 
 // Every object's vertices in the light's frame, in parallel.
