@@ -78,15 +78,33 @@ std::optional<int> AngularMethod::lit_block_run(const ScanLineRun& run, const Lo
   return stop;
 }
 
+int AngularMethod::extend_run(const ScanLineRun& run, const LookupQuery& query, int k,
+                              const LookupResult& result, bool left_entry, int stop, int face_end,
+                              BlockTries& tries) const {
+  const int x = int(query.column);
+  tries.tried = false;
+  if (result.shadowed) {
+    // The face that shadows the point may shadow the run further.
+    const std::optional<double> exact =
+        exact_shadow_end(table_, *frame_, run, query, result.hidden);
+    return exact ? std::max(stop, run_stop(*exact, x, face_end)) : stop;
+  }
+  if (!left_entry || !tries.stretch || tries.credit < -kBlockEntries) return stop;
+  tries.tried = true;
+  const std::optional<int> lit = lit_block_run(run, query, k, face_end);
+  // A block that does not answer here is no likelier to further along the stretch, nearer
+  // the same shadow.
+  tries.stretch = lit.has_value();
+  tries.credit += lit.value_or(stop) - stop - 2 * (stop - x);
+  return std::max(stop, lit.value_or(stop));
+}
+
 std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
                                      ShadowMask& mask, int row) const {
   const Camera& cam = scene.camera;
   const ThetaQuantization& quant = table_.theta();
   std::size_t lookups = 0;
-  // Pixels the blocks tried on this scan line saved, less two runs of the fine lookup each (a
-  // block holds more and longer pairs: a lookup in it costs about two): the line stops
-  // trying them when they do not pay, where shadows or pairs crowd.
-  int block_credit = 0;
+  BlockTries tries;
   int x = 0;
   while (x < surfaces.width) {
     const std::size_t i = surfaces.index(x, row);
@@ -110,7 +128,7 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
     const FrameAffine face_plane = frame_->plane(plane);
     const double face_light_side = light_side(plane, light_) > 0 ? 1 : -1;
     int k = -2;  // the entry of the previous run, unknown at the start of the stretch
-    bool try_blocks = block_runs_;  // until a block fails to answer on this stretch
+    tries.stretch = block_runs_;
     while (x < face_end) {
       // Sec. 7, step 2: query the first pixel of the run.
       LookupQuery query;
@@ -128,25 +146,13 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
                                       ? lookup_grazing(table_, *frame_, run, query, k)
                                       : lookup(table_, run, query);
       lookups += std::size_t(result.lookups);
-      // Steps 3-4: hold the answer until nextX or the end of the maximum run (eq. 7); a lit
-      // run that leaves its entry first may go on across the entry's block.
+      // Steps 3-4: hold the answer until nextX or the end of the maximum run (eq. 7), or
+      // further across entries.
       const double entry_end = max_run_end(run, boundaries_, k, x);
       int stop = run_stop(std::min(result.next_x, entry_end), x, face_end);
-      if (result.shadowed && stop < face_end) {
-        // The face that shadows the point may shadow the run further, across entries.
-        const std::optional<double> exact =
-            exact_shadow_end(table_, *frame_, run, query, result.hidden);
-        if (exact) stop = std::max(stop, run_stop(*exact, x, face_end));
-      }
-      if (try_blocks && block_credit >= -kBlockEntries && !result.shadowed &&
-          entry_end < result.next_x && stop < face_end) {
-        ++lookups;
-        const std::optional<int> lit = lit_block_run(run, query, k, face_end);
-        // A block that does not answer here is no likelier to further along the stretch,
-        // nearer the same shadow.
-        try_blocks = lit.has_value();
-        block_credit += lit.value_or(stop) - stop - 2 * (stop - x);
-        stop = std::max(stop, lit.value_or(stop));
+      if (stop < face_end) {
+        stop = extend_run(run, query, k, result, entry_end < result.next_x, stop, face_end, tries);
+        lookups += tries.tried;
       }
       std::fill_n(&mask.pixels[surfaces.index(x, row)], stop - x,
                   result.shadowed ? kMaskShadow : kMaskLit);

@@ -34,6 +34,22 @@ class AngularMethod final : public ShadowMethod {
   // (lit_across_block), where the light grazes neither end of it; nullopt otherwise.
   std::optional<int> lit_block_run(const ScanLineRun& run, const LookupQuery& query, int k,
                                    int face_end) const;
+  // Whether a scan line tries blocks: on the current stretch of one face, until a block fails
+  // to answer on it; on the whole line, while the pixels blocks saved, less two runs of the
+  // fine lookup per try (a block holds more and longer pairs: a lookup in it costs about
+  // two), stay above -kBlockEntries: they do not pay where shadows or pairs crowd.
+  struct BlockTries {
+    bool stretch = true;
+    int credit = 0;
+    bool tried = false;  ///< the last run tried one
+  };
+  // The column after the run from \p query's point (in unwrapped entry \p k) answered by
+  // \p result, which holds up to \p stop within the entry (\p left_entry: the run leaves the
+  // entry there, not its pairs), extended across entries: in shadow while the shadowing face
+  // shadows it exactly, lit across the entry's block (lit_block_run).
+  int extend_run(const ScanLineRun& run, const LookupQuery& query, int k,
+                 const LookupResult& result, bool left_entry, int stop, int face_end,
+                 BlockTries& tries) const;
   // Shades one scan line; returns its lookup calls.
   std::size_t shade_row(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
                         int row) const;
