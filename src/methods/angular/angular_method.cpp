@@ -43,7 +43,7 @@ void AngularMethod::build(const Scene& scene, std::size_t light, const Context& 
   depth_tolerance_ = 1e-7 * std::max(box.diagonal(), 1e-12);
   // A block's boundary planes bound it only while it spans less than half a turn.
   block_runs_ =
-      !frame_->point_light() || kBlockEntries * table_.theta().step < std::numbers::pi / 2;
+      !table_.blocks().start.empty() && kBlockEntries * table_.theta().step < std::numbers::pi / 2;
   lookup_calls_ = 0;
 }
 

@@ -61,7 +61,7 @@ class AngularMethod final : public ShadowMethod {
   AngularTableBuffers table_buffers_;
   ThetaBoundaries boundaries_;
   double depth_tolerance_ = 0;
-  bool block_runs_ = true;  ///< runs may be answered across a block of entries
+  bool block_runs_ = false;  ///< runs may be answered across a block of entries
   double lookup_calls_ = 0;
 };
 

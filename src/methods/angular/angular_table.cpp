@@ -496,7 +496,13 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
                       }
                     });
   storage.unsorted = table.compact(kept, std::move(storage.kept));
-  table.fill_blocks();
+  // Blocks answer where entries are narrow on screen, near a light inside the scene, whose
+  // RE loops go all around it (the variable resolution of Sec. 11.2, coarse where the answer
+  // holds); elsewhere runs rarely outlast their entry lit.
+  if (std::ranges::any_of(objects,
+                          [](const ObjectLoops& o) { return o.wraps || !o.axis_faces.empty(); })) {
+    table.fill_blocks();
+  }
   return table;
 }
 

@@ -134,6 +134,7 @@ class AngularTable {
   /// face of its entries' pairs spanning them all: a point that no such pair shadows is lit in
   /// every entry of its block, so one lookup may answer across all of them (scan-line
   /// coherence across entries, where the paper's maximum run length, eq. 7, stops at one).
+  /// Only where RE loops go all around the light (a light inside the scene): otherwise none.
   const PairLists& blocks() const { return blocks_; }
   std::span<const AngularPair> entry(int k) const { return entries_.list(k); }
   std::span<const AngularPair> wide(int k) const { return entries_.wide(k); }
