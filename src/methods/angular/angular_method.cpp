@@ -83,13 +83,16 @@ int AngularMethod::extend_run(const ScanLineRun& run, const LookupQuery& query, 
                               BlockTries& tries) const {
   const int x = int(query.column);
   tries.tried = false;
+  // A run that ends within its entry ends where its pair does or the run crosses a face's
+  // plane: the shadowing face's shadow mostly ends there too.
+  if (!left_entry) return stop;
   if (result.shadowed) {
     // The face that shadows the point may shadow the run further.
     const std::optional<double> exact =
         exact_shadow_end(table_, *frame_, run, query, result.hidden);
     return exact ? std::max(stop, run_stop(*exact, x, face_end)) : stop;
   }
-  if (!left_entry || !tries.stretch || tries.credit < -kBlockEntries) return stop;
+  if (!tries.stretch || tries.credit < -kBlockEntries) return stop;
   tries.tried = true;
   const std::optional<int> lit = lit_block_run(run, query, k, face_end);
   // A block that does not answer here is no likelier to further along the stretch, nearer

@@ -46,27 +46,33 @@ struct LoopWork {
   std::uint32_t object = 0, loop = 0;
 };
 
-// Moves the wide pairs of \p pairs, sorted by phi_begin (longer than a sixteenth of their
-// extent), after the narrow ones, out of their reach, which then skips well, and sets the
-// narrow ones' reach; returns the wide pairs' count.
-std::uint32_t split_wide(std::span<AngularPair> pairs, std::vector<AngularPair>& wide_pairs) {
-  if (pairs.empty()) return 0;
+// Writes the pairs of \p sorted (by phi_begin) that \p keep takes to the front of \p out:
+// the narrow ones, each with its reach, then the wide ones (longer than a sixteenth of the
+// extent of \p sorted), out of their reach, which then skips well. Returns the counts of
+// pairs kept and of wide ones.
+template <class Keep>
+std::pair<std::uint32_t, std::uint32_t> split_wide(std::span<const AngularPair> sorted,
+                                                   std::span<AngularPair> out,
+                                                   std::vector<AngularPair>& wide_pairs,
+                                                   Keep keep) {
+  if (sorted.empty()) return {0, 0};
   double extent_end = -kInf;
-  for (const AngularPair& pair : pairs) extent_end = std::max(extent_end, pair.phi_end);
-  const double wide = (extent_end - pairs.front().phi_begin) / 16;
+  for (const AngularPair& pair : sorted) extent_end = std::max(extent_end, pair.phi_end);
+  const double wide = (extent_end - sorted.front().phi_begin) / 16;
   wide_pairs.clear();
   std::size_t narrow = 0;
   double reach = -kInf;
-  for (const AngularPair& pair : pairs) {
+  for (const AngularPair& pair : sorted) {
+    if (!keep(pair)) continue;
     if (pair.phi_end - pair.phi_begin > wide) {
       wide_pairs.push_back(pair);
       continue;
     }
-    pairs[narrow] = pair;
-    pairs[narrow++].reach = reach = std::max(reach, pair.phi_end);
+    out[narrow] = pair;
+    out[narrow++].reach = reach = std::max(reach, pair.phi_end);
   }
-  std::copy(wide_pairs.begin(), wide_pairs.end(), pairs.begin() + narrow);
-  return std::uint32_t(wide_pairs.size());
+  std::copy(wide_pairs.begin(), wide_pairs.end(), out.begin() + narrow);
+  return {std::uint32_t(narrow + wide_pairs.size()), std::uint32_t(wide_pairs.size())};
 }
 
 // One block's pairs while they are made, per thread: per hidden face, the block it was last
@@ -78,10 +84,11 @@ struct BlockScratch {
   PhiBeginSort sort;
 };
 
-// Block \p b of \p entries' pairs: one pair per hidden face, from the least phi_begin of its
-// pairs to the largest phi_end, sorted by phi_begin.
-void span_faces(std::span<const AngularPair> entries, int b, BlockScratch& scratch,
-                std::vector<AngularPair>& out) {
+// Block \p b of \p entries' pairs in \p out: one pair per hidden face, from the least
+// phi_begin of its pairs to the largest phi_end, narrow and wide as split_wide orders them;
+// returns the wide ones' count.
+std::uint32_t span_faces(std::span<const AngularPair> entries, int b, BlockScratch& scratch,
+                         std::vector<AngularPair>& out) {
   std::vector<AngularPair>& spans = scratch.spans;
   spans.clear();
   for (const AngularPair& pair : entries) {
@@ -96,7 +103,8 @@ void span_faces(std::span<const AngularPair> entries, int b, BlockScratch& scrat
     span.phi_end = std::max(span.phi_end, pair.phi_end);
   }
   const std::span<const AngularPair> sorted = scratch.sort(spans);
-  out.assign(sorted.begin(), sorted.end());
+  out.resize(sorted.size());
+  return split_wide(sorted, out, scratch.wide, [](const AngularPair&) { return true; }).second;
 }
 
 // Every object's vertices in the light's frame, in parallel.
@@ -539,18 +547,18 @@ std::uint32_t AngularTable::sort_entry(int k, Saturation* saturation, SortScratc
   const std::span<const AngularPair> sorted = scratch.sort(entry);  // step 1.7
   std::vector<std::uint32_t>& covered = scratch.covered;
   covered.clear();
-  std::uint32_t kept = 0;
-  for (const AngularPair& pair : sorted) {
-    if (saturation && saturation->covers(pair)) {
-      covered.push_back(pair.hidden);
-      continue;
-    }
-    if (saturation) saturation->keep(pair);
-    entry[kept++] = pair;
-  }
   // Sec. 10 drops only pairs within a kept one, and never the first: the kept pairs have the
   // extent of all.
-  entries_.wide_count[k] = split_wide(entry.first(kept), scratch.pairs);
+  const auto [kept, wide] = split_wide(sorted, entry, scratch.pairs, [&](const AngularPair& pair) {
+    if (!saturation) return true;
+    if (saturation->covers(pair)) {
+      covered.push_back(pair.hidden);
+      return false;
+    }
+    saturation->keep(pair);
+    return true;
+  });
+  entries_.wide_count[k] = wide;
   // The covered pairs' faces go in the slots after the kept pairs, for compact.
   for (std::size_t i = 0; i < covered.size(); ++i) entry[kept + i].hidden = covered[i];
   return kept;
@@ -595,8 +603,7 @@ void AngularTable::fill_blocks() {
     const std::span<const AngularPair> entries(entries_.pairs.data() + entries_.start[first],
                                                entries_.pairs.data() + entries_.start[last]);
     std::vector<AngularPair>& list = lists[std::size_t(b)];
-    span_faces(entries, b, local, list);
-    blocks_.wide_count[std::size_t(b)] = split_wide(list, local.wide);
+    blocks_.wide_count[std::size_t(b)] = span_faces(entries, b, local, list);
   });
   blocks_.start.assign(std::size_t(count) + 1, 0);
   for (std::size_t b = 0; b < lists.size(); ++b) {
