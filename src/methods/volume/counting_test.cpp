@@ -1,3 +1,4 @@
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -152,6 +153,30 @@ TEST(Counting, ForcedDepthPassRefusesAnEyeWithoutACount) {
                  "the light grazes an edge); use auto or fail");
   }
   EXPECT_EQ(depth_fail_sub_objects(scene), 1);
+}
+
+// Where many sub-objects leave the eye's count undefined, a forced depth-pass names the first
+// of them, whichever thread meets which first (sub-objects are made in parallel chunks).
+TEST(Counting, ForcedDepthPassNamesTheFirstObjectWithoutACount) {
+  std::vector<PolygonSoup> objects;
+  for (int i = 0; i < 200; ++i) {
+    // Boxes 70 and 130 stand on y = 0, the camera's height; the others float.
+    const double y = i == 70 || i == 130 ? 0.0 : 0.5;
+    const Vec3 lo{(i % 20) * 0.5 - 5, y, -(i / 20) * 0.5 - 2};
+    objects.push_back(testing::box(lo, lo + Vec3{0.3, 0.3, 0.3}));
+  }
+  const Scene scene = testing::make_scene(testing::camera({0, 0, 6}, {0, 1, 0}, 64, 48),
+                                          {testing::point_light({0, 9, 0})}, objects);
+  for (int run = 0; run < 5; ++run) {
+    VolumeMethod pass({"volume", {{"count", "pass"}}});
+    pass.prepare(scene, {});
+    try {
+      pass.build(scene, 0, {});
+      ADD_FAILURE() << "depth-pass built without a count at the eye";
+    } catch (const InputError& e) {
+      EXPECT_THAT(e.what(), ::testing::HasSubstr("object 'object70'"));
+    }
+  }
 }
 
 }  // namespace

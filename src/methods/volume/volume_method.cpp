@@ -23,6 +23,8 @@ struct VolumeChunk {
   std::vector<raster::ScreenPolygon> screen;  ///< face: the index into polygons
   int eye_count = 0;
   std::size_t depth_fail = 0;  ///< sub-objects counted depth-fail
+  /// The first sub-object whose eye's count a forced depth-pass needs and cannot have.
+  std::optional<std::uint32_t> no_eye_count;
 };
 
 // Depth-pass misses crossings the near plane clips away, so it needs every shadow polygon
@@ -131,10 +133,8 @@ bool add_sub_object_volume(const Scene& scene, const SubObjects& parts, std::uin
                            needs_depth_fail(mesh, edges, faces, light, eye, view, eye_count));
   if (!depth_fail && !eye_count) {
     // Only a forced depth-pass gets here: auto counts depth-fail where the eye's count is open.
-    throw InputError("option 'volume.count'",
-                     "pass needs the count at the eye, which object '" + object.name +
-                         "' leaves undefined (the camera lies in one of its face planes, or its "
-                         "ray to the light grazes an edge); use auto or fail");
+    if (!v.no_eye_count) v.no_eye_count = k;
+    return false;
   }
   v.eye_count += depth_fail ? 0 : *eye_count;
   v.depth_fail += depth_fail;
@@ -246,6 +246,16 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
                                           projection, counting_, chunks[c]);
     }
   });
+  // Refused by the first such sub-object in order, whichever thread met it first.
+  for (const VolumeChunk& chunk : chunks) {
+    if (!chunk.no_eye_count) continue;
+    const std::string& name =
+        scene.objects[scene.object_of_face(parts_.faces(*chunk.no_eye_count)[0])].name;
+    throw InputError("option 'volume.count'",
+                     "pass needs the count at the eye, which object '" + name +
+                         "' leaves undefined (the camera lies in one of its face planes, or its "
+                         "ray to the light grazes an edge); use auto or fail");
+  }
   eye_count_ = 0;
   depth_fail_sub_objects_ = 0;
   for (const VolumeChunk& chunk : chunks) {
