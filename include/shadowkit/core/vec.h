@@ -59,6 +59,12 @@ struct Bounds3 {
   Vec3 center() const { return (lo + hi) * 0.5; }
   Vec3 extent() const { return hi - lo; }
   double diagonal() const { return empty() ? 0.0 : length(hi - lo); }
+  /// Corner \p c in 0..7: bit 0 picks hi.x over lo.x, bit 1 hi.y, bit 2 hi.z.
+  Vec3 corner(int c) const {
+    return {c & 1 ? hi.x : lo.x, c & 2 ? hi.y : lo.y, c & 4 ? hi.z : lo.z};
+  }
+  /// Distance from \p p to the nearest point of the box (0 inside).
+  double distance(Vec3 p) const { return length(p - max(lo, min(p, hi))); }
 };
 
 /// \brief The plane n·p + d = 0 with a unit normal n.

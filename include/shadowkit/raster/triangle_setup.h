@@ -51,11 +51,6 @@ class ScreenTriangles {
     for (std::uint32_t i = 0; i < chunks_[c].size(); ++i) fn(c << kPlaceBits | i, chunks_[c][i]);
   }
   std::uint32_t chunk_count() const { return std::uint32_t(chunks_.size()); }
-  std::size_t size() const {
-    std::size_t n = 0;
-    for (const auto& c : chunks_) n += c.size();
-    return n;
-  }
 
  private:
   friend ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view,

@@ -20,10 +20,9 @@ struct Point2 {
 
 // Where points lie as seen from the light: a face of the grid, cell coordinates on it, and
 // the distance along the light's way. A directional light has one face across its
-// direction, over the scene's bounds; a point light the six faces of a cube around it (a
-// set of points whose directions share a face projects centrally onto it, so the hull of
-// their projections is the projection of their hull).
-// \p span: what a directional light's face must hold.
+// direction, over the box \p span; a point light the six faces of a cube around it (a set
+// of points whose directions share a face projects centrally onto it, so the hull of their
+// projections is the projection of their hull).
 class LightView {
  public:
   LightView(const Light& light, const Bounds3& span) : light_(light) {
@@ -33,9 +32,10 @@ class LightView {
     v_ = normalize(cross(d, u_));
     double u_lo = INFINITY, u_hi = -INFINITY, v_lo = INFINITY, v_hi = -INFINITY;
     if (span.empty()) return;
-    for (const Vec3& c : box_corners(span)) {
-      u_lo = std::min(u_lo, dot(c, u_)), u_hi = std::max(u_hi, dot(c, u_));
-      v_lo = std::min(v_lo, dot(c, v_)), v_hi = std::max(v_hi, dot(c, v_));
+    for (int c = 0; c < 8; ++c) {
+      const Vec3 corner = span.corner(c);
+      u_lo = std::min(u_lo, dot(corner, u_)), u_hi = std::max(u_hi, dot(corner, u_));
+      v_lo = std::min(v_lo, dot(corner, v_)), v_hi = std::max(v_hi, dot(corner, v_));
     }
     origin_ = {u_lo, v_lo};
     const double extent = std::max(u_hi - u_lo, v_hi - v_lo);
@@ -80,18 +80,10 @@ class LightView {
   double near(const Bounds3& box) const {
     if (light_.type == Light::Type::directional) {
       double out = INFINITY;
-      for (const Vec3& c : box_corners(box)) out = std::min(out, depth(c));
+      for (int c = 0; c < 8; ++c) out = std::min(out, depth(box.corner(c)));
       return out;
     }
-    return length(light_.position - clamp(light_.position, box.lo, box.hi));
-  }
-
-  static std::array<Vec3, 8> box_corners(const Bounds3& b) {
-    std::array<Vec3, 8> c;
-    for (int k = 0; k < 8; ++k) {
-      c[k] = {k & 1 ? b.hi.x : b.lo.x, k & 2 ? b.hi.y : b.lo.y, k & 4 ? b.hi.z : b.lo.z};
-    }
-    return c;
+    return box.distance(light_.position);
   }
 
  private:
@@ -99,10 +91,6 @@ class LightView {
     return light_.type == Light::Type::point ? length(p - light_.position)
                                              : dot(p, light_.direction);
   }
-  static Vec3 clamp(Vec3 p, Vec3 lo, Vec3 hi) {
-    return {std::clamp(p.x, lo.x, hi.x), std::clamp(p.y, lo.y, hi.y), std::clamp(p.z, lo.z, hi.z)};
-  }
-
   const Light& light_;
   Vec3 u_, v_;
   Point2 origin_{};
@@ -181,7 +169,6 @@ class FootprintGrid {
 }  // namespace
 
 std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& light,
-                                       const std::vector<char>& candidates,
                                        const Bounds3& scene_bounds) {
   std::vector<char> shadowed(parts.size(), 0);
   // A directional light's grid spans the footprints only: nothing beyond them is covered.
@@ -195,19 +182,17 @@ std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& lig
   const double tolerance = 1e-9 * (scene_bounds.diagonal() + length(scene_bounds.center()) +
                                    (light.type == Light::Type::point ? length(light.position) : 0));
   std::vector<double> near(parts.size());
-  std::vector<std::uint32_t> order;
-  for (std::uint32_t k = 0; k < parts.size(); ++k) {
-    if (!candidates[k]) continue;
-    near[k] = view.near(parts.bounds[k]);
-    order.push_back(k);
-  }
+  for (std::size_t k = 0; k < parts.size(); ++k) near[k] = view.near(parts.bounds[k]);
+  std::vector<std::uint32_t> order(parts.size());
+  std::iota(order.begin(), order.end(), 0u);
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
     return near[a] < near[b] || (near[a] == near[b] && a < b);
   });
   FootprintGrid grid(view.face_count());
   std::vector<Point2> points, hull;
   for (const std::uint32_t k : order) {
-    const auto corners = LightView::box_corners(parts.bounds[k]);
+    std::array<Vec3, 8> corners;
+    for (int c = 0; c < 8; ++c) corners[std::size_t(c)] = parts.bounds[k].corner(c);
     if (const auto face = view.project(corners, points);
         face && grid.covers(*face, points, near[k] - tolerance)) {
       shadowed[k] = 1;

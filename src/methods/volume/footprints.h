@@ -7,7 +7,7 @@
 
 namespace shadowkit::volume {
 
-/// Which of the sub-objects \p candidates lie wholly in the shadow of nearer ones (Crow
+/// Which sub-objects of \p parts lie wholly in the shadow of nearer ones (Crow
 /// Sec. VI: "whenever an object's bounding box lies wholly within the footprint of an object
 /// of higher priority, the former is in shadow"). Taken nearest the light first, the closed
 /// convex sub-objects (SubObjects::convex) add their footprints, seen from the light, with
@@ -20,7 +20,6 @@ namespace shadowkit::volume {
 /// reach of the footprints that cover it wholly; a box is tested against every cell it
 /// touches. Both sides are rounded toward keeping a sub-object.
 std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& light,
-                                       const std::vector<char>& candidates,
                                        const Bounds3& scene_bounds);
 
 }  // namespace shadowkit::volume

@@ -20,8 +20,7 @@ Scene boxes_under_a_box(const Light& light, std::vector<Vec3> small) {
 
 std::vector<char> shadowed(const Scene& scene) {
   const SubObjects parts = SubObjects::of(scene);
-  return shadowed_sub_objects(parts, scene.lights[0], std::vector<char>(parts.size(), 1),
-                              scene.bounds());
+  return shadowed_sub_objects(parts, scene.lights[0], scene.bounds());
 }
 
 TEST(Footprints, MarkBoxesWhollyBehindANearerConvexBox) {

@@ -59,8 +59,7 @@ Reach Reach::of(const Scene& scene, const Light& light) {
   box.add(scene.camera.position);
   Reach r;
   for (int c = 0; c < 8; ++c) {
-    const Vec3 p{c & 1 ? box.hi.x : box.lo.x, c & 2 ? box.hi.y : box.lo.y,
-                 c & 4 ? box.hi.z : box.lo.z};
+    const Vec3 p = box.corner(c);
     r.limit = std::max(r.limit, light.type == Light::Type::point ? length(p - light.position)
                                                                  : dot(p, light.direction));
   }

@@ -104,10 +104,7 @@ SubObjects SubObjects::of(const Scene& scene) {
     if (large || points.size() > kMaxCorners) {
       points.clear();
       const Bounds3& b = s.bounds[k];
-      for (int c = 0; c < 8; ++c) {
-        points.push_back(
-            {c & 1 ? b.hi.x : b.lo.x, c & 2 ? b.hi.y : b.lo.y, c & 4 ? b.hi.z : b.lo.z});
-      }
+      for (int c = 0; c < 8; ++c) points.push_back(b.corner(c));
     } else {
       s.convex[k] = closed[k] && faces_support(scene, s, k, points);
     }

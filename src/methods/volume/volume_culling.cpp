@@ -10,14 +10,6 @@
 namespace shadowkit::volume {
 namespace {
 
-Vec3 corner(const Bounds3& b, int c) {
-  return {c & 1 ? b.hi.x : b.lo.x, c & 2 ? b.hi.y : b.lo.y, c & 4 ? b.hi.z : b.lo.z};
-}
-
-double box_distance(const Bounds3& b, Vec3 p) {
-  return length(p - max(b.lo, min(p, b.hi)));
-}
-
 double max_abs(Vec3 v) {
   return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
@@ -56,7 +48,7 @@ ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Rea
   // needs them pushed to reach / g times their distance.
   double push = 0;
   if (point) {
-    const double gap = box_distance(box, light.position);
+    const double gap = box.distance(light.position);
     if (gap == 0) {  // the light inside the box: the volume surrounds it
       everywhere_ = true;
       return;
@@ -65,7 +57,7 @@ ShadowFrustum::ShadowFrustum(const Bounds3& tight, const Light& light, const Rea
   }
   std::array<Vec3, 16> hull;
   for (int c = 0; c < 8; ++c) {
-    const Vec3 p = corner(box, c);
+    const Vec3 p = box.corner(c);
     hull[c] = p;
     hull[8 + c] = point
                       ? light.position + (p - light.position) * push

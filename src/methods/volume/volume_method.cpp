@@ -227,8 +227,7 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
     casting[k] = frusta_[k].reaches_view() || !frusta_[k].misses({cam.position, cam.position});
   });
   // Crow's footprints: a sub-object wholly in the shadow of nearer ones adds no shadow.
-  const std::vector<char> shadowed =
-      shadowed_sub_objects(parts_, light_, std::vector<char>(parts_.size(), 1), scene.bounds());
+  const std::vector<char> shadowed = shadowed_sub_objects(parts_, light_, scene.bounds());
   for (std::size_t k = 0; k < parts_.size(); ++k) casting[k] &= !shadowed[k];
   shadowed_sub_objects_ = double(std::count(shadowed.begin(), shadowed.end(), 1));
   const RasterProjection projection =
