@@ -14,6 +14,12 @@ find_package(absl REQUIRED)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(ERFA REQUIRED IMPORTED_TARGET erfa)
 
+# The viewer (shadowkit serve): cpp-httplib for HTTP, websocketpp over standalone Asio for
+# its frame stream; Debian's cpp-httplib installs cpp-httplib.pc, the other two are headers.
+pkg_check_modules(HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)
+find_path(WEBSOCKETPP_INCLUDE_DIR websocketpp/server.hpp REQUIRED)
+find_path(ASIO_INCLUDE_DIR asio.hpp REQUIRED)
+
 # Debian 12's OpenSubdivConfig.cmake names a static library the package does not ship,
 # so the headers and libosdCPU.so are found directly.
 find_path(OPENSUBDIV_INCLUDE_DIR opensubdiv/far/topologyRefiner.h REQUIRED)

@@ -24,6 +24,12 @@ double median(std::vector<double> samples) {
   return 0.5 * (upper + *std::max_element(samples.begin(), samples.begin() + std::ptrdiff_t(mid)));
 }
 
+std::string failure_reason(const std::exception& e) {
+  if (dynamic_cast<const InputError*>(&e)) return e.what();
+  if (dynamic_cast<const std::bad_alloc*>(&e)) return "out of memory";
+  return std::string("internal error: ") + e.what();
+}
+
 namespace {
 
 // Runs fn warmup + timed times and returns the median of the timed runs.
@@ -37,13 +43,6 @@ double timed_median(const Repetitions& reps, Fn&& fn) {
     samples.push_back(now_ms() - start);
   }
   return median(samples);
-}
-
-// A failed run's reason, in the words the command line uses for the same exception.
-std::string failure_reason(const std::exception& e) {
-  if (dynamic_cast<const InputError*>(&e)) return e.what();
-  if (dynamic_cast<const std::bad_alloc*>(&e)) return "out of memory";
-  return std::string("internal error: ") + e.what();
 }
 
 // Runs \p step; with OnFailure::record, what it throws comes back as the failure's reason.
@@ -69,6 +68,31 @@ CameraPass run_camera_pass(const Scene& scene, const Repetitions& reps, const Co
   return pass;
 }
 
+std::vector<MethodRun> run_prepared(ShadowMethod& method, const Scene& scene,
+                                    const VisibleSurfaceBuffer& surfaces, const Repetitions& reps,
+                                    const Context& ctx, OnFailure on_failure) {
+  std::vector<MethodRun> runs;
+  for (std::size_t light = 0; light < scene.lights.size(); ++light) {
+    MethodRun run;
+    run.method = method.name();
+    run.light = light;
+    run.failure = attempt(on_failure, [&] {
+      run.build_ms = timed_median(reps, [&] { method.build(scene, light, ctx); });
+      run.mask = ShadowMask(surfaces.width, surfaces.height, kMaskBackground);
+      run.shade_ms = timed_median(reps, [&] {
+        std::fill(run.mask.pixels.begin(), run.mask.pixels.end(), kMaskBackground);
+        method.shade(scene, surfaces, run.mask, ctx);
+      });
+      run.memory_bytes = method.memory_bytes();
+      run.counters = method.counters();
+    });
+    // A failed light keeps no half-made mask.
+    if (run.failed()) run.mask = ShadowMask();
+    runs.push_back(std::move(run));
+  }
+  return runs;
+}
+
 std::vector<MethodRun> run_method(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
                                   const std::string& method_name, const MethodOptions& options,
                                   const Repetitions& reps, const Context& ctx,
@@ -77,30 +101,18 @@ std::vector<MethodRun> run_method(const Scene& scene, const VisibleSurfaceBuffer
   const double start = now_ms();
   const std::string prepare_failure = attempt(on_failure, [&] { method->prepare(scene, ctx); });
   const double prepare_ms = now_ms() - start;
-
   std::vector<MethodRun> runs;
-  for (std::size_t light = 0; light < scene.lights.size(); ++light) {
-    MethodRun run;
-    run.method = method_name;
-    run.light = light;
-    run.prepare_ms = prepare_ms;
-    run.failure = prepare_failure;
-    if (!run.failed()) {
-      run.failure = attempt(on_failure, [&] {
-        run.build_ms = timed_median(reps, [&] { method->build(scene, light, ctx); });
-        run.mask = ShadowMask(surfaces.width, surfaces.height, kMaskBackground);
-        run.shade_ms = timed_median(reps, [&] {
-          std::fill(run.mask.pixels.begin(), run.mask.pixels.end(), kMaskBackground);
-          method->shade(scene, surfaces, run.mask, ctx);
-        });
-        run.memory_bytes = method->memory_bytes();
-        run.counters = method->counters();
-      });
+  if (prepare_failure.empty()) {
+    runs = run_prepared(*method, scene, surfaces, reps, ctx, on_failure);
+  } else {
+    runs.resize(scene.lights.size());
+    for (std::size_t light = 0; light < runs.size(); ++light) {
+      runs[light].method = method_name;
+      runs[light].light = light;
+      runs[light].failure = prepare_failure;
     }
-    // A failed light keeps no half-made mask.
-    if (run.failed()) run.mask = ShadowMask();
-    runs.push_back(std::move(run));
   }
+  for (MethodRun& run : runs) run.prepare_ms = prepare_ms;
   return runs;
 }
 

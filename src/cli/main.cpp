@@ -144,6 +144,17 @@ int main(int argc, char** argv) {
   sun_study_merge_cmd->add_option("--out", sun_study_merge.out, "folder of the merged files")
       ->required();
 
+  ServeOptions serve;
+  auto* serve_cmd = app.add_subcommand(
+      "serve", "the viewer: move lights and camera in a browser and watch each method follow");
+  serve_cmd->add_option("SCENE", serve.scene, "scene file, mesh file or built-in scene")
+      ->required();
+  serve_cmd->add_option("--host", serve.host, "IP address to listen on (default 127.0.0.1)");
+  serve_cmd->add_option("--port", serve.port, "HTTP port (default 8080; 0: any free port)")
+      ->check(CLI::Range(0, 65535));
+  serve_cmd->add_option("--threads", shared.threads, "worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -187,6 +198,7 @@ int main(int argc, char** argv) {
       return run_sun_study(sun_study, ctx);
     }
     if (*sun_study_merge_cmd) return run_sun_study_merge(sun_study_merge, ctx);
+    if (*serve_cmd) return run_serve(serve, ctx);
     info.settings = settings;
     return run_info(info, ctx);
   } catch (const InputError& e) {

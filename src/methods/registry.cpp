@@ -14,6 +14,33 @@ std::vector<std::string> method_names() {
   return {"raytrace", "shadowmap", "volume", "svbsp", "angular", "voxel"};
 }
 
+std::vector<SettingInfo> method_settings(std::string_view method) {
+  const std::vector<std::string> flag = {"0", "1"};
+  if (method == "shadowmap") {
+    return {{"resolution", "2048", {}, "16..16384"},
+            {"bias", "", {}, ">= 0, world units (automatic: 1e-3 x scene diagonal)"},
+            {"slope_bias", "1", {}, ">= 0"},
+            {"pcf", "1", {}, "odd kernel width"}};
+  }
+  if (method == "volume") return {{"count", "auto", {"auto", "pass", "fail"}, ""}};
+  if (method == "angular") {
+    return {{"resolution", "0", {}, "0 (automatic) or entries up to 1e6"},
+            {"saturated", "1", flag, ""}};
+  }
+  if (method == "svbsp") {
+    return {{"shadowed_only", "0", flag, ""}, {"merge_siblings", "1", flag, ""}};
+  }
+  if (method == "voxel") {
+    return {{"resolution", "256", {}, "a power of two, 16..2048"},
+            {"adjacency", "26", {"6", "18", "26"}, ""},
+            {"test", "topology", {"topology", "offset"}, ""},
+            {"bound", "view", {"view", "scene"}, ""},
+            {"max_subpatches", "33554432", {}, "1..2^28"},
+            {"framebuffer", "1", flag, ""}};
+  }
+  return {};
+}
+
 std::unique_ptr<ShadowMethod> make_method(std::string_view name, const MethodOptions& options) {
   if (name == "raytrace") return raytrace::make_method(options);
   if (name == "shadowmap") return shadowmap::make_method(options);

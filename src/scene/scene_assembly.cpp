@@ -101,6 +101,31 @@ WorldFrame WorldFrame::around(const Bounds3& geometry) {
   return {geometry.center(), std::exp2(std::round(std::log2(size)))};
 }
 
+void place_view(Scene& scene, const SceneView& view, const std::string& where) {
+  Camera camera = view.camera;
+  camera.position = working_position(scene.frame, camera.position, where, "camera.position");
+  camera.look_at = working_position(scene.frame, camera.look_at, where, "camera.look_at");
+  std::vector<Light> lights = view.lights;
+  for (std::size_t l = 0; l < lights.size(); ++l) {
+    if (lights[l].type == Light::Type::point) {
+      lights[l].position = working_position(scene.frame, lights[l].position, where,
+                                            "lights[" + std::to_string(l) + "].position");
+    }
+  }
+  scene.camera = camera;
+  scene.lights = std::move(lights);
+}
+
+SceneView world_view(const Scene& scene) {
+  SceneView view{scene.camera, scene.lights};
+  view.camera.position = scene.frame.to_world(view.camera.position);
+  view.camera.look_at = scene.frame.to_world(view.camera.look_at);
+  for (Light& light : view.lights) {
+    if (light.type == Light::Type::point) light.position = scene.frame.to_world(light.position);
+  }
+  return view;
+}
+
 Scene assemble_scene(SceneSource source, const Context& ctx) {
   Bounds3 geometry;
   for (const ObjectSource& object : source.objects) {
@@ -112,19 +137,7 @@ Scene assemble_scene(SceneSource source, const Context& ctx) {
   Scene scene;
   scene.name = std::move(source.name);
   scene.frame = WorldFrame::around(geometry);
-  scene.camera = source.camera;
-  scene.camera.position =
-      working_position(scene.frame, source.camera.position, source.where, "camera.position");
-  scene.camera.look_at =
-      working_position(scene.frame, source.camera.look_at, source.where, "camera.look_at");
-  for (std::size_t l = 0; l < source.lights.size(); ++l) {
-    Light light = source.lights[l];
-    if (light.type == Light::Type::point) {
-      light.position = working_position(scene.frame, light.position, source.where,
-                                        "lights[" + std::to_string(l) + "].position");
-    }
-    scene.lights.push_back(light);
-  }
+  place_view(scene, {source.camera, source.lights}, source.where);
   PolygonBudget budget;
   for (std::size_t i = 0; i < source.objects.size(); ++i) {
     ObjectSource& object = source.objects[i];

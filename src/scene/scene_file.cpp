@@ -98,6 +98,19 @@ Light read_light(const JsonCursor& c, const Context& ctx, const std::string& fil
   return light;
 }
 
+// The `camera` keys given over \p view's camera; `lights`, when given, in place of its lights.
+void read_view_keys(const JsonCursor& root, SceneView& view, const Context& ctx,
+                    const std::string& file) {
+  if (root.has("camera")) view.camera = read_camera(root["camera"], view.camera, ctx, file);
+  if (root.has("lights")) {
+    const JsonCursor lights = root["lights"];
+    view.lights.clear();
+    for (std::size_t i = 0; i < lights.array_size(); ++i) {
+      view.lights.push_back(read_light(lights[i], ctx, file));
+    }
+  }
+}
+
 // The sun study's site (docs/scene-format.md, "Site"), checked here so that a bad value names
 // its key; its ranges are those of the study's options (sun::validate).
 sun::Site read_site(const JsonCursor& c, const Context& ctx, const std::string& file) {
@@ -203,14 +216,10 @@ Scene load_scene_file(const fs::path& path, const Context& ctx) {
   }
   scene.name = path.stem().string();
   scene.where = file;
-  if (root.has("camera")) scene.camera = read_camera(root["camera"], scene.camera, ctx, file);
-  if (root.has("lights")) {
-    const JsonCursor lights = root["lights"];
-    scene.lights.clear();
-    for (std::size_t i = 0; i < lights.array_size(); ++i) {
-      scene.lights.push_back(read_light(lights[i], ctx, file));
-    }
-  }
+  SceneView view{scene.camera, std::move(scene.lights)};
+  read_view_keys(root, view, ctx, file);
+  scene.camera = view.camera;
+  scene.lights = std::move(view.lights);
   // Before the objects: a bad site is found without reading a mesh.
   std::optional<sun::Site> site;
   std::string site_name;
@@ -225,6 +234,13 @@ Scene load_scene_file(const fs::path& path, const Context& ctx) {
   assembled.site_name = site_name;
   if (assembled.face_count() == 0) ctx.warning(file + ": the scene has no faces");
   return assembled;
+}
+
+SceneView read_scene_view(const nlohmann::json& json, SceneView view, const std::string& where,
+                          const Context& ctx) {
+  if (!json.is_object()) throw InputError(where, "expected one JSON object");
+  read_view_keys(JsonCursor(json, where, ""), view, ctx, where);
+  return view;
 }
 
 Scene load_mesh_as_scene(const fs::path& path, const Context& ctx) {

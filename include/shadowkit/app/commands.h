@@ -88,6 +88,14 @@ struct SunStudyMergeOptions {
   std::string out;
 };
 
+/// \brief The viewer (`shadowkit serve`): a local web page that renders the scene as its camera,
+/// lights, method and view change.
+struct ServeOptions {
+  std::string scene;
+  std::string host = "127.0.0.1";  ///< an IP address; anything but loopback is warned of
+  int port = 8080;                 ///< 0: a free port, printed
+};
+
 /// Parses "method.key=value" settings into per-method options; InputError if malformed.
 std::map<std::string, MethodOptions> parse_settings(const std::vector<std::string>& settings);
 
@@ -99,5 +107,7 @@ int run_fragments(const FragmentsOptions& options, const Context& ctx);
 int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx);
 int run_sun_study(const SunStudyOptions& options, const Context& ctx);
 int run_sun_study_merge(const SunStudyMergeOptions& options, const Context& ctx);
+/// Serves until SIGINT or SIGTERM, then returns 0.
+int run_serve(const ServeOptions& options, const Context& ctx);
 
 }  // namespace shadowkit

@@ -2,6 +2,7 @@
 /// \brief Runs methods over a scene's lights and times them: scene -> per-light build ->
 /// camera pass -> masks.
 #include <cstddef>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,10 @@ enum class OnFailure {
   record,  ///< the light's run records it (every light's, when prepare threw); the rest run
 };
 
+/// What failed, in the words the command line uses for the same exception: an input error's
+/// message, "out of memory", or "internal error: ...".
+std::string failure_reason(const std::exception& e);
+
 /// \brief How often to run each stage when timing.
 struct Repetitions {
   int warmup = 0;
@@ -50,6 +55,12 @@ struct CameraPass {
   double scan_ms = 0;
 };
 CameraPass run_camera_pass(const Scene& scene, const Repetitions& reps, const Context& ctx);
+
+/// Runs \p method, already prepared for \p scene, over every light of \p scene; the runs'
+/// prepare_ms is 0.
+std::vector<MethodRun> run_prepared(ShadowMethod& method, const Scene& scene,
+                                    const VisibleSurfaceBuffer& surfaces, const Repetitions& reps,
+                                    const Context& ctx, OnFailure on_failure);
 
 /// Runs \p method_name (with its options) over every light of \p scene.
 std::vector<MethodRun> run_method(const Scene& scene, const VisibleSurfaceBuffer& surfaces,

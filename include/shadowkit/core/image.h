@@ -36,8 +36,12 @@ void write_png(const std::filesystem::path& path, const Image<Rgb8>& image);
 Image<std::uint8_t> read_png_gray(const std::filesystem::path& path);
 /// Reads an 8-bit RGB PNG (converting grey); throws InputError if it cannot.
 Image<Rgb8> read_png_rgb(const std::filesystem::path& path);
+/// \brief How hard PNG encoding compresses: `small` files, or `fast` for images sent as
+/// they are made (the viewer's frames), about three times larger.
+enum class PngSpeed { small, fast };
+
 /// The bytes of an 8-bit RGB PNG of \p image, for a caller that writes them whole (under a
-/// temporary name, say, renamed into place when complete).
-std::string encode_png(const Image<Rgb8>& image);
+/// temporary name, say, renamed into place when complete) or sends them.
+std::string encode_png(const Image<Rgb8>& image, PngSpeed speed = PngSpeed::small);
 
 }  // namespace shadowkit

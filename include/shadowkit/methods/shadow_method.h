@@ -39,6 +39,8 @@ class MethodOptions {
   double number(const std::string& key, double fallback) const;
   /// Value of \p key, or \p fallback.
   std::string text(const std::string& key, const std::string& fallback) const;
+  /// Every setting given, by key.
+  const std::map<std::string, std::string>& values() const { return values_; }
   /// Throws InputError naming the first key not in \p known.
   void expect_only(std::string_view method, const std::vector<std::string>& known) const;
 
@@ -55,6 +57,9 @@ class ShadowMethod {
   virtual std::string_view name() const = 0;
   /// Light-independent structures, built once per scene (BVH, scene BSP tree, ...).
   virtual void prepare(const Scene& /*scene*/, const Context& /*ctx*/) {}
+  /// False when prepare() used the camera or the lights, so that a new view (SceneView)
+  /// needs prepare() again.
+  virtual bool prepared_for_every_view() const { return true; }
   /// Per-light structures (shadow map, shadow polygons, SVBSP tree, angular table).
   virtual void build(const Scene& scene, std::size_t light, const Context& ctx) = 0;
   /// Writes kMaskLit or kMaskShadow at every covered pixel of \p surfaces for the light of

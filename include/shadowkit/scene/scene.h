@@ -37,6 +37,7 @@ struct Camera {
   PixelGrid pixel_grid() const;
   /// Unit ray direction through the centre of pixel (column, row), row 0 at the top.
   Vec3 pixel_ray(int column, int row) const;
+  friend bool operator==(const Camera&, const Camera&) = default;
 };
 
 /// \brief A point light or a directional light (a light at infinity).
@@ -54,6 +55,14 @@ struct Light {
   Vec3 direction_to(Vec3 p) const {
     return type == Type::point ? normalize(position - p) : -direction;
   }
+  friend bool operator==(const Light&, const Light&) = default;
+};
+
+/// \brief What a viewer changes between frames: the camera and the lights.
+struct SceneView {
+  Camera camera;
+  std::vector<Light> lights;
+  friend bool operator==(const SceneView&, const SceneView&) = default;
 };
 
 /// \brief A mesh in world space and where its faces sit in the scene's face numbering.

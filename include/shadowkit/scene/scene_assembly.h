@@ -42,4 +42,12 @@ struct SceneSource {
 /// key at fault.
 Scene assemble_scene(SceneSource source, const Context& ctx);
 
+/// Puts \p view (world coordinates) in place of \p scene's camera and lights, in its working
+/// frame; InputError at \p where names the key of a position too far from the scene. The
+/// scene is otherwise untouched: a new view needs no new finalize().
+void place_view(Scene& scene, const SceneView& view, const std::string& where);
+
+/// \p scene's camera and lights in world coordinates: what place_view() takes back.
+SceneView world_view(const Scene& scene);
+
 }  // namespace shadowkit

@@ -2,6 +2,7 @@
 /// \brief Loading scenes: JSON scene files (scene-format.md plus documented extensions) and
 /// built-in procedural scenes by name.
 #include <filesystem>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 
 #include "shadowkit/core/context.h"
@@ -12,6 +13,12 @@ namespace shadowkit {
 
 /// Loads a JSON scene file. Errors name the file and the key or line (InputError).
 Scene load_scene_file(const std::filesystem::path& path, const Context& ctx);
+
+/// The `camera` and `lights` keys of \p json, a scene file's or a request's alike, in world
+/// coordinates: camera keys given replace \p view's, `lights` given replaces its list. Checked
+/// as a scene file's; InputError names \p where and the key, unknown keys go to ctx.warning.
+SceneView read_scene_view(const nlohmann::json& json, SceneView view, const std::string& where,
+                          const Context& ctx);
 
 /// A mesh file (any format read_mesh_file() reads) as a scene of its own: the camera looks
 /// at its bounds from the front, right and above, and one directional light falls from

@@ -9,22 +9,6 @@
 #include "sunlit_steps.h"
 
 namespace shadowkit::sun_study {
-namespace {
-
-// Sun hours per pixel from the counts of sunlit steps (kBackgroundCount: no surface).
-SunHoursImage sun_hours_image(const std::vector<std::uint32_t>& counts, int width, int height,
-                              double step_hours) {
-  SunHoursImage image{width, height, std::vector<double>(counts.size(), 0.0),
-                      std::vector<std::uint8_t>(counts.size(), 0)};
-  for (std::size_t i = 0; i < counts.size(); ++i) {
-    if (counts[i] == kBackgroundCount) continue;
-    image.covered[i] = 1;
-    image.hours[i] = counts[i] * step_hours;
-  }
-  return image;
-}
-
-}  // namespace
 
 std::vector<std::string> made_files() {
   std::vector<std::string> names = report_file_names();

@@ -9,6 +9,7 @@
 #include "shadowkit/core/colour_map.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/core/palette.h"
+#include "sunlit_steps.h"
 
 namespace shadowkit::sun_study {
 namespace {
@@ -52,6 +53,18 @@ void fill(Image<Rgb8>& image, int x0, int y0, int x1, int y1, Rgb8 colour) {
 }
 
 }  // namespace
+
+SunHoursImage sun_hours_image(const std::vector<std::uint32_t>& counts, int width, int height,
+                              double step_hours) {
+  SunHoursImage image{width, height, std::vector<double>(counts.size(), 0.0),
+                      std::vector<std::uint8_t>(counts.size(), 0)};
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    if (counts[i] == kBackgroundCount) continue;
+    image.covered[i] = 1;
+    image.hours[i] = counts[i] * step_hours;
+  }
+  return image;
+}
 
 Image<Rgb8> heat_map_image(const SunHoursImage& map) {
   const std::size_t pixels = std::size_t(map.width) * std::size_t(map.height);

@@ -14,6 +14,11 @@ struct SunHoursImage {
   std::vector<std::uint8_t> covered;  ///< 0: background, no surface seen
 };
 
+/// Sun hours per pixel from the counts of sunlit steps (kBackgroundCount: no surface), each
+/// step \p step_hours long.
+SunHoursImage sun_hours_image(const std::vector<std::uint32_t>& counts, int width, int height,
+                              double step_hours);
+
 /// The legend's text colour, light on the dark background.
 inline constexpr Rgb8 kLegendText{205, 208, 214};
 

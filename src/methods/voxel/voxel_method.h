@@ -41,6 +41,8 @@ class VoxelMethod final : public ShadowMethod {
   explicit VoxelMethod(const MethodOptions& options, std::size_t max_subpatches = kMaxSubpatches);
   std::string_view name() const override { return "voxel"; }
   void prepare(const Scene& scene, const Context& ctx) override;
+  /// `bound=view` fits the frame buffer to the camera and the lights (frame_bound.h).
+  bool prepared_for_every_view() const override { return whole_scene_; }
   void build(const Scene& scene, std::size_t light, const Context& ctx) override;
   void shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
              const Context& ctx) override;
