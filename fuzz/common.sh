@@ -9,7 +9,7 @@ fuzz_targets() {
   local formats renders
   formats=$(sed -n 's/^set(SHADOWKIT_FUZZ_MESH_FORMATS \(.*\))$/\1/p' "$fuzz_dir/CMakeLists.txt")
   renders=$(sed -n 's/^set(SHADOWKIT_FUZZ_RENDER_KINDS \(.*\))$/\1/p' "$fuzz_dir/CMakeLists.txt")
-  echo scene $formats shading_groups $(printf 'render_%s ' $renders)
+  echo scene $formats shading_groups frame_request $(printf 'render_%s ' $renders)
 }
 
 # The input kind of target NAME: "scene", "shading_groups" or a mesh extension
@@ -21,6 +21,7 @@ fuzz_extension() {
   case $1 in
     scene) echo json ;;
     shading_groups) echo csv ;;
+    frame_request) echo request.json ;;
     *) echo "$1" ;;
   esac
 }
@@ -67,6 +68,8 @@ fuzz_options() {
   echo -timeout=20 -rss_limit_mb=2048 -print_final_stats=1
   if [[ $kind == scene ]]; then
     echo -max_len=4096
+  elif [[ $kind == frame_request ]]; then
+    echo -max_len=2048  # the requests the page sends are a few hundred bytes
   elif [[ $kind == shading_groups ]]; then
     echo -max_len=1024  # each group is a column of the schedule's year of rows
   elif [[ $kind != "$name" ]]; then

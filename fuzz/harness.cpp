@@ -22,11 +22,13 @@
 #include <vector>
 
 #include "shadowkit/app/commands.h"
+#include "shadowkit/app/viewer.h"
 #include "shadowkit/core/context.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/registry.h"
 #include "shadowkit/methods/shadow_method.h"
 #include "shadowkit/raster/visible_surface.h"
+#include "shadowkit/scene/scene_assembly.h"
 #include "shadowkit/scene/scene_file.h"
 
 // The sanitizers' hook for their fatal reports (libFuzzer sets it to save the input); weak, as
@@ -120,6 +122,8 @@ struct State {
   std::vector<Run> runs;
   // The shading-groups target's study, whose groups file is the input; none for other kinds.
   std::optional<SunStudyOptions> study;
+  // The frame-request target's viewer, whose requests are the input; none for other kinds.
+  std::unique_ptr<viewer::FrameRenderer> viewer;
   std::unique_ptr<tbb::global_control> threads;
 };
 
@@ -300,6 +304,34 @@ bool render(Scene& scene) {
   return true;
 }
 
+// The viewer's scene: a small cube field at a small size, so that a request that keeps the
+// scene's camera renders quickly.
+Scene viewer_scene() {
+  Scene scene = load_scene("cubes:27", state().ctx);
+  SceneView view = world_view(scene);
+  view.camera.width = 48;
+  view.camera.height = 27;
+  place_view(scene, view, "fuzz");
+  return scene;
+}
+
+// A request is read as the server reads it; one small enough to render in a moment (the
+// fuzzer's hang limit is not a property of the parser) is rendered too.
+int run_frame_request(viewer::FrameRenderer& renderer, const std::uint8_t* data, std::size_t size) {
+  try {
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    const viewer::FrameRequest request = viewer::parse_frame_request(text, renderer.scene_view());
+    const Camera& camera = request.view.camera;
+    const bool quick = std::int64_t{camera.width} * camera.height <= 64 * 64 &&
+                       (request.method == "raytrace" || request.method == "volume" ||
+                        request.method == "svbsp" || request.method == "angular");
+    if (quick) renderer.render(request);
+  } catch (const InputError& e) {
+    if (state().verbose) std::fprintf(stderr, "input error: %s\n", e.what());
+  }
+  return 0;
+}
+
 }  // namespace
 
 void initialize(std::string_view kind, bool render) {
@@ -325,6 +357,10 @@ void initialize(std::string_view kind, bool render) {
 
   s.dir = make_temporary_directory();
   std::atexit(remove_directory);
+  if (kind == "frame_request") {
+    s.viewer = std::make_unique<viewer::FrameRenderer>(viewer_scene());
+    return;
+  }
   if (kind == "shading_groups") {
     s.input = s.dir / "groups.csv";
     s.study = study_options(s.input, s.dir / "study");
@@ -358,6 +394,7 @@ void initialize(std::string_view kind, bool render) {
 
 int run_one(const std::uint8_t* data, std::size_t size) {
   State& s = state();
+  if (s.viewer) return run_frame_request(*s.viewer, data, size);
   write_file(s.input, data, size);
   if (s.study) {
     try {

@@ -1,9 +1,8 @@
-#include "frame_renderer.h"
-
 #include <algorithm>
 
 #include "shadowkit/app/pipeline.h"
 #include "shadowkit/app/shading.h"
+#include "shadowkit/app/viewer.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/mask_compare.h"
 #include "shadowkit/methods/registry.h"

@@ -1,12 +1,11 @@
 // The viewer's frames against the commands' own pipeline, byte for byte, as the view, the
 // method and its settings change between frames.
-#include "frame_renderer.h"
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "shadowkit/app/pipeline.h"
 #include "shadowkit/app/shading.h"
+#include "shadowkit/app/viewer.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/mask_compare.h"
 #include "shadowkit/scene/scene_assembly.h"

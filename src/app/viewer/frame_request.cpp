@@ -1,8 +1,7 @@
-#include "frame_request.h"
-
 #include <algorithm>
 #include <cmath>
 
+#include "shadowkit/app/viewer.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/registry.h"
 #include "shadowkit/scene/scene_file.h"

@@ -1,9 +1,8 @@
 // Frame requests: what they take, and the one-line error naming the key for what they refuse.
-#include "frame_request.h"
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "shadowkit/app/viewer.h"
 #include "shadowkit/core/error.h"
 
 namespace shadowkit::viewer {

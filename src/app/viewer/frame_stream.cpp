@@ -59,6 +59,11 @@ FrameStream::FrameStream(const std::string& host, std::size_t max_message, Handl
   s.server.clear_error_channels(websocketpp::log::elevel::all);
   s.server.init_asio();
   s.server.set_max_message_size(max_message);
+  // A frame goes out as soon as it is written, not after the client's delayed ACK.
+  s.server.set_socket_init_handler([](websocketpp::connection_hdl, asio::ip::tcp::socket& socket) {
+    std::error_code ignored;
+    socket.set_option(asio::ip::tcp::no_delay(true), ignored);
+  });
   s.server.set_open_handler([&s](websocketpp::connection_hdl hdl) { s.opened(hdl); });
   s.server.set_close_handler([&s](websocketpp::connection_hdl hdl) { s.closed(hdl); });
   s.server.set_fail_handler([&s](websocketpp::connection_hdl hdl) { s.closed(hdl); });

@@ -3,7 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "frame_renderer.h"
+#include "shadowkit/app/viewer.h"
 
 namespace shadowkit::viewer {
 

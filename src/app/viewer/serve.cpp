@@ -5,14 +5,16 @@
 #include <csignal>
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <thread>
 
-#include "frame_renderer.h"
 #include "frame_stream.h"
 #include "page_assets.h"
 #include "scene_info.h"
 #include "shadowkit/app/commands.h"
 #include "shadowkit/app/pipeline.h"
+#include "shadowkit/app/viewer.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/scene/scene_file.h"
 #include "stream_sessions.h"
@@ -146,18 +148,25 @@ int run_serve(const ServeOptions& options, const Context& ctx) {
   StopSignals signals;
   FrameRenderer renderer(load_scene(options.scene, ctx));
   std::unique_ptr<viewer::StreamSessions> sessions;
-  viewer::FrameStream stream(options.host, viewer::kMaxRequestBytes,
-                             {[&](viewer::FrameStream::Connection c, std::string text) {
-                                sessions->request(c, std::move(text));
-                              },
-                              [&](viewer::FrameStream::Connection c) { sessions->closed(c); }});
+  const viewer::FrameStream::Handlers handlers = {
+      [&](viewer::FrameStream::Connection c, std::string text) {
+        sessions->request(c, std::move(text));
+      },
+      [&](viewer::FrameStream::Connection c) { sessions->closed(c); }};
+  std::optional<viewer::FrameStream> stream;
+  try {
+    stream.emplace(options.host, viewer::kMaxRequestBytes, handlers);
+  } catch (const std::runtime_error& e) {
+    throw InputError("--host " + options.host, e.what());
+  }
   sessions = std::make_unique<viewer::StreamSessions>(
       renderer, [&](viewer::FrameStream::Connection c, std::string bytes) {
-        stream.send(c, std::move(bytes));
+        stream->send(c, std::move(bytes));
       });
 
   httplib::Server http;
   http.set_payload_max_length(viewer::kMaxRequestBytes);
+  http.set_tcp_nodelay(true);  // a frame's answer goes out whole, not after a delayed ACK
   http.set_keep_alive_timeout(2);
   http.set_read_timeout(5, 0);
   const int port = options.port == 0
@@ -170,7 +179,7 @@ int run_serve(const ServeOptions& options, const Context& ctx) {
   const std::string host =
       options.host.find(':') == std::string::npos ? options.host : "[" + options.host + "]";
   const nlohmann::json info =
-      viewer::scene_info(renderer, "ws://" + host + ":" + std::to_string(stream.port()) + "/");
+      viewer::scene_info(renderer, "ws://" + host + ":" + std::to_string(stream->port()) + "/");
   add_routes(http, renderer, info);
   if (!is_loopback(options.host)) {
     ctx.warning("--host " + options.host +
@@ -179,10 +188,10 @@ int run_serve(const ServeOptions& options, const Context& ctx) {
   }
   signals.on_signal([&http] { http.stop(); });
   std::printf("shadowkit serve: http://%s:%d/ (frame stream ws://%s:%d/; Ctrl-C stops)\n",
-              host.c_str(), port, host.c_str(), stream.port());
+              host.c_str(), port, host.c_str(), stream->port());
   std::fflush(stdout);
   http.listen_after_bind();
-  stream.stop();
+  stream->stop();
   sessions.reset();
   return 0;
 }

@@ -11,7 +11,7 @@
 #include <string>
 #include <thread>
 
-#include "frame_renderer.h"
+#include "shadowkit/app/viewer.h"
 
 namespace shadowkit::viewer {
 
