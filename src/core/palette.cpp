@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 
 namespace shadowkit {
 namespace {
 
+// Rounds half up, as std::lround does for these non-negative values, without its library
+// call: a shaded image calls this three times a pixel.
 std::uint8_t to_byte(double v) {
-  return std::uint8_t(std::lround(255.0 * std::clamp(v, 0.0, 1.0)));
+  return std::uint8_t(255.0 * std::clamp(v, 0.0, 1.0) + 0.5);
 }
 
 }  // namespace

@@ -76,11 +76,11 @@ class FrameRenderer {
   const SceneView& scene_view() const { return scene_view_; }
   const Scene& scene() const { return scene_; }
 
-  /// Renders \p request; nullopt when \p superseded() turned true before the frame was
-  /// done (checked between stages: a newer request makes this frame worthless). InputError
-  /// when the method refuses the scene or the view (its message says why).
+  /// Renders \p request; nullopt when \p abandoned() turned true before the frame was done
+  /// (checked between stages: nobody is left to show it). InputError when the method refuses
+  /// the scene or the view (its message says why).
   std::optional<Frame> render(
-      const FrameRequest& request, const std::function<bool()>& superseded = [] { return false; });
+      const FrameRequest& request, const std::function<bool()>& abandoned = [] { return false; });
 
   /// The sun study's heat map (sun_hours_heat_map) from \p camera (world coordinates) over
   /// \p span, as PNG.

@@ -92,9 +92,9 @@ ShadowMethod& FrameRenderer::prepared(const std::string& method, const MethodOpt
 }
 
 std::optional<Frame> FrameRenderer::render(const FrameRequest& request,
-                                           const std::function<bool()>& superseded) {
+                                           const std::function<bool()>& abandoned) {
   std::lock_guard lock(mutex_);
-  if (superseded()) return std::nullopt;
+  if (abandoned()) return std::nullopt;
   StageClock clock;
   Frame frame;
   nlohmann::json& info = frame.info;
@@ -118,7 +118,7 @@ std::optional<Frame> FrameRenderer::render(const FrameRequest& request,
       run_prepared(method, scene_, surfaces, {}, ctx_, OnFailure::stop);
   for (const MethodRun& run : runs) info["lights"].push_back(light_info(run));
   info["method_ms"] = clock.lap();
-  if (superseded()) return std::nullopt;
+  if (abandoned()) return std::nullopt;
 
   // raytrace's own masks are the reference when the method is raytrace as it always is.
   std::vector<MethodRun> raytrace_runs;

@@ -152,15 +152,15 @@ TEST(FrameRenderer, AMethodPreparedForOneViewIsPreparedAgain) {
   EXPECT_EQ(renderer.render(request)->png, render_png(request.view, "voxel", settings));
 }
 
-TEST(FrameRenderer, SupersededFrameIsDropped) {
+TEST(FrameRenderer, AbandonedFrameIsDropped) {
   FrameRenderer renderer(small_scene());
   int asked = 0;
-  const auto newer_after = [&](int n) { return [&asked, n] { return ++asked > n; }; };
-  EXPECT_FALSE(renderer.render(request_for(renderer.scene_view(), "volume"), newer_after(0)));
+  const auto gone_after = [&](int n) { return [&asked, n] { return ++asked > n; }; };
+  EXPECT_FALSE(renderer.render(request_for(renderer.scene_view(), "volume"), gone_after(0)));
   asked = 0;
-  EXPECT_FALSE(renderer.render(request_for(renderer.scene_view(), "volume"), newer_after(1)));
+  EXPECT_FALSE(renderer.render(request_for(renderer.scene_view(), "volume"), gone_after(1)));
   asked = 0;
-  EXPECT_TRUE(renderer.render(request_for(renderer.scene_view(), "volume"), newer_after(2)));
+  EXPECT_TRUE(renderer.render(request_for(renderer.scene_view(), "volume"), gone_after(2)));
 }
 
 TEST(FrameRenderer, AMethodThatRefusesLeavesTheRendererWorking) {

@@ -29,21 +29,21 @@ StreamSessions::~StreamSessions() {
 void StreamSessions::request(Connection connection, std::string text) {
   {
     std::lock_guard lock(mutex_);
-    Session& session = sessions_[connection];
-    session.waiting = std::move(text);
-    ++session.newest;
+    std::string& waiting = waiting_[connection];
+    replaced_ += !waiting.empty();
+    waiting = std::move(text);
   }
   wake_.notify_all();
 }
 
 void StreamSessions::closed(Connection connection) {
   std::lock_guard lock(mutex_);
-  sessions_.erase(connection);
+  waiting_.erase(connection);
 }
 
-std::uint64_t StreamSessions::superseded_frames() const {
+std::uint64_t StreamSessions::replaced_requests() const {
   std::lock_guard lock(mutex_);
-  return superseded_;
+  return replaced_;
 }
 
 void StreamSessions::work() {
@@ -51,43 +51,36 @@ void StreamSessions::work() {
   for (;;) {
     // Round robin: the first connection after the last one served that has a request.
     auto next = [&] {
-      auto it = sessions_.upper_bound(last_served_);
-      for (std::size_t n = 0; n < sessions_.size(); ++n, ++it) {
-        if (it == sessions_.end()) it = sessions_.begin();
-        if (!it->second.waiting.empty()) return it;
+      auto it = waiting_.upper_bound(last_served_);
+      for (std::size_t n = 0; n < waiting_.size(); ++n, ++it) {
+        if (it == waiting_.end()) it = waiting_.begin();
+        if (!it->second.empty()) return it;
       }
-      return sessions_.end();
+      return waiting_.end();
     };
-    wake_.wait(lock, [&] { return stopping_ || next() != sessions_.end(); });
+    wake_.wait(lock, [&] { return stopping_ || next() != waiting_.end(); });
     if (stopping_) return;
     const auto it = next();
     last_served_ = it->first;
-    const std::string text = std::move(it->second.waiting);
-    it->second.waiting.clear();
-    const std::uint64_t number = it->second.newest;
+    const std::string text = std::move(it->second);
+    it->second.clear();
     lock.unlock();
-    answer(last_served_, text, number);
+    answer(last_served_, text);
     lock.lock();
   }
 }
 
-void StreamSessions::answer(Connection connection, const std::string& text, std::uint64_t number) {
-  const auto superseded = [&] {
+void StreamSessions::answer(Connection connection, const std::string& text) {
+  const auto closed = [&] {
     std::lock_guard lock(mutex_);
-    const auto it = sessions_.find(connection);
-    return it == sessions_.end() || it->second.newest != number;
+    return waiting_.find(connection) == waiting_.end();
   };
   nlohmann::json id;
   try {
     const FrameRequest request = parse_frame_request(text, renderer_.scene_view());
     id = request.id;
-    std::optional<Frame> frame = renderer_.render(request, superseded);
-    if (!frame) {
-      std::lock_guard lock(mutex_);
-      ++superseded_;
-      return;
-    }
-    send_(connection, encode_answer(frame->info.dump(), frame->png));
+    std::optional<Frame> frame = renderer_.render(request, closed);
+    if (frame) send_(connection, encode_answer(frame->info.dump(), frame->png));
   } catch (const std::exception& e) {
     // The server's answer to any failure is a message to its client; it goes on serving.
     const nlohmann::json error = {{"id", id}, {"error", failure_reason(e)}};

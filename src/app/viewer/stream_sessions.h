@@ -1,8 +1,10 @@
 #pragma once
 // The frame stream's scheduling: each connection's newest request is the only one that
-// counts. A request that arrives while an older one of its connection waits replaces it, and
-// one that arrives while the older is being rendered makes that frame worthless: it is
-// dropped at the next stage instead of being sent.
+// counts. A request that arrives while an older one of its connection waits replaces it, so no
+// stale frame is ever rendered. A frame already being rendered is finished and sent, since it
+// is newer than what its client shows: abandoning it for each newer request would leave a
+// client that sends faster than frames are made (a dragged light) without any frame until it
+// stops (docs/viewer.md measures it). Only a closed connection abandons its frame.
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -29,25 +31,21 @@ class StreamSessions {
   void request(Connection connection, std::string text);
   /// Forgets \p connection and what it asked for.
   void closed(Connection connection);
-  /// Frames rendered and then dropped because a newer request came: a figure for the docs and
-  /// the tests.
-  std::uint64_t superseded_frames() const;
+  /// Requests replaced by a newer one of their connection before they were rendered.
+  std::uint64_t replaced_requests() const;
 
  private:
-  struct Session {
-    std::string waiting;       ///< the newest request not yet taken; empty: none
-    std::uint64_t newest = 0;  ///< counts the connection's requests
-  };
   void work();
-  void answer(Connection connection, const std::string& text, std::uint64_t number);
+  void answer(Connection connection, const std::string& text);
 
   FrameRenderer& renderer_;
   std::function<void(Connection, std::string)> send_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
-  std::map<Connection, Session> sessions_;
+  /// Each open connection's newest request not yet taken; empty: none.
+  std::map<Connection, std::string> waiting_;
   Connection last_served_ = 0;
-  std::uint64_t superseded_ = 0;
+  std::uint64_t replaced_ = 0;
   bool stopping_ = false;
   std::thread worker_;
 };

@@ -85,6 +85,7 @@ TEST_F(StreamSessionsTest, TheNewestRequestWinsAndFramesComeInOrder) {
     last = a.info["id"];
   }
   EXPECT_LT(got.size(), std::size_t(kRequests)) << "stale requests were rendered";
+  EXPECT_EQ(sessions.replaced_requests() + got.size(), std::size_t(kRequests));
 }
 
 TEST_F(StreamSessionsTest, ABadRequestIsAnsweredWithItsReason) {

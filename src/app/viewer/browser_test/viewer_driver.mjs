@@ -50,11 +50,12 @@ export async function openViewer(browser, url, viewport) {
 export async function settled(page) {
   try {
     await page.waitForFunction(() => window.shadowkitViewer.panes.every((p) =>
-      p.pendingSince === null && p.socket.readyState === WebSocket.OPEN &&
+      p.pendingSince === null && p.inFlight === null && p.socket.readyState === WebSocket.OPEN &&
       p.drawnId === p.nextId - 1), { timeout: 120000, polling: 50 });
   } catch (error) {
     const panes = await page.evaluate(() => window.shadowkitViewer.panes.map((p) =>
-      ({ pending: p.pendingSince, socket: p.socket.readyState, drawn: p.drawnId, next: p.nextId,
+      ({ pending: p.pendingSince, inFlight: p.inFlight, socket: p.socket.readyState,
+        drawn: p.drawnId, next: p.nextId,
         caption: p.caption.textContent })));
     throw new Error(`the page did not settle: ${JSON.stringify(panes)}`);
   }

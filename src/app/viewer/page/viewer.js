@@ -1,7 +1,7 @@
 'use strict';
 // The viewer's page. It holds the camera, the lights and the choices; the server renders.
-// Each pane keeps one WebSocket to the frame stream and sends the newest state at most once
-// an animation frame; the server renders only the newest request of each stream.
+// Each pane keeps one WebSocket to the frame stream and one request in flight on it: a change
+// made meanwhile is sent, as the newest state, when that request's frame arrives.
 // Camera and lights are in the scene's world coordinates, with scene-format keys
 // (docs/scene-format.md), so a frame's request is also a scene file's camera and lights.
 
@@ -61,7 +61,7 @@ const state = {
 };
 
 // What the page's tests and latency measurement read.
-const stats = { latencies: [], drawn: 0, superseded: 0 };
+const stats = { latencies: [], drawn: 0 };
 window.shadowkitViewer = { state, stats, panes: [], project };
 
 function enabledLights() {
@@ -99,6 +99,7 @@ class Pane {
     this.drawnId = 0;
     this.sent = new Map();  // id -> time of the change it shows
     this.pendingSince = null;  // time of the oldest change not yet sent
+    this.inFlight = null;  // the id of the request sent and not yet answered
     this.recent = [];  // paint times of the last second's frames
     this.element = document.createElement('div');
     this.element.className = 'pane';
@@ -118,8 +119,9 @@ class Pane {
     this.socket.binaryType = 'arraybuffer';
     this.socket.onopen = () => {
       setStatus('connected');
+      this.inFlight = null;  // what a closed socket had in flight will not come
       this.pendingSince ??= performance.now();
-      requestAnimationFrame(() => this.send());
+      this.send();
     };
     this.socket.onmessage = (event) => this.received(event.data);
     this.socket.onclose = () => {
@@ -128,25 +130,33 @@ class Pane {
     };
   }
 
-  // Something the frame shows changed at time t: send the state at the next animation frame.
+  // Something the frame shows changed at time t: send the state now, or when the frame in
+  // flight arrives. (Chromium already delivers pointer moves once an animation frame.)
   changed(t) {
-    if (this.pendingSince === null) {
-      this.pendingSince = t;
-      requestAnimationFrame(() => this.send());
-    }
+    if (this.pendingSince !== null) return;
+    this.pendingSince = t;
+    this.send();
   }
 
   send() {
-    if (this.socket.readyState !== WebSocket.OPEN) return;  // onopen sends it
+    if (this.socket.readyState !== WebSocket.OPEN || this.inFlight !== null) return;
     const id = this.nextId++;
     this.sent.set(id, this.pendingSince);
     this.pendingSince = null;
+    this.inFlight = id;
     this.socket.send(JSON.stringify(frameRequest(this.index, id)));
+  }
+
+  // The request in flight was answered: the newest change, if any, goes now.
+  answered() {
+    this.inFlight = null;
+    if (this.pendingSince !== null) this.send();
   }
 
   async received(data) {
     const length = new DataView(data).getUint32(0, true);
     const info = JSON.parse(new TextDecoder().decode(new Uint8Array(data, 4, length)));
+    this.answered();
     if (info.error) {
       this.caption.innerHTML = '';
       this.caption.append(Object.assign(document.createElement('span'),
@@ -157,9 +167,6 @@ class Pane {
     const bitmap = await createImageBitmap(png,
       { colorSpaceConversion: 'none', premultiplyAlpha: 'none' });
     if (info.id < this.drawnId) return;  // a newer frame is already on screen
-    for (const id of this.sent.keys()) {
-      if (id < info.id) { this.sent.delete(id); stats.superseded++; }
-    }
     this.draw(bitmap, info);
   }
 
