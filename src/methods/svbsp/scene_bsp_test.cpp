@@ -14,8 +14,8 @@ namespace {
 // Faces in the order the tree visits them from \p light.
 std::vector<std::uint32_t> visit_order(const SceneBsp& bsp, const Light& light) {
   std::vector<std::uint32_t> faces;
-  bsp.front_to_back(light, [&](std::span<const ConvexPolygon> pieces) {
-    for (const ConvexPolygon& p : pieces) faces.push_back(p.face);
+  bsp.front_to_back(light, [&](NodePieces node) {
+    for (const ConvexPolygon& p : node.pieces) faces.push_back(p.face);
   });
   return faces;
 }
@@ -45,8 +45,8 @@ TEST(SceneBsp, PiecesOfEveryFaceSumToItsArea) {
     const SceneBsp bsp = SceneBsp::build(scene);
     std::map<std::uint32_t, double> sum;
     std::size_t pieces = 0;
-    bsp.front_to_back(Light::point({0.3, 7, 0.2}), [&](std::span<const ConvexPolygon> ps) {
-      for (const ConvexPolygon& p : ps) sum[p.face] += area(p), ++pieces;
+    bsp.front_to_back(Light::point({0.3, 7, 0.2}), [&](NodePieces node) {
+      for (const ConvexPolygon& p : node.pieces) sum[p.face] += area(p), ++pieces;
     });
     EXPECT_EQ(pieces, bsp.piece_count()) << name;
     ASSERT_EQ(sum.size(), scene.face_count()) << name;

@@ -119,8 +119,10 @@ struct Totals {
   std::map<std::uint32_t, FaceAreas> areas;
 };
 Totals totals(const Scene& scene, std::size_t light, bool merge) {
+  GeneratorSettings settings;
+  settings.merge_siblings = merge;
   const LightFragments r =
-      generate_shadows(SceneBsp::build(scene), scene, scene.lights[light], merge);
+      generate_shadows(SceneBsp::build(scene), scene, scene.lights[light], settings);
   return {r.fragments.size(), face_areas(r.fragments)};
 }
 
