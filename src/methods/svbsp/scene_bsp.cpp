@@ -159,16 +159,16 @@ class SceneBsp::Builder {
   Builder(const Scene& scene, double eps, std::vector<ConvexPolygon> inputs,
           const ConvexSolids* solids)
       : scene_(scene), eps_(eps), pool_(inputs.begin(), inputs.end()) {
+    if (solids) solids_.resize(solids->size());
     for (std::uint32_t id = 0; id < pool_.size(); ++id) {
       const std::int32_t s = solids ? solids->solid_of(pool_[id].face) : -1;
       if (s < 0) {
         items_.push_back(id);
         continue;
       }
-      if (solids_.empty()) solids_.resize(solids->size());
-      solids_[std::size_t(s)].faces.push_back(id);
-      for (const Vec3& v : pool_[id].vertices)
-        solids_[std::size_t(s)].corners.vertices.push_back(v);
+      Solid& solid = solids_[std::size_t(s)];
+      solid.faces.push_back(id);
+      for (const Vec3& v : pool_[id].vertices) solid.corners.vertices.push_back(v);
     }
     for (std::uint32_t s = 0; s < solids_.size(); ++s) items_.push_back(kSolidTag | s);
   }
@@ -183,7 +183,7 @@ class SceneBsp::Builder {
     auto draft = std::make_unique<Draft>();
     if (ids.size() == 1 && is_solid(ids[0])) {  // a leaf: the solid whole
       draft->solid = std::int32_t(ids[0] & ~kSolidTag);
-      draft->here = solids_[std::size_t(draft->solid)].faces;
+      draft->here = faces_of(ids[0]);
       return draft;
     }
     auto splitter = choose_splitter(ids);
@@ -218,17 +218,16 @@ class SceneBsp::Builder {
   const ConvexPolygon& shape(std::uint32_t id) const {
     return is_solid(id) ? solids_[id & ~kSolidTag].corners : pool_[id];
   }
+  const Ids& faces_of(std::uint32_t solid_id) const { return solids_[solid_id & ~kSolidTag].faces; }
 
   // \p ids with every solid replaced by its faces.
   Ids dissolved(const Ids& ids) const {
     Ids out;
     for (const std::uint32_t id : ids) {
-      if (!is_solid(id)) {
+      if (is_solid(id))
+        out.insert(out.end(), faces_of(id).begin(), faces_of(id).end());
+      else
         out.push_back(id);
-        continue;
-      }
-      const Ids& faces = solids_[id & ~kSolidTag].faces;
-      out.insert(out.end(), faces.begin(), faces.end());
     }
     return out;
   }
@@ -289,7 +288,7 @@ class SceneBsp::Builder {
         consider(scene_.face_plane(polygons[c]->face), sampled[c]);
         continue;
       }
-      for (const std::uint32_t id : solids_[sampled[c] & ~kSolidTag].faces) {
+      for (const std::uint32_t id : faces_of(sampled[c])) {
         consider(scene_.face_plane(pool_[id].face), kNoPolygon);
       }
     }
@@ -317,8 +316,7 @@ class SceneBsp::Builder {
       const PlaneSides sides = classify(shape(id), draft.plane, eps_);
       if (is_solid(id)) {
         if (sides.spanning()) {
-          const Ids& faces = solids_[id & ~kSolidTag].faces;
-          ids.insert(ids.end(), faces.begin(), faces.end());
+          ids.insert(ids.end(), faces_of(id).begin(), faces_of(id).end());
         } else {
           (sides.positive ? front : back).push_back(id);
         }

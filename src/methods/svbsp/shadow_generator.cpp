@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "shadowkit/core/error.h"
 #include "shadowkit/methods/shadow_method.h"
 
 namespace shadowkit::svbsp {
@@ -124,6 +125,7 @@ void ShadowGenerator::process_solid(std::span<const ConvexPolygon> faces, std::s
                                     std::vector<Fragment>& out) {
   // §6, contour edges only: the faces turned to the light are classified first, none
   // hiding another; the solid's own near side shadows the rest, which casts nothing.
+  SHADOWKIT_CHECK(solids_ != nullptr);
   std::vector<Landing> landings;
   for (const ConvexPolygon& piece : faces) {
     const std::size_t first = out.size();

@@ -8,7 +8,6 @@
 #include "shadow_generator.h"
 #include "shadowkit/scene/generators.h"
 #include "svbsp_method.h"
-#include "testing/method_testing.h"
 
 namespace shadowkit::svbsp {
 
@@ -54,8 +53,10 @@ inline MethodRun run_method(const Scene& scene, std::size_t light,
   SvbspMethod method({"svbsp", settings});
   method.prepare(scene, {});
   method.build(scene, light, {});
-  return {method.fragments(), testing::counter(method, "svbsp_nodes"),
-          testing::counter(method, "convex_units"), testing::counter(method, "light_facing")};
+  std::map<std::string, double> counters;
+  for (const auto& [key, value] : method.counters()) counters[key] = value;
+  return {method.fragments(), counters.at("svbsp_nodes"), counters.at("convex_units"),
+          counters.at("light_facing")};
 }
 
 /// Lit and shadowed area per global face id.
