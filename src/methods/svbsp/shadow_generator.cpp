@@ -66,9 +66,8 @@ bool ShadowGenerator::turned_to_light(std::uint32_t face) const {
   return light_side(scene_.face_plane(face), light_) > in_plane_;
 }
 
-bool ShadowGenerator::facing(std::uint32_t face) const {
-  return settings_.two_sided ? std::abs(light_side(scene_.face_plane(face), light_)) > in_plane_
-                             : turned_to_light(face);
+bool ShadowGenerator::facing(const ConvexPolygon& piece) const {
+  return settings_.two_sided ? !in_light_plane(piece) : turned_to_light(piece.face);
 }
 
 void ShadowGenerator::keep_whole_if_uniform(const ConvexPolygon& piece, std::size_t first,
@@ -104,7 +103,7 @@ void ShadowGenerator::process_coplanar(std::span<const ConvexPolygon> coplanar,
   const std::size_t group = out.size();
   for (const ConvexPolygon& piece : coplanar) {
     const std::size_t first = out.size();
-    if ((far > 0 && far_side(piece)) || !facing(piece.face)) {
+    if ((far > 0 && far_side(piece)) || !facing(piece)) {
       out.push_back({piece, false});  // Fig. 3: not facing the light, or the far side
       continue;
     }

@@ -79,9 +79,9 @@ class ShadowGenerator {
  private:
   // Whether the light is in front of global face \p face, off its plane.
   bool turned_to_light(std::uint32_t face) const;
-  // Whether pieces of \p face are filtered: the light is off its plane, and with one-sided
-  // surfaces in front of it (Fig. 3).
-  bool facing(std::uint32_t face) const;
+  // Whether \p piece is filtered: the light is off its plane, and with one-sided surfaces in
+  // front of it (Fig. 3).
+  bool facing(const ConvexPolygon& piece) const;
   void process_coplanar(std::span<const ConvexPolygon> coplanar, std::vector<Fragment>& out);
   void process_solid(std::span<const ConvexPolygon> faces, std::size_t solid,
                      std::vector<Fragment>& out);

@@ -98,11 +98,6 @@ std::int32_t& SvbspTree::slot(std::int32_t parent, bool positive) {
   return parent < 0 ? root_ : (positive ? nodes_[parent].positive : nodes_[parent].negative);
 }
 
-void SvbspTree::filter(const ConvexPolygon& p, std::vector<Fragment>* out, bool enlarge,
-                       std::vector<Landing>* landings) {
-  descend(p, -1, false, {out, enlarge, landings});
-}
-
 void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive, const Sinks& sinks) {
   std::int32_t at = slot(parent, positive);
   ConvexPolygon negative_part, positive_part;

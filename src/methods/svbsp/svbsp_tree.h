@@ -56,16 +56,16 @@ class SvbspTree {
   /// lit (OUT) fragments to \p out, and replaces each OUT cell reached by the shadow volume
   /// of the fragment that reached it.
   void determine_shadow(const ConvexPolygon& p, std::vector<Fragment>& out) {
-    filter(p, &out, true, nullptr);
+    descend(p, -1, false, {&out, true, nullptr});
   }
   /// Fig. 4 without enlarging the tree: the verdicts only; with \p landings, where each lit
   /// fragment landed, for enlarge_by_contour().
   void classify(const ConvexPolygon& p, std::vector<Fragment>& out,
                 std::vector<Landing>* landings = nullptr) {
-    filter(p, &out, false, landings);
+    descend(p, -1, false, {&out, false, landings});
   }
   /// Enlarging only: unions the shadow volume of \p p into the tree.
-  void enlarge(const ConvexPolygon& p) { filter(p, nullptr, true, nullptr); }
+  void enlarge(const ConvexPolygon& p) { descend(p, -1, false, {nullptr, true, nullptr}); }
   /// §6, contour edges only: replaces the OUT leaf of each landing by the volume bounded by
   /// those of \p contour that hold an edge of a fragment landed there. Exact when the
   /// landings are those of the faces of one convex solid turned to the light, classified
@@ -90,8 +90,6 @@ class SvbspTree {
     bool enlarge;
     std::vector<Landing>* landings;
   };
-  void filter(const ConvexPolygon& p, std::vector<Fragment>* out, bool enlarge,
-              std::vector<Landing>* landings);
   // Filters \p p from the slot (parent node, side; parent -1: the root) down to the leaves.
   void descend(ConvexPolygon p, std::int32_t parent, bool positive, const Sinks& sinks);
   std::int32_t& slot(std::int32_t parent, bool positive);
