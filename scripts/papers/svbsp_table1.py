@@ -11,7 +11,7 @@ Needs build/shadowkit (or SHADOWKIT=path). Counts come from `shadowkit bench --j
 are its medians over --repeats runs (default 9) after one warm-up, mismatches from
 `shadowkit compare --json` at each scene's own image size. The page's text between the lines
 <!-- svbsp_table1.py: begin --> and <!-- svbsp_table1.py: end --> is replaced; the rest of
-the page is left as it is. A few minutes on two cores.
+the page is left as it is. Under a minute on two cores.
 """
 import argparse
 import json
