@@ -437,6 +437,42 @@ const SceneTolerances kTolerances[] = {
 };
 // clang-format on
 
+// svbsp.paper=1 filters only the polygons whose front faces the light; the others are in
+// shadow and cast nothing (Fig. 3). That is the contract where every polygon turned from a
+// light is hidden from it by polygons turned to it: surfaces closed and consistently
+// oriented, each light on their front side (outside a solid, inside a room). These scenes
+// break the assumption, and the row's tolerance is the difference measured, rounded up
+// (docs/papers/chin-feiner-1989.md).
+const struct {
+  const char* scene;
+  double tolerance_pct;
+} kSvbspPaperBeyondItsAssumption[] = {
+    // Open meshes seen and lit from their back: lit in the contract, in shadow here (0.46%).
+    {"open-meshes.json", 0.6},
+    // The light sees the inside of the open box, the back of its faces: they cast nothing on
+    // the ground, and are in shadow where the contract has them lit (2.1%).
+    {"subdivision.json", 2.5},
+    // A light inside a closed box: every wall is turned from it, so nothing casts and the
+    // ground around the box is lit (14%, 95%, 80%).
+    {"sweep/angular-light-inside-touching-boxes.json", 15},
+    {"sweep/volume-light-inside-box.json", 96},
+    {"lights-inside-a-closed-and-an-open-box", 81},
+    // A light on the box's corner: no face is turned to it, the box casts nothing (13%).
+    {"light-at-a-box-corner", 14},
+    // The camera and a light inside a closed box: its walls are turned from that light (66%).
+    {"camera-inside-a-closed-box", 66},
+    // Lights outside the room, whose walls face inward: turned from them, the walls cast
+    // nothing (94%).
+    {"room-lights-in-the-camera-plane", 94},
+};
+
+double svbsp_paper_tolerance(const std::string& scene, double exact) {
+  for (const auto& [name, tolerance] : kSvbspPaperBeyondItsAssumption) {
+    if (scene == name) return tolerance;
+  }
+  return exact;
+}
+
 /// \brief A row whose method is wrong beyond the tolerance it should meet, and why. The row
 /// runs and prints its mismatch, then is skipped; it fails once the method meets the
 /// tolerance, so that the entry is removed.
@@ -454,6 +490,11 @@ constexpr const char* kShadowmapAcne =
     "shadowmap: acne on receivers the light grazes past the slope cap; a finer map does not "
     "mend it (Williams's self-shadowing, docs/methods/shadowmap.md)";
 
+constexpr const char* kSvbspGrazingSun =
+    "svbsp: under a sun 3.4e-8 rad above the horizon the shadow planes of the tetrahedra's "
+    "edges meet the ground at that angle, and the plane tolerance relative to the scene's "
+    "reach cuts slivers of lit ground into shadow";
+
 const KnownFailure kKnownFailures[] = {
     {"shadowmap", nullptr, "sweep/angular-grazing-light-far-shadow.json", kShadowmapAcne},
     {"shadowmap", nullptr, "sweep/angular-knot-shadow-under-a-light-on-the-ground.json",
@@ -467,10 +508,9 @@ const KnownFailure kKnownFailures[] = {
      "that copy's volume; the plane test rounds either way, and lines of pixels across the "
      "top face come out in shadow. The contract has them lit: a coincident face is not "
      "strictly between the point and the light"},
-    {"svbsp", nullptr, "sun-1e-7-off-the-camera-right-axis",
-     "svbsp: under a sun 3.4e-8 rad above the horizon the shadow planes of the tetrahedra's "
-     "edges meet the ground at that angle, and the plane tolerance relative to the scene's "
-     "reach cuts slivers of lit ground into shadow"},
+    // With contour_planes=1, fewer planes, it agrees (0.000%).
+    {"svbsp", "defaults", "sun-1e-7-off-the-camera-right-axis", kSvbspGrazingSun},
+    {"svbsp", "paper=1", "sun-1e-7-off-the-camera-right-axis", kSvbspGrazingSun},
     {"voxel", "resolution=64,test=topology", "light-at-a-box-corner",
      "voxel: with the point light exactly on the box's corner, a wedge of the lit ground in "
      "front of the box comes out in shadow at M = 64 (a quarter of the interior). At M = 128 "
@@ -546,6 +586,13 @@ std::vector<Row> table_rows() {
   // svbsp: the shadowed fragments alone (§6) give the same mask.
   for (const char* scene : {"table", "three-lights"}) {
     add("svbsp", {{"shadowed_only", "1"}}, scene, kExact);
+  }
+  // svbsp: §6's contour planes (convex solids filtered as units) are as exact as the default;
+  // the paper's own algorithm (one-sided, Figs. 3-4) is where its assumption holds, and
+  // differs as kSvbspPaperBeyondItsAssumption says elsewhere.
+  for (const SceneTolerances& t : kTolerances) {
+    add("svbsp", {{"contour_planes", "1"}}, t.scene, t.svbsp);
+    add("svbsp", {{"paper", "1"}}, t.scene, svbsp_paper_tolerance(t.scene, t.svbsp));
   }
 
   // Refusals by design. voxel takes polygons as bilinear patches (docs/methods/voxel.md), so it

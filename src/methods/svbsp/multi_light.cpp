@@ -67,15 +67,17 @@ MultiLightFragments generate_multi_light_shadows(const SceneBsp& bsp, const Scen
   for (const std::size_t l : light_order(scene)) {
     const Light& light = scene.lights[l];
     const std::uint64_t bit = std::uint64_t(1) << l;
-    ShadowGenerator generator(scene, light, merge_siblings);
-    bsp.front_to_back(light, [&](std::span<const ConvexPolygon> coplanar) {
+    GeneratorSettings settings;
+    settings.merge_siblings = merge_siblings;
+    ShadowGenerator generator(scene, light, settings);
+    bsp.front_to_back(light, [&](NodePieces node) {
       // Classified before the node's own volumes join the tree, as its pieces are.
-      for (const ConvexPolygon& piece : coplanar) {
+      for (const ConvexPolygon& piece : node.pieces) {
         if (generator.in_light_plane(piece)) continue;  // shadowed: the bit stays clear
         split_by_light(generator, bit, piece, per_piece[std::size_t(&piece - pieces.data())]);
       }
       single.clear();
-      generator.process(coplanar, single);
+      generator.process(node, single);
     });
     LightPass pass{l, front_facing(scene, light), generator.tree().node_count(), 0};
     for (const auto& fragments : per_piece) pass.fragments += fragments.size();

@@ -21,7 +21,8 @@ std::vector<std::uint32_t> connected_parts(const Mesh& mesh) {
     const std::uint32_t b = find_root(part, mesh.edge_uses[edge.first_use + 1].face);
     part[a] = b;
   }
-  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) find_root(part, f);
+  // Path halving leaves a face's parent short of the root: name the root itself.
+  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) part[f] = find_root(part, f);
   return part;
 }
 

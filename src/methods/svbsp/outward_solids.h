@@ -19,6 +19,10 @@ class OutwardSolids {
 
   /// Whether global face \p face bounds an outward solid.
   bool bounds_solid(std::uint32_t face) const { return solid_[face] >= 0; }
+  /// The solid global face \p face bounds, -1 for none.
+  std::int32_t solid_of(std::uint32_t face) const { return solid_[face]; }
+  /// How many solids there are.
+  std::size_t size() const { return bounds_.size(); }
   /// Whether \p face is on the far side of its solid from \p light: it bounds an outward
   /// solid, its plane is turned from the light, and the light is outside the solid (a
   /// directional light always is; a point light when it is outside the solid's box).

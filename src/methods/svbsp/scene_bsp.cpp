@@ -10,6 +10,7 @@
 #include <optional>
 #include <utility>
 
+#include "convex_solids.h"
 #include "shadowkit/scene/triangulate.h"
 
 namespace shadowkit::svbsp {
@@ -114,16 +115,6 @@ std::optional<std::pair<Plane, PlaneScore>> best_axis_plane(const Sample& polygo
   return best;
 }
 
-std::size_t largest(const Sample& polygons) {
-  std::size_t best = 0;
-  double best_area = -1;
-  for (std::size_t i = 0; i < polygons.size(); ++i) {
-    const double a = area(*polygons[i]);
-    if (a > best_area) best = i, best_area = a;
-  }
-  return best;
-}
-
 }  // namespace
 
 std::vector<ConvexPolygon> convex_faces(const Scene& scene) {
@@ -155,38 +146,92 @@ std::vector<ConvexPolygon> convex_faces(const Scene& scene) {
 // laid out in one fixed order.
 struct SceneBsp::Draft {
   Plane plane;
-  Ids here;  ///< pieces in the plane, into the builder's pool
+  Ids here;  ///< pieces in the plane (or the solid's faces), into the builder's pool
+  std::int32_t solid = -1;
   std::unique_ptr<Draft> front, back;
 };
 
 // Builds drafts over a pool of polygons that splitting only appends to, so that ids and
-// references stay valid while other subtrees grow it.
+// references stay valid while other subtrees grow it. An id with kSolidTag names a convex
+// solid kept whole: its faces, and its corners for the plane tests.
 class SceneBsp::Builder {
  public:
-  Builder(const Scene& scene, double eps, std::vector<ConvexPolygon> inputs)
-      : scene_(scene), eps_(eps), pool_(inputs.begin(), inputs.end()) {}
+  Builder(const Scene& scene, double eps, std::vector<ConvexPolygon> inputs,
+          const ConvexSolids* solids)
+      : scene_(scene), eps_(eps), pool_(inputs.begin(), inputs.end()) {
+    if (solids) solids_.resize(solids->size());
+    for (std::uint32_t id = 0; id < pool_.size(); ++id) {
+      const std::int32_t s = solids ? solids->solid_of(pool_[id].face) : -1;
+      if (s < 0) {
+        items_.push_back(id);
+        continue;
+      }
+      Solid& solid = solids_[std::size_t(s)];
+      solid.faces.push_back(id);
+      for (const Vec3& v : pool_[id].vertices) solid.corners.vertices.push_back(v);
+    }
+    for (std::uint32_t s = 0; s < solids_.size(); ++s) items_.push_back(kSolidTag | s);
+  }
 
   std::size_t size() const { return pool_.size(); }
   ConvexPolygon& polygon(std::uint32_t id) { return pool_[id]; }
+  /// Every input polygon, a convex solid's faces as the solid.
+  const Ids& items() const { return items_; }
 
-  std::unique_ptr<Draft> build(const Ids& ids) {
+  std::unique_ptr<Draft> build(Ids ids) {
     if (ids.empty()) return nullptr;
     auto draft = std::make_unique<Draft>();
-    const auto [plane, best] = choose_splitter(ids);
-    draft->plane = plane;
+    if (ids.size() == 1 && is_solid(ids[0])) {  // a leaf: the solid whole
+      draft->solid = std::int32_t(ids[0] & ~kSolidTag);
+      draft->here = faces_of(ids[0]);
+      return draft;
+    }
+    auto splitter = choose_splitter(ids);
+    if (!splitter) {  // nothing separates the solids: their faces go on alone
+      ids = dissolved(ids);
+      splitter = choose_splitter(ids);
+    }
+    draft->plane = splitter->first;
+    const bool parallel = ids.size() >= kParallelGrain;
     Ids front, back;
-    partition(ids, best, *draft, front, back);
-    if (ids.size() >= kParallelGrain) {
-      tbb::parallel_invoke([&] { draft->front = build(front); },
-                           [&] { draft->back = build(back); });
+    partition(std::move(ids), splitter->second, *draft, front, back);
+    if (parallel) {
+      tbb::parallel_invoke([&] { draft->front = build(std::move(front)); },
+                           [&] { draft->back = build(std::move(back)); });
     } else {
-      draft->front = build(front);
-      draft->back = build(back);
+      draft->front = build(std::move(front));
+      draft->back = build(std::move(back));
     }
     return draft;
   }
 
  private:
+  static constexpr std::uint32_t kSolidTag = 1u << 31;
+  static bool is_solid(std::uint32_t id) { return (id & kSolidTag) != 0; }
+
+  /// \brief A convex solid kept whole: its faces in the pool and all their corners.
+  struct Solid {
+    Ids faces;
+    ConvexPolygon corners;
+  };
+
+  const ConvexPolygon& shape(std::uint32_t id) const {
+    return is_solid(id) ? solids_[id & ~kSolidTag].corners : pool_[id];
+  }
+  const Ids& faces_of(std::uint32_t solid_id) const { return solids_[solid_id & ~kSolidTag].faces; }
+
+  // \p ids with every solid replaced by its faces.
+  Ids dissolved(const Ids& ids) const {
+    Ids out;
+    for (const std::uint32_t id : ids) {
+      if (is_solid(id))
+        out.insert(out.end(), faces_of(id).begin(), faces_of(id).end());
+      else
+        out.push_back(id);
+    }
+    return out;
+  }
+
   // Up to kSample of \p ids, evenly spread.
   static Ids sample(const Ids& ids) {
     const std::size_t n = std::min(ids.size(), kSample);
@@ -196,49 +241,91 @@ class SceneBsp::Builder {
   }
 
   // The splitter of \p ids and the polygon defining it (kNoPolygon for none). A plane across
-  // an axis that splits no polygon of the sample runs through a gap: taken at once. Else
-  // the face plane or axis plane of lowest cost.
-  std::pair<Plane, std::uint32_t> choose_splitter(const Ids& ids) {
+  // an axis that splits nothing of the sample runs through a gap: taken at once. Else the
+  // face plane or axis plane of lowest cost. None: only solids, and no plane parts them.
+  std::optional<std::pair<Plane, std::uint32_t>> choose_splitter(const Ids& ids) {
     const Ids sampled = sample(ids);
     Sample polygons;
-    for (const std::uint32_t id : sampled) polygons.push_back(&pool_[id]);
+    for (const std::uint32_t id : sampled) polygons.push_back(&shape(id));
+    const bool solids = std::any_of(sampled.begin(), sampled.end(), is_solid);
     std::optional<std::pair<Plane, PlaneScore>> across;
-    if (polygons.size() > kCandidates) across = best_axis_plane(polygons);
-    if (across && across->second.splits == 0) return {across->first, kNoPolygon};
-    const auto [face, cost] = best_face_plane(polygons);
-    if (across && across->second.cost() < cost) return {across->first, kNoPolygon};
-    return {scene_.face_plane(polygons[face]->face), sampled[face]};
+    if (polygons.size() > kCandidates || solids) across = best_axis_plane(polygons);
+    if (across && across->second.splits == 0) return std::pair(across->first, kNoPolygon);
+    const std::optional<FacePlane> face = best_face_plane(sampled, polygons);
+    if (across && (!face || across->second.cost() < face->cost)) {
+      return std::pair(across->first, kNoPolygon);
+    }
+    if (!face) return std::nullopt;
+    return std::pair(face->plane, face->polygon);
   }
 
-  // Candidates: face planes of a few polygons spread over the sample and of the largest one
-  // (the one most planes would split). The best one's index in \p polygons, and its cost.
-  std::pair<std::size_t, std::size_t> best_face_plane(const Sample& polygons) const {
+  /// \brief A face plane candidate: the plane, its polygon (kNoPolygon for a solid's face,
+  /// which stays with its solid), its cost.
+  struct FacePlane {
+    Plane plane;
+    std::uint32_t polygon = kNoPolygon;
+    std::size_t cost = 0;
+  };
+
+  // Candidates: face planes of a few items spread over the sample (every face of a solid)
+  // and of the largest polygon (the one most planes would split). A solid's face plane
+  // leaves the solid behind it, so it parts the items only with one in front.
+  std::optional<FacePlane> best_face_plane(const Ids& sampled, const Sample& polygons) const {
     const std::size_t step = std::max<std::size_t>(1, polygons.size() / kCandidates);
     std::vector<std::size_t> candidates;
     for (std::size_t c = 0; c < polygons.size() && c / step < kCandidates; c += step) {
       candidates.push_back(c);
     }
-    candidates.push_back(largest(polygons));
-    std::size_t best = 0, best_cost = ~std::size_t(0);
-    for (std::size_t c : candidates) {
-      const std::size_t cost = score(polygons, scene_.face_plane(polygons[c]->face), eps_).cost();
-      if (cost < best_cost) best = c, best_cost = cost;
+    if (const auto big = largest(sampled, polygons)) candidates.push_back(*big);
+    std::optional<FacePlane> best;
+    const auto consider = [&](const Plane& plane, std::uint32_t polygon) {
+      const PlaneScore s = score(polygons, plane, eps_);
+      if (polygon == kNoPolygon && s.front == 0) return;
+      if (!best || s.cost() < best->cost) best = FacePlane{plane, polygon, s.cost()};
+    };
+    for (const std::size_t c : candidates) {
+      if (!is_solid(sampled[c])) {
+        consider(scene_.face_plane(polygons[c]->face), sampled[c]);
+        continue;
+      }
+      for (const std::uint32_t id : faces_of(sampled[c])) {
+        consider(scene_.face_plane(pool_[id].face), kNoPolygon);
+      }
     }
-    return {best, best_cost};
+    return best;
   }
 
-  // Pieces in the plane stay at the node, the others go front or back, split if need be.
-  void partition(const Ids& ids, std::uint32_t best, Draft& draft, Ids& front, Ids& back) {
+  // The largest polygon of the sample that is not a solid, if any.
+  std::optional<std::size_t> largest(const Ids& sampled, const Sample& polygons) const {
+    std::optional<std::size_t> best;
+    double best_area = -1;
+    for (std::size_t i = 0; i < polygons.size(); ++i) {
+      if (is_solid(sampled[i])) continue;
+      const double a = area(*polygons[i]);
+      if (a > best_area) best = i, best_area = a;
+    }
+    return best;
+  }
+
+  // Pieces in the plane stay at the node, the others go front or back, split if need be;
+  // a solid the plane crosses goes on as its faces.
+  void partition(Ids ids, std::uint32_t best, Draft& draft, Ids& front, Ids& back) {
     ConvexPolygon neg, pos;
-    for (const std::uint32_t id : ids) {
-      const ConvexPolygon& p = pool_[id];
-      const PlaneSides sides = classify(p, draft.plane, eps_);
-      if (id == best || sides.on()) {
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      const std::uint32_t id = ids[i];
+      const PlaneSides sides = classify(shape(id), draft.plane, eps_);
+      if (is_solid(id)) {
+        if (sides.spanning()) {
+          ids.insert(ids.end(), faces_of(id).begin(), faces_of(id).end());
+        } else {
+          (sides.positive ? front : back).push_back(id);
+        }
+      } else if (id == best || sides.on()) {
         draft.here.push_back(id);
       } else if (!sides.spanning()) {
         (sides.positive ? front : back).push_back(id);
       } else {
-        split_polygon(p, draft.plane, eps_, false, neg, pos);
+        split_polygon(pool_[id], draft.plane, eps_, false, neg, pos);
         back.push_back(add(std::move(neg)));
         front.push_back(add(std::move(pos)));
       }
@@ -252,16 +339,16 @@ class SceneBsp::Builder {
   const Scene& scene_;
   double eps_;
   tbb::concurrent_vector<ConvexPolygon> pool_;
+  std::vector<Solid> solids_;
+  Ids items_;
 };
 
-SceneBsp SceneBsp::build(const Scene& scene) {
+SceneBsp SceneBsp::build(const Scene& scene, const ConvexSolids* solids) {
   SceneBsp bsp;
   bsp.eps_ = kRelativeTolerance * std::max(1.0, scene.bounds().diagonal());
-  Builder builder(scene, bsp.eps_, convex_faces(scene));
+  Builder builder(scene, bsp.eps_, convex_faces(scene), solids);
   const std::size_t inputs = builder.size();
-  Ids ids(inputs);
-  std::iota(ids.begin(), ids.end(), 0u);
-  const std::unique_ptr<Draft> root = builder.build(ids);
+  const std::unique_ptr<Draft> root = builder.build(builder.items());
   if (root) bsp.root_ = bsp.lay_out(*root, builder, 1);
   bsp.splits_ = bsp.pieces_.size() - inputs;
   return bsp;
@@ -270,30 +357,35 @@ SceneBsp SceneBsp::build(const Scene& scene) {
 std::int32_t SceneBsp::lay_out(Draft& draft, Builder& builder, std::size_t depth) {
   depth_ = std::max(depth_, depth);
   const std::int32_t index = std::int32_t(nodes_.size());
-  nodes_.push_back(
-      {draft.plane, std::uint32_t(pieces_.size()), std::uint32_t(draft.here.size()), -1, -1});
+  nodes_.push_back({draft.plane, std::uint32_t(pieces_.size()), std::uint32_t(draft.here.size()),
+                    -1, -1, draft.solid});
   for (const std::uint32_t id : draft.here) pieces_.push_back(std::move(builder.polygon(id)));
+  solids_ += draft.solid >= 0;
   if (draft.front) nodes_[index].front = lay_out(*draft.front, builder, depth + 1);
   if (draft.back) nodes_[index].back = lay_out(*draft.back, builder, depth + 1);
   return index;
 }
 
-void SceneBsp::front_to_back(const Light& light,
-                             const std::function<void(std::span<const ConvexPolygon>)>& fn) const {
+void SceneBsp::front_to_back(const Light& light, const std::function<void(NodePieces)>& fn) const {
   visit(root_, light, fn);
 }
 
 void SceneBsp::visit(std::int32_t node, const Light& light,
-                     const std::function<void(std::span<const ConvexPolygon>)>& fn) const {
+                     const std::function<void(NodePieces)>& fn) const {
   if (node < 0) return;
   const Node& n = nodes_[node];
+  const std::span<const ConvexPolygon> pieces(pieces_.data() + n.first, n.count);
+  if (n.solid >= 0) {  // a leaf
+    fn({pieces, n.solid});
+    return;
+  }
   // The light's half-space first: nothing behind the plane can hide what is in front of it.
   const double side = light.type == Light::Type::point ? n.plane.distance(light.position)
                                                        : -dot(n.plane.normal, light.direction);
   const std::int32_t near = side >= 0 ? n.front : n.back;
   const std::int32_t far = side >= 0 ? n.back : n.front;
   visit(near, light, fn);
-  fn({pieces_.data() + n.first, n.count});
+  fn({pieces});
   visit(far, light, fn);
 }
 

@@ -12,6 +12,15 @@
 
 namespace shadowkit::svbsp {
 
+class ConvexSolids;
+
+/// \brief What front_to_back() hands over for one node: the coplanar pieces lying in its
+/// plane, or (solid >= 0) every face of a convex solid that no splitting plane crossed.
+struct NodePieces {
+  std::span<const ConvexPolygon> pieces;
+  std::int32_t solid = -1;  ///< into ConvexSolids
+};
+
 /// \brief A BSP tree over the convex pieces of every scene face. Each node holds the pieces
 /// lying in its plane (the plane of an original face); pieces spanning a node's plane are
 /// split by it.
@@ -21,13 +30,16 @@ class SceneBsp {
   /// tries a few candidate planes on a sample of its polygons and keeps the one with the
   /// lowest weighted sum of splits and imbalance; a node may split by a plane holding no
   /// polygon. Large subtrees are built in parallel; the tree does not depend on threads.
-  static SceneBsp build(const Scene& scene);
+  /// With \p solids, each convex solid is kept whole as one leaf (Schumacker's clusters),
+  /// the planes of its faces and of the gaps around it separating it from the rest, unless
+  /// no such plane is found and one crosses it: its faces then go on alone.
+  static SceneBsp build(const Scene& scene, const ConvexSolids* solids = nullptr);
 
   /// Calls \p visit with the pieces of each node, nodes in front-to-back order as seen from
   /// \p light (a directional light sits at infinity against its direction). Pieces of one
-  /// node are coplanar and cannot hide one another.
-  void front_to_back(const Light& light,
-                     const std::function<void(std::span<const ConvexPolygon>)>& visit) const;
+  /// node are coplanar and cannot hide one another, or they are the faces of one convex
+  /// solid, which nothing visited later hides.
+  void front_to_back(const Light& light, const std::function<void(NodePieces)>& visit) const;
 
   std::size_t node_count() const { return nodes_.size(); }
   std::size_t piece_count() const { return pieces_.size(); }
@@ -36,6 +48,8 @@ class SceneBsp {
   std::span<const ConvexPolygon> pieces() const { return pieces_; }
   /// Pieces created by splitting (piece_count minus the convex input polygons).
   std::size_t split_count() const { return splits_; }
+  /// Convex solids kept whole, each one leaf.
+  std::size_t solid_count() const { return solids_; }
   std::size_t depth() const { return depth_; }
   std::size_t memory_bytes() const;
 
@@ -47,19 +61,20 @@ class SceneBsp {
     Plane plane;
     std::uint32_t first = 0, count = 0;  ///< pieces in the plane, into pieces_
     std::int32_t front = -1, back = -1;  ///< children, -1: empty half-space
+    std::int32_t solid = -1;             ///< a leaf holding a convex solid's faces
   };
   struct Draft;
   class Builder;
   // Appends \p draft's subtree in preorder, front before back; returns its root.
   std::int32_t lay_out(Draft& draft, Builder& builder, std::size_t depth);
   void visit(std::int32_t node, const Light& light,
-             const std::function<void(std::span<const ConvexPolygon>)>& fn) const;
+             const std::function<void(NodePieces)>& fn) const;
 
   std::vector<Node> nodes_;
   std::vector<ConvexPolygon> pieces_;
   std::int32_t root_ = -1;
   double eps_ = 0;
-  std::size_t splits_ = 0, depth_ = 0;
+  std::size_t splits_ = 0, depth_ = 0, solids_ = 0;
 };
 
 /// The convex pieces of every face of \p scene: the face itself when it is convex, its

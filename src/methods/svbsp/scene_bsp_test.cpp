@@ -5,6 +5,7 @@
 
 #include <map>
 
+#include "convex_solids.h"
 #include "shadowkit/scene/scene_file.h"
 #include "testing/test_scenes.h"
 
@@ -14,8 +15,8 @@ namespace {
 // Faces in the order the tree visits them from \p light.
 std::vector<std::uint32_t> visit_order(const SceneBsp& bsp, const Light& light) {
   std::vector<std::uint32_t> faces;
-  bsp.front_to_back(light, [&](std::span<const ConvexPolygon> pieces) {
-    for (const ConvexPolygon& p : pieces) faces.push_back(p.face);
+  bsp.front_to_back(light, [&](NodePieces node) {
+    for (const ConvexPolygon& p : node.pieces) faces.push_back(p.face);
   });
   return faces;
 }
@@ -45,8 +46,8 @@ TEST(SceneBsp, PiecesOfEveryFaceSumToItsArea) {
     const SceneBsp bsp = SceneBsp::build(scene);
     std::map<std::uint32_t, double> sum;
     std::size_t pieces = 0;
-    bsp.front_to_back(Light::point({0.3, 7, 0.2}), [&](std::span<const ConvexPolygon> ps) {
-      for (const ConvexPolygon& p : ps) sum[p.face] += area(p), ++pieces;
+    bsp.front_to_back(Light::point({0.3, 7, 0.2}), [&](NodePieces node) {
+      for (const ConvexPolygon& p : node.pieces) sum[p.face] += area(p), ++pieces;
     });
     EXPECT_EQ(pieces, bsp.piece_count()) << name;
     ASSERT_EQ(sum.size(), scene.face_count()) << name;
@@ -106,6 +107,24 @@ TEST(SceneBsp, CoplanarPolygonsShareOneNodeOrAreSeparatedWithoutSplits) {
   EXPECT_EQ(apart.piece_count(), 20u);
   EXPECT_EQ(apart.split_count(), 0u);
   EXPECT_EQ(visit_order(apart, Light::point({0, 10, 0})).size(), 20u);
+}
+
+TEST(SceneBsp, ConvexSolidsStayWholeOneLeafEach) {
+  // The cubes stand apart in their slots: planes through the gaps and their faces part them,
+  // so each one is one leaf holding its six faces and nothing else.
+  const Scene scene = load_scene("cubes:125", {});
+  const ConvexSolids solids(scene, OutwardSolids(scene));
+  ASSERT_EQ(solids.size(), 125u);
+  const SceneBsp bsp = SceneBsp::build(scene, &solids);
+  EXPECT_EQ(bsp.solid_count(), 125u);
+  std::map<std::int32_t, int> leaves;
+  bsp.front_to_back(scene.lights[0], [&](NodePieces node) {
+    if (node.solid < 0) return;
+    ++leaves[node.solid];
+    EXPECT_EQ(node.pieces.size(), 6u);
+    for (const ConvexPolygon& p : node.pieces) EXPECT_EQ(solids.solid_of(p.face), node.solid);
+  });
+  EXPECT_EQ(leaves.size(), 125u);
 }
 
 TEST(SceneBsp, EmptySceneHasNoNode) {

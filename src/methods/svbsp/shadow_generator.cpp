@@ -4,6 +4,7 @@
 #include <cmath>
 #include <utility>
 
+#include "shadowkit/core/error.h"
 #include "shadowkit/methods/shadow_method.h"
 
 namespace shadowkit::svbsp {
@@ -23,17 +24,6 @@ double plane_tolerance(const Scene& scene, const Light& light) {
 double in_plane_tolerance(const Scene& scene, const Light& light) {
   return light.type == Light::Type::point ? plane_tolerance(scene, light)
                                           : SceneBsp::kRelativeTolerance;
-}
-
-// §6: a piece whose fragments are all lit or all shadowed is kept whole.
-void merge_if_uniform(const ConvexPolygon& piece, std::size_t first, std::vector<Fragment>& out) {
-  if (out.size() - first < 2) return;
-  const bool lit = out[first].lit;
-  const bool uniform = std::all_of(out.begin() + std::ptrdiff_t(first), out.end(),
-                                   [lit](const Fragment& f) { return f.lit == lit; });
-  if (!uniform) return;
-  out.resize(first);
-  out.push_back({piece, lit});
 }
 
 }  // namespace
@@ -56,19 +46,55 @@ FrontFacing front_facing(const Scene& scene, const Light& light) {
   return count;
 }
 
-ShadowGenerator::ShadowGenerator(const Scene& scene, const Light& light, bool merge_siblings,
-                                 FarSide far_side)
+ShadowGenerator::ShadowGenerator(const Scene& scene, const Light& light,
+                                 const GeneratorSettings& settings, FarSide far_side,
+                                 const ConvexSolids* solids)
     : scene_(scene),
       light_(light),
+      settings_(settings),
       far_side_(std::move(far_side)),
+      solids_(solids),
       in_plane_(in_plane_tolerance(scene, light)),
-      tree_(light, plane_tolerance(scene, light), merge_siblings) {}
+      tree_(light, plane_tolerance(scene, light), settings.merge_siblings,
+            settings.skip_edges_in_tree) {}
 
 bool ShadowGenerator::in_light_plane(const ConvexPolygon& piece) const {
   return std::abs(light_side(scene_.face_plane(piece.face), light_)) <= in_plane_;
 }
 
-void ShadowGenerator::process(std::span<const ConvexPolygon> coplanar, std::vector<Fragment>& out) {
+bool ShadowGenerator::turned_to_light(std::uint32_t face) const {
+  return light_side(scene_.face_plane(face), light_) > in_plane_;
+}
+
+bool ShadowGenerator::facing(const ConvexPolygon& piece) const {
+  return settings_.two_sided ? !in_light_plane(piece) : turned_to_light(piece.face);
+}
+
+void ShadowGenerator::keep_whole_if_uniform(const ConvexPolygon& piece, std::size_t first,
+                                            std::vector<Fragment>& out) const {
+  if (!settings_.whole_pieces || out.size() - first < 2) return;
+  const bool lit = out[first].lit;
+  const bool uniform = std::all_of(out.begin() + std::ptrdiff_t(first), out.end(),
+                                   [lit](const Fragment& f) { return f.lit == lit; });
+  if (!uniform) return;
+  out.resize(first);
+  out.push_back({piece, lit});
+}
+
+void ShadowGenerator::process(NodePieces node, std::vector<Fragment>& out) {
+  if (node.solid < 0) return process_coplanar(node.pieces, out);
+  const std::size_t solid = std::size_t(node.solid);
+  // A convex solid is a unit only for a light outside it, which some face then turns to.
+  const bool outside =
+      std::any_of(node.pieces.begin(), node.pieces.end(),
+                  [this](const ConvexPolygon& p) { return turned_to_light(p.face); });
+  if (outside) return process_solid(node.pieces, solid, out);
+  // From inside, its faces hide none of one another: in any order, each alone.
+  for (const ConvexPolygon& piece : node.pieces) process_coplanar({&piece, 1}, out);
+}
+
+void ShadowGenerator::process_coplanar(std::span<const ConvexPolygon> coplanar,
+                                       std::vector<Fragment>& out) {
   // Pieces of one plane cannot shadow one another, but where two of them overlap, the
   // first one's volume would hold the second: classify all, then enlarge.
   const auto far = std::count_if(coplanar.begin(), coplanar.end(),
@@ -77,8 +103,8 @@ void ShadowGenerator::process(std::span<const ConvexPolygon> coplanar, std::vect
   const std::size_t group = out.size();
   for (const ConvexPolygon& piece : coplanar) {
     const std::size_t first = out.size();
-    if ((far > 0 && far_side(piece)) || in_light_plane(piece)) {
-      out.push_back({piece, false});  // Fig. 3: the light is in its plane, or the far side
+    if ((far > 0 && far_side(piece)) || !facing(piece)) {
+      out.push_back({piece, false});  // Fig. 3: not facing the light, or the far side
       continue;
     }
     ++light_facing_;
@@ -86,7 +112,7 @@ void ShadowGenerator::process(std::span<const ConvexPolygon> coplanar, std::vect
       tree_.classify(piece, out);
     else
       tree_.determine_shadow(piece, out);
-    merge_if_uniform(piece, first, out);
+    keep_whole_if_uniform(piece, first, out);
   }
   if (!together) return;
   for (std::size_t i = group; i < out.size(); ++i) {
@@ -94,13 +120,34 @@ void ShadowGenerator::process(std::span<const ConvexPolygon> coplanar, std::vect
   }
 }
 
+void ShadowGenerator::process_solid(std::span<const ConvexPolygon> faces, std::size_t solid,
+                                    std::vector<Fragment>& out) {
+  // §6, contour edges only: the faces turned to the light are classified first, none
+  // hiding another; the solid's own near side shadows the rest, which casts nothing.
+  SHADOWKIT_CHECK(solids_ != nullptr);
+  std::vector<Landing> landings;
+  for (const ConvexPolygon& piece : faces) {
+    const std::size_t first = out.size();
+    if (!turned_to_light(piece.face)) {
+      out.push_back({piece, false});
+      continue;
+    }
+    ++light_facing_;
+    tree_.classify(piece, out, &landings);
+    keep_whole_if_uniform(piece, first, out);
+  }
+  tree_.enlarge_by_contour(std::move(landings),
+                           solids_->contour_planes(solid, light_, [this](std::uint32_t f) {
+                             return turned_to_light(f);
+                           }));
+}
+
 LightFragments generate_shadows(const SceneBsp& bsp, const Scene& scene, const Light& light,
-                                bool merge_siblings, const FarSide& far_side) {
-  ShadowGenerator generator(scene, light, merge_siblings, far_side);
+                                const GeneratorSettings& settings, const FarSide& far_side,
+                                const ConvexSolids* solids) {
+  ShadowGenerator generator(scene, light, settings, far_side, solids);
   LightFragments result;
-  bsp.front_to_back(light, [&](std::span<const ConvexPolygon> coplanar) {
-    generator.process(coplanar, result.fragments);
-  });
+  bsp.front_to_back(light, [&](NodePieces node) { generator.process(node, result.fragments); });
   result.light_facing = generator.light_facing();
   result.svbsp_nodes = generator.tree().node_count();
   result.svbsp_bytes = generator.tree().memory_bytes();

@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "convex_solids.h"
 #include "outward_solids.h"
 #include "scene_bsp.h"
 #include "svbsp_tree.h"
@@ -27,6 +28,22 @@ struct FrontFacing {
 };
 FrontFacing front_facing(const Scene& scene, const Light& light);
 
+/// \brief How shadowGenerator runs: Figs. 3 and 4 as the paper writes them, and each of §6's
+/// refinements that keep the result exact as a switch (docs/papers/chin-feiner-1989.md).
+/// All false is the paper's own algorithm.
+struct GeneratorSettings {
+  /// Surfaces are two-sided (the contract): a piece is filtered from whichever side the
+  /// light sees. Off, only pieces whose front faces the light are filtered; the others are
+  /// shadowed and cast nothing (Fig. 3).
+  bool two_sided = true;
+  /// §6: an edge lying in a plane that already bounds the cell gets no plane of its own.
+  bool skip_edges_in_tree = true;
+  /// §6, after Thibault and Naylor: sibling fragments in the same state are merged.
+  bool merge_siblings = true;
+  /// §6: a piece whose fragments are all lit or all shadowed is kept whole.
+  bool whole_pieces = true;
+};
+
 /// Whether a global face is on the far side of its solid from the light (OutwardSolids); its
 /// pieces are shadowed without filtering. Empty: every piece is filtered.
 using FarSide = std::function<bool(std::uint32_t face)>;
@@ -38,19 +55,20 @@ FarSide far_side_of(const OutwardSolids& solids, const Scene& scene, const Light
 /// front-to-back order, it grows the light's SVBSP tree and gives each piece's fragments.
 class ShadowGenerator {
  public:
-  /// \p merge_siblings: see SvbspTree.
-  ShadowGenerator(const Scene& scene, const Light& light, bool merge_siblings = true,
-                  FarSide far_side = {});
+  /// \p solids: the convex solids of the scene BSP tree's solid leaves (§6, contour edges);
+  /// null when it has none.
+  ShadowGenerator(const Scene& scene, const Light& light, const GeneratorSettings& settings = {},
+                  FarSide far_side = {}, const ConvexSolids* solids = nullptr);
 
   /// Whether the light lies in the plane of \p piece's face: the piece is shadowed and
   /// casts nothing (Fig. 3).
   bool in_light_plane(const ConvexPolygon& piece) const;
   /// Whether \p piece is on the far side of its solid (FarSide).
   bool far_side(const ConvexPolygon& piece) const { return far_side_ && far_side_(piece.face); }
-  /// Processes the coplanar pieces of one BSP node: appends their fragments to \p out and
-  /// unions the shadow volumes of the lit ones into the tree. Far-side pieces are appended
-  /// shadowed and whole.
-  void process(std::span<const ConvexPolygon> coplanar, std::vector<Fragment>& out);
+  /// Processes the pieces of one BSP node: appends their fragments to \p out and unions the
+  /// shadow volumes of the lit ones into the tree. Far-side pieces are appended shadowed and
+  /// whole.
+  void process(NodePieces node, std::vector<Fragment>& out);
   /// The verdicts of the tree as it stands, without enlarging it: used for fragments of
   /// earlier lights (§5), which must not add planes of their own.
   void classify(const ConvexPolygon& p, std::vector<Fragment>& out) { tree_.classify(p, out); }
@@ -59,21 +77,34 @@ class ShadowGenerator {
   const SvbspTree& tree() const { return tree_; }
 
  private:
+  // Whether the light is in front of global face \p face, off its plane.
+  bool turned_to_light(std::uint32_t face) const;
+  // Whether \p piece is filtered: the light is off its plane, and with one-sided surfaces in
+  // front of it (Fig. 3).
+  bool facing(const ConvexPolygon& piece) const;
+  void process_coplanar(std::span<const ConvexPolygon> coplanar, std::vector<Fragment>& out);
+  void process_solid(std::span<const ConvexPolygon> faces, std::size_t solid,
+                     std::vector<Fragment>& out);
+  // §6: the fragments of \p piece from \p first on give way to it when they all agree.
+  void keep_whole_if_uniform(const ConvexPolygon& piece, std::size_t first,
+                             std::vector<Fragment>& out) const;
+
   const Scene& scene_;
   Light light_;
+  GeneratorSettings settings_;
   FarSide far_side_;
+  const ConvexSolids* solids_;
   double in_plane_;
   SvbspTree tree_;
   std::size_t light_facing_ = 0;
 };
 
 /// Filters the pieces of \p bsp in front-to-back order from \p light down a new SVBSP tree.
-/// Surfaces are two-sided: a piece faces the light from whichever side the light is; a
-/// piece whose plane holds the light is shadowed and casts nothing. Where all fragments of
-/// a piece agree, the piece itself replaces them (§6).
-/// \p merge_siblings: fragments split by a node but in the same state are merged back (§6).
-/// \p far_side: see FarSide.
+/// Surfaces are two-sided unless \p settings says otherwise: a piece faces the light from
+/// whichever side the light is; a piece whose plane holds the light is shadowed and casts
+/// nothing. \p far_side: see FarSide. \p solids: see ShadowGenerator.
 LightFragments generate_shadows(const SceneBsp& bsp, const Scene& scene, const Light& light,
-                                bool merge_siblings = true, const FarSide& far_side = {});
+                                const GeneratorSettings& settings = {},
+                                const FarSide& far_side = {}, const ConvexSolids* solids = nullptr);
 
 }  // namespace shadowkit::svbsp

@@ -44,15 +44,15 @@ std::vector<double> SunlitAreas::filter(Vec3 toward_light, std::vector<Fragment>
   const Light light = Light::directional(-toward_light);
   std::vector<double> lit(scene_.face_count(), 0.0);
   // The sun is outside every solid: a face of one is on its far side when turned away.
-  ShadowGenerator generator(scene_, light, true, [&](std::uint32_t face) {
+  ShadowGenerator generator(scene_, light, {}, [&](std::uint32_t face) {
     return outward_solid_faces_[face] && dot(scene_.face_plane(face).normal, toward_light) < 0;
   });
   // Fragments are summed node by node and dropped: only the tree must grow (§4), not the
   // list of every fragment the fragments command keeps.
   std::vector<Fragment> fragments;
-  bsp_->front_to_back(light, [&](std::span<const ConvexPolygon> coplanar) {
+  bsp_->front_to_back(light, [&](NodePieces node) {
     fragments.clear();
-    generator.process(coplanar, fragments);
+    generator.process(node, fragments);
     for (Fragment& f : fragments) {
       if (!f.lit) continue;
       lit[f.polygon.face] += area(f.polygon);

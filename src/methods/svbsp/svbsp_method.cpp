@@ -3,6 +3,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
+#include <string>
 
 #include "fragment_raster.h"
 #include "shadowkit/core/error.h"
@@ -10,31 +11,51 @@
 
 namespace shadowkit::svbsp {
 
+namespace {
+
+// A 0 or 1 setting, \p fallback when it is not given.
+bool switch_setting(const MethodOptions& options, const std::string& key, bool fallback) {
+  const double value = options.number(key, fallback ? 1 : 0);
+  if (value != 0 && value != 1) throw InputError("option 'svbsp." + key + "'", "expected 0 or 1");
+  return value == 1;
+}
+
+}  // namespace
+
 SvbspMethod::SvbspMethod(const MethodOptions& options) {
-  options.expect_only("svbsp", {"shadowed_only", "merge_siblings"});
-  const double shadowed_only = options.number("shadowed_only", 0);
-  if (shadowed_only != 0 && shadowed_only != 1) {
-    throw InputError("option 'svbsp.shadowed_only'", "expected 0 or 1");
-  }
-  shadowed_only_ = shadowed_only == 1;
-  const double merge_siblings = options.number("merge_siblings", 1);
-  if (merge_siblings != 0 && merge_siblings != 1) {
-    throw InputError("option 'svbsp.merge_siblings'", "expected 0 or 1");
-  }
-  merge_siblings_ = merge_siblings == 1;
+  options.expect_only("svbsp", {"paper", "contour_planes", "far_side", "skip_edges_in_tree",
+                                "merge_siblings", "whole_pieces", "shadowed_only"});
+  // paper=1: Figs. 3 and 4 as written, one-sided; each §6 refinement off unless set.
+  const bool paper = switch_setting(options, "paper", false);
+  generator_.two_sided = !paper;
+  generator_.skip_edges_in_tree = switch_setting(options, "skip_edges_in_tree", !paper);
+  generator_.merge_siblings = switch_setting(options, "merge_siblings", !paper);
+  generator_.whole_pieces = switch_setting(options, "whole_pieces", !paper);
+  far_side_ = switch_setting(options, "far_side", !paper);
+  contour_planes_ = switch_setting(options, "contour_planes", false);
+  shadowed_only_ = switch_setting(options, "shadowed_only", false);
 }
 
 void SvbspMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
-  // Independent: the solids' faces are found while the tree is built.
-  tbb::parallel_invoke([&] { bsp_ = svbsp::SceneBsp::build(scene); },
-                       [&] { solids_.emplace(scene); });
+  if (!contour_planes_) {
+    // Independent: the solids' faces are found while the tree is built.
+    tbb::parallel_invoke([&] { bsp_ = svbsp::SceneBsp::build(scene); },
+                         [&] { solids_.emplace(scene); });
+    return;
+  }
+  // §6, contour edges: the tree keeps each convex solid whole.
+  solids_.emplace(scene);
+  convex_solids_.emplace(scene, *solids_);
+  bsp_ = svbsp::SceneBsp::build(scene, &*convex_solids_);
 }
 
 void SvbspMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
   SHADOWKIT_CHECK(bsp_.has_value() && solids_.has_value());
   light_ = scene.lights[light];
-  result_ = svbsp::generate_shadows(*bsp_, scene, light_, merge_siblings_,
-                                    svbsp::far_side_of(*solids_, scene, light_));
+  result_ = svbsp::generate_shadows(
+      *bsp_, scene, light_, generator_,
+      far_side_ ? svbsp::far_side_of(*solids_, scene, light_) : svbsp::FarSide{},
+      convex_solids_ ? &*convex_solids_ : nullptr);
   if (shadowed_only_) {  // §6: one light at a time, the lit fragments are thrown away
     std::erase_if(result_.fragments, [](const svbsp::Fragment& f) { return f.lit; });
   }
@@ -61,6 +82,7 @@ MethodCounters SvbspMethod::counters() const {
   return {{"bsp_nodes", double(bsp_ ? bsp_->node_count() : 0)},
           {"bsp_pieces", double(bsp_ ? bsp_->piece_count() : 0)},
           {"bsp_splits", double(bsp_ ? bsp_->split_count() : 0)},
+          {"convex_units", double(bsp_ ? bsp_->solid_count() : 0)},
           {"input_polygons", double(input_polygons_)},
           {"front_facing_polygons", double(front_facing_.polygons)},
           {"front_facing_edges", double(front_facing_.edges)},

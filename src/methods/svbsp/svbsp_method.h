@@ -3,6 +3,7 @@
 #include <optional>
 #include <vector>
 
+#include "convex_solids.h"
 #include "scene_bsp.h"
 #include "shadow_generator.h"
 #include "shadowkit/methods/shadow_method.h"
@@ -11,12 +12,14 @@ namespace shadowkit::svbsp {
 
 /// \brief Chin & Feiner 1989: a scene BSP tree built once (prepare), per light an SVBSP
 /// tree grown from the light-facing pieces in front-to-back order, which splits every piece
-/// into lit and shadowed fragments (build; pieces on the far side of their solid are
-/// shadowed whole, OutwardSolids); the mask renders the lit fragments with the
-/// shared scan converter (shade). Option shadowed_only=1 (§6): keep only the shadowed
-/// fragments and draw them over the lit faces; the same mask but at a rare pixel on a
-/// face's outline (see shade_fragments), less memory. Option merge_siblings=0 turns off
-/// §6's merging of sibling fragments in the same state (for measuring it).
+/// into lit and shadowed fragments (build); the mask renders the lit fragments with the
+/// shared scan converter (shade). Settings (docs/methods/svbsp.md): paper=1 runs Figs. 3
+/// and 4 as written, one-sided and with none of §6's refinements; each refinement has its
+/// own switch: far_side (pieces on the far side of their solid shadowed whole,
+/// OutwardSolids), contour_planes (convex solids filtered as units, ConvexSolids),
+/// skip_edges_in_tree, merge_siblings, whole_pieces, and shadowed_only (keep only the
+/// shadowed fragments and draw them over the lit faces; the same mask but at a rare pixel on
+/// a face's outline, see shade_fragments; less memory).
 class SvbspMethod final : public ShadowMethod {
  public:
   explicit SvbspMethod(const MethodOptions& options);
@@ -33,10 +36,13 @@ class SvbspMethod final : public ShadowMethod {
   const std::vector<svbsp::Fragment>& fragments() const { return result_.fragments; }
 
  private:
+  svbsp::GeneratorSettings generator_;
+  bool far_side_ = true;
+  bool contour_planes_ = false;
   bool shadowed_only_ = false;
-  bool merge_siblings_ = true;
   std::optional<svbsp::SceneBsp> bsp_;
   std::optional<svbsp::OutwardSolids> solids_;
+  std::optional<svbsp::ConvexSolids> convex_solids_;  ///< with contour_planes only
   Light light_;
   svbsp::LightFragments result_;
   // Table 1's columns for the last light.

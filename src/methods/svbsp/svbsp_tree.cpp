@@ -1,5 +1,6 @@
 #include "svbsp_tree.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -22,23 +23,9 @@ bool make_shadow_plane(const Light& light, Vec3 a, Vec3 b, Vec3 inside, ShadowPl
   return true;
 }
 
-// The shadow volume of a lit fragment as a chain of its shadow planes (buildSVBSPtree of
-// Fig. 4 for a convex polygon): outside any plane is OUT, inside all of them IN.
-std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p) {
-  Vec3 centroid;
-  for (const Vec3& v : p.vertices) centroid += v;
-  centroid = centroid / double(p.vertices.size());
-  const std::size_t n = p.vertices.size();
+std::int32_t SvbspTree::chain(std::span<const ShadowPlane> planes) {
   std::int32_t first = kIn, last = -1;
-  bool undefined = false;
-  for (std::size_t i = 0; i < n; ++i) {
-    // §6: an edge in a plane that already bounds this cell needs no plane of its own.
-    if (p.edge_in_tree[i]) continue;
-    ShadowPlane s;
-    if (!make_shadow_plane(light_, p.vertices[i], p.vertices[(i + 1) % n], centroid, s)) {
-      undefined = true;
-      continue;
-    }
+  for (const ShadowPlane& s : planes) {
     const std::int32_t index = std::int32_t(nodes_.size());
     nodes_.push_back({s, kOut, kIn});
     if (last >= 0)
@@ -47,20 +34,71 @@ std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p) {
       first = index;
     last = index;
   }
+  return first;
+}
+
+// The shadow volume of a lit fragment as a chain of its shadow planes (buildSVBSPtree of
+// Fig. 4 for a convex polygon).
+std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p) {
+  Vec3 centroid;
+  for (const Vec3& v : p.vertices) centroid += v;
+  centroid = centroid / double(p.vertices.size());
+  const std::size_t n = p.vertices.size();
+  absl::InlinedVector<ShadowPlane, ConvexPolygon::kInlineCorners> planes;
+  bool undefined = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    // §6: an edge in a plane that already bounds this cell needs no plane of its own.
+    if (skip_edges_in_tree_ && p.edge_in_tree[i]) continue;
+    ShadowPlane s;
+    if (make_shadow_plane(light_, p.vertices[i], p.vertices[(i + 1) % n], centroid, s)) {
+      planes.push_back(s);
+    } else {
+      undefined = true;
+    }
+  }
   // Every edge on the cell's walls: the volume fills the cell. No plane at all because the
   // fragment is degenerate: it casts nothing.
-  return first == kIn && undefined ? kOut : first;
+  return planes.empty() && undefined ? kOut : chain(planes);
 }
 
-void SvbspTree::filter(const ConvexPolygon& p, std::vector<Fragment>* out, bool enlarge) {
-  descend(p, -1, false, out, enlarge);
-}
-
-void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive,
-                        std::vector<Fragment>* out, bool enlarge) {
-  const auto slot = [&](std::int32_t node, bool pos) -> std::int32_t& {
-    return node < 0 ? root_ : (pos ? nodes_[node].positive : nodes_[node].negative);
+void SvbspTree::enlarge_by_contour(std::vector<Landing> landings,
+                                   std::span<const ShadowPlane> contour) {
+  const auto leaf = [](const Landing& l) { return std::pair(l.parent, l.positive); };
+  std::sort(landings.begin(), landings.end(),
+            [&](const Landing& a, const Landing& b) { return leaf(a) < leaf(b); });
+  const auto holds = [this](const Plane& plane, Vec3 a, Vec3 b) {
+    return std::abs(plane.distance(a)) <= eps_ && std::abs(plane.distance(b)) <= eps_;
   };
+  std::vector<char> used(contour.size());
+  std::vector<ShadowPlane> walls;
+  for (std::size_t i = 0; i < landings.size();) {
+    std::fill(used.begin(), used.end(), 0);
+    std::size_t end = i;
+    for (; end < landings.size() && leaf(landings[end]) == leaf(landings[i]); ++end) {
+      const ConvexPolygon& f = landings[end].fragment;
+      const std::size_t n = f.vertices.size();
+      for (std::size_t e = 0; e < n; ++e) {
+        if (skip_edges_in_tree_ && f.edge_in_tree[e]) continue;  // §6: a wall of the cell
+        for (std::size_t k = 0; k < contour.size(); ++k) {
+          used[k] = used[k] || holds(contour[k].plane, f.vertices[e], f.vertices[(e + 1) % n]);
+        }
+      }
+    }
+    walls.clear();
+    for (std::size_t k = 0; k < contour.size(); ++k) {
+      if (used[k]) walls.push_back(contour[k]);
+    }
+    // No contour edge in the leaf: the silhouette's cone holds all of it.
+    slot(landings[i].parent, landings[i].positive) = chain(walls);
+    i = end;
+  }
+}
+
+std::int32_t& SvbspTree::slot(std::int32_t parent, bool positive) {
+  return parent < 0 ? root_ : (positive ? nodes_[parent].positive : nodes_[parent].negative);
+}
+
+void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive, const Sinks& sinks) {
   std::int32_t at = slot(parent, positive);
   ConvexPolygon negative_part, positive_part;
   // Down the tree, splitting at each node the piece spans (Fig. 4).
@@ -78,10 +116,11 @@ void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive,
     const bool has_pos = !positive_part.vertices.empty();
     if (has_neg && has_pos) {
       // Each side in its own subtree; the tree may grow (and nodes_ move) meanwhile.
+      std::vector<Fragment>* out = sinks.out;
       const std::size_t first = out ? out->size() : 0;
       const std::int32_t node = at;
-      descend(std::move(negative_part), node, false, out, enlarge);
-      descend(std::move(positive_part), node, true, out, enlarge);
+      descend(std::move(negative_part), node, false, sinks);
+      descend(std::move(positive_part), node, true, sinks);
       // §6: two sibling fragments in the same state are the polygon before the split. The
       // pieces are exactly its halves (the cut shares its points), so no area changes; the
       // verdicts and the tree are those of the halves.
@@ -98,11 +137,9 @@ void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive,
     at = has_pos ? nodes_[at].positive : nodes_[at].negative;
   }
   const bool lit = at == kOut;
-  if (lit && enlarge) {
-    const std::int32_t volume = shadow_volume(p);
-    slot(parent, positive) = volume;
-  }
-  if (out) out->push_back({std::move(p), lit});
+  if (lit && sinks.enlarge) slot(parent, positive) = shadow_volume(p);
+  if (lit && sinks.landings) sinks.landings->push_back({parent, positive, p});
+  if (sinks.out) sinks.out->push_back({std::move(p), lit});
 }
 
 }  // namespace shadowkit::svbsp

@@ -2,6 +2,7 @@
 // The shadow volume BSP tree of one light (§4): internal nodes are shadow planes, leaves are
 // IN (inside the merged shadow volume) and OUT cells.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "convex_polygon.h"
@@ -22,6 +23,14 @@ struct ShadowPlane {
   Plane plane;
 };
 
+/// \brief A lit fragment and the OUT leaf it reached, named by its parent node (-1: the root)
+/// and side, as they stood before any volume replaced a leaf.
+struct Landing {
+  std::int32_t parent = -1;
+  bool positive = false;
+  ConvexPolygon fragment;
+};
+
 /// The shadow plane of edge \p a -> \p b of a polygon whose interior holds \p inside, or
 /// nothing when the edge points at the light (the plane is undefined).
 bool make_shadow_plane(const Light& light, Vec3 a, Vec3 b, Vec3 inside, ShadowPlane& out);
@@ -34,19 +43,36 @@ class SvbspTree {
   /// \p merge_siblings (§6, after Thibault and Naylor): where a node splits a polygon and
   /// each side yields one fragment with the same verdict, the two give way to the unsplit
   /// polygon (convex, and their union: they share the cut edge).
-  SvbspTree(const Light& light, double eps, bool merge_siblings = true)
-      : light_(light), eps_(eps), merge_siblings_(merge_siblings) {}
+  /// \p skip_edges_in_tree (§6): an edge lying in a plane that already bounds the cell gets
+  /// no plane of its own.
+  SvbspTree(const Light& light, double eps, bool merge_siblings = true,
+            bool skip_edges_in_tree = true)
+      : light_(light),
+        eps_(eps),
+        merge_siblings_(merge_siblings),
+        skip_edges_in_tree_(skip_edges_in_tree) {}
 
   /// determineShadow of Fig. 4: filters \p p down the tree, appends its shadowed (IN) and
   /// lit (OUT) fragments to \p out, and replaces each OUT cell reached by the shadow volume
   /// of the fragment that reached it.
   void determine_shadow(const ConvexPolygon& p, std::vector<Fragment>& out) {
-    filter(p, &out, true);
+    descend(p, -1, false, {&out, true, nullptr});
   }
-  /// Fig. 4 without enlarging the tree: the verdicts only.
-  void classify(const ConvexPolygon& p, std::vector<Fragment>& out) { filter(p, &out, false); }
+  /// Fig. 4 without enlarging the tree: the verdicts only; with \p landings, where each lit
+  /// fragment landed, for enlarge_by_contour().
+  void classify(const ConvexPolygon& p, std::vector<Fragment>& out,
+                std::vector<Landing>* landings = nullptr) {
+    descend(p, -1, false, {&out, false, landings});
+  }
   /// Enlarging only: unions the shadow volume of \p p into the tree.
-  void enlarge(const ConvexPolygon& p) { filter(p, nullptr, true); }
+  void enlarge(const ConvexPolygon& p) { descend(p, -1, false, {nullptr, true, nullptr}); }
+  /// §6, contour edges only: replaces the OUT leaf of each landing by the volume bounded by
+  /// those of \p contour that hold an edge of a fragment landed there. Exact when the
+  /// landings are those of the faces of one convex solid turned to the light, classified
+  /// before any of them enlarged the tree (ConvexSolids): in each leaf their fragments' union
+  /// is the leaf's share of the solid's silhouette cone, and the contour planes along its
+  /// edges are the only walls it adds.
+  void enlarge_by_contour(std::vector<Landing> landings, std::span<const ShadowPlane> contour);
 
   std::size_t node_count() const { return nodes_.size(); }
   std::size_t memory_bytes() const { return nodes_.capacity() * sizeof(Node); }
@@ -57,15 +83,24 @@ class SvbspTree {
     ShadowPlane shadow_plane;
     std::int32_t negative = kOut, positive = kOut;
   };
-  void filter(const ConvexPolygon& p, std::vector<Fragment>* out, bool enlarge);
+  // Where a filtered polygon's fragments go: the verdicts, the tree grown by each lit
+  // fragment's volume, the lit fragments' leaves.
+  struct Sinks {
+    std::vector<Fragment>* out;
+    bool enlarge;
+    std::vector<Landing>* landings;
+  };
   // Filters \p p from the slot (parent node, side; parent -1: the root) down to the leaves.
-  void descend(ConvexPolygon p, std::int32_t parent, bool positive, std::vector<Fragment>* out,
-               bool enlarge);
+  void descend(ConvexPolygon p, std::int32_t parent, bool positive, const Sinks& sinks);
+  std::int32_t& slot(std::int32_t parent, bool positive);
   std::int32_t shadow_volume(const ConvexPolygon& p);
+  // Links \p planes into one volume: outside any of them OUT, inside all of them IN.
+  std::int32_t chain(std::span<const ShadowPlane> planes);
 
   Light light_;
   double eps_;
   bool merge_siblings_;
+  bool skip_edges_in_tree_;
   std::int32_t root_ = kOut;
   std::vector<Node> nodes_;
 };

@@ -119,8 +119,10 @@ struct Totals {
   std::map<std::uint32_t, FaceAreas> areas;
 };
 Totals totals(const Scene& scene, std::size_t light, bool merge) {
+  GeneratorSettings settings;
+  settings.merge_siblings = merge;
   const LightFragments r =
-      generate_shadows(SceneBsp::build(scene), scene, scene.lights[light], merge);
+      generate_shadows(SceneBsp::build(scene), scene, scene.lights[light], settings);
   return {r.fragments.size(), face_areas(r.fragments)};
 }
 
@@ -178,8 +180,9 @@ TEST(Svbsp, ClosedCubeGetsPlanesForItsContourAndOnePerInteriorEdge) {
   // Three faces of the cube see the light: six contour edges, three interior ones, twelve
   // edges in all. A face filtered after its neighbour finds their common edge already in a
   // plane of its cell and adds none for it; the first face of each pair still needs that
-  // plane, as what is filtered after it is not shadowed beyond the edge (docs/methods/svbsp.md:
-  // contour-only planes are unsound in a capless SVBSP tree).
+  // plane, as what is filtered after it is not shadowed beyond the edge: a face's contour
+  // edges alone bound no volume of its own in a capless SVBSP tree. The solid filtered as a
+  // unit does (SvbspContourPlanes.ACubeAddsItsSixContourPlanesOnly).
   const Scene scene = testing::make_scene(kCamera, {testing::point_light({4, 9, 5})},
                                           {testing::box({-1, 1, -1}, {1, 3, 1})});
   const LightFragments r = light_fragments(scene, 0);
