@@ -27,8 +27,11 @@ std::vector<SettingInfo> method_settings(std::string_view method) {
     return {{"resolution", "0", {}, "0 (automatic) or entries up to 1e6"},
             {"saturated", "1", flag, ""}};
   }
-  if (method == "svbsp") {
-    return {{"shadowed_only", "0", flag, ""}, {"merge_siblings", "1", flag, ""}};
+  if (method == "svbsp") {  // "": 1, or 0 with paper=1
+    return {{"paper", "0", flag, ""},         {"contour_planes", "0", flag, ""},
+            {"far_side", "", flag, ""},       {"skip_edges_in_tree", "", flag, ""},
+            {"shadowed_only", "0", flag, ""}, {"merge_siblings", "", flag, ""},
+            {"whole_pieces", "", flag, ""}};
   }
   if (method == "voxel") {
     return {{"resolution", "256", {}, "a power of two, 16..2048"},

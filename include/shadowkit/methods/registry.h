@@ -14,8 +14,8 @@ std::vector<std::string> method_names();
 
 /// \brief One method setting as the viewer offers it (docs/commands.md, "Method settings").
 struct SettingInfo {
-  std::string key;                   ///< without the method's prefix
-  std::string fallback;              ///< the value when the setting is not given; "" automatic
+  std::string key;       ///< without the method's prefix
+  std::string fallback;  ///< the value when the setting is not given; "": chosen by others
   std::vector<std::string> choices;  ///< the values it takes; empty: a number in a range
   std::string range;                 ///< the range of a number, as the docs give it
 };

@@ -449,6 +449,7 @@ function showSettings() {
       let input;
       if (s.choices.length) {
         input = document.createElement('select');
+        if (!s.default) input.append(new Option('(default)', ''));
         for (const c of s.choices) input.append(new Option(c + (c === s.default ? ' (default)' : ''), c));
         input.value = values[s.key] ?? s.default;
       } else {
