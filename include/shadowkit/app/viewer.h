@@ -16,6 +16,7 @@
 #include "shadowkit/app/sun_hours.h"
 #include "shadowkit/core/context.h"
 #include "shadowkit/methods/shadow_method.h"
+#include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/scene.h"
 
 namespace shadowkit::viewer {
@@ -105,6 +106,8 @@ class FrameRenderer {
   const SceneView scene_view_;
   SceneView view_;  ///< the view in scene_, in world coordinates
   Context ctx_;
+  VisibleSurfaceBuffer surfaces_;          ///< the camera pass of ...
+  std::optional<Camera> surfaces_camera_;  ///< ... this camera (world coordinates)
   std::vector<PreparedMethod> methods_;
   std::uint64_t view_count_ = 0;
   std::uint64_t frame_count_ = 0;

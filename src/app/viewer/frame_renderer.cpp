@@ -109,7 +109,13 @@ std::optional<Frame> FrameRenderer::render(const FrameRequest& request,
     view_ = request.view;
     ++view_count_;
   }
-  const VisibleSurfaceBuffer surfaces = render_visible_surfaces(scene_, ctx_);
+  // A moved light leaves the camera pass as it was: only a new camera draws it again.
+  if (!surfaces_camera_ || !(*surfaces_camera_ == request.view.camera)) {
+    surfaces_camera_.reset();
+    render_visible_surfaces(scene_, ctx_, surfaces_);
+    surfaces_camera_ = request.view.camera;
+  }
+  const VisibleSurfaceBuffer& surfaces = surfaces_;
   info["scan_ms"] = clock.lap();
 
   ShadowMethod& method = prepared(request.method, request.settings);

@@ -92,6 +92,10 @@ TEST(FrameRenderer, ANewViewIsRenderedAsAFreshSceneWould) {
     const std::string before = renderer.render(request_for(first, method))->png;
     EXPECT_EQ(renderer.render(request_for(second, method))->png, render_png(second, method));
     EXPECT_EQ(renderer.render(request_for(first, method))->png, before);  // and back
+    SceneView light_moved = first;  // the camera pass is kept, the light is not
+    light_moved.lights[0] = Light::point(first.camera.look_at + Vec3{-3, 5, 2});
+    EXPECT_EQ(renderer.render(request_for(light_moved, method))->png,
+              render_png(light_moved, method));
   }
 }
 
