@@ -14,6 +14,9 @@ namespace shadowkit::viewer {
 
 using Server = websocketpp::server<websocketpp::config::asio>;
 
+// Frames a connection may have waiting to be sent: a few seconds of 1280x720 frames.
+constexpr std::size_t kMaxBufferedBytes = 64 << 20;
+
 struct FrameStream::Impl {
   Server server;
   Handlers handlers;
@@ -116,7 +119,14 @@ void FrameStream::send(Connection connection, std::string bytes) {
     hdl = it->second;
   }
   std::error_code ec;  // a connection closing meanwhile is no error of ours
-  s.server.send(hdl, bytes.data(), bytes.size(), websocketpp::frame::opcode::binary, ec);
+  const Server::connection_ptr con = s.server.get_con_from_hdl(hdl, ec);
+  if (ec) return;
+  // A client that asks and never reads would have its frames pile up here without bound.
+  if (con->get_buffered_amount() > kMaxBufferedBytes) {
+    con->close(websocketpp::close::status::policy_violation, "frames not read", ec);
+    return;
+  }
+  con->send(bytes.data(), bytes.size(), websocketpp::frame::opcode::binary);
 }
 
 }  // namespace shadowkit::viewer
