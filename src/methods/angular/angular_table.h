@@ -26,11 +26,11 @@ struct HiddenFace {
 };
 
 /// \brief theta quantized to R integer entries (Sec. 3): entry k holds theta in
-/// [lower(k), lower(k + 1)) and is sampled at its centre. One table over the turn: entries of
-/// equal width step from theta_min. Two hemispheres (Sec. 11.2): R / 2 entries on each side of
-/// the light's XY plane (theta = +-pi/2), each hemisphere's theta' (eq. 2, in (-pi/2, pi/2))
-/// taken uniformly in tan(kappa theta'): finer near theta' = +-pi/2, as eq. 4 asks, up to
-/// 1 + kHemisphereTan^2 times.
+/// [lower(k), lower(k + 1)) and is sampled at its centre. By default entries of equal width
+/// step from theta_min. With hemispheres (Sec. 11.2), R / 2 entries lie on each side of the
+/// light's XY plane (theta = +-pi/2), uniform in tan(kappa theta') of each hemisphere's
+/// theta' (eq. 2, in (-pi/2, pi/2)): finer towards theta' = +-pi/2, where eq. 4 asks for
+/// more, up to 1 + kHemisphereTan^2 times.
 struct ThetaQuantization {
   double theta_min = 0, step = 1;
   int resolution = 1;
@@ -65,8 +65,8 @@ struct ThetaQuantization {
 };
 
 /// Sec. 11.2's variable resolution: tan(kappa pi / 2), the largest warped tan. Entries at
-/// theta' = +-pi/2 are 1 + 7 = 8 times finer than at theta' = 0, as many as the automatic R's
-/// cap of 8 entries per scan line allows.
+/// theta' = +-pi/2 are 1 + 7 = 8 times finer than at theta' = 0: the same ratio as the
+/// automatic R's cap of 8 entries per scan line.
 inline const double kHemisphereTan = std::sqrt(7.0);
 
 struct DepthForm;  // an occluding face's depth along a slice's rays, while the table is built
