@@ -4,7 +4,8 @@
 the exact assists (angular.exact=1, the default) and without them (exact=0, the discretized
 method as published); R from eq. 4 as written (resolution=eq4) against the automatic R; and,
 with the light inside the room, one table over the turn against Sec. 11.2's two hemispheres
-(angular.light_inside).
+(angular.light_inside); and each of these settings on every built-in, example and sweep
+scene.
 
     python3 scripts/papers/angular_r_sweep.py [--repeats N] [--out FILE]
 
@@ -109,6 +110,34 @@ def light_inside(repeats):
     return lines
 
 
+def every_scene():
+    builtin = ["cubes:2000", "tetra:3", "tetra:4", "room", "table", "three-lights", "square",
+               "coil", "holed", "hole-like"]
+    examples = sorted(str(p.relative_to(ROOT)) for p in (ROOT / "examples").glob("*.json")
+                      if p.name != "knot-600k.json")
+    sweep = sorted(str(p.relative_to(ROOT)) for p in (ROOT / "examples" / "sweep").glob("*.json"))
+    return builtin + examples + sweep
+
+
+def modes_everywhere():
+    """Each setting's worst light on every built-in, example and sweep scene."""
+    modes = [("default", {}), ("`exact=0`", {"exact": 0}), ("`resolution=eq4`",
+             {"resolution": "eq4"}), ("`light_inside=hemispheres`", {"light_inside": "hemispheres"}),
+             ("all three", {"exact": 0, "resolution": "eq4", "light_inside": "hemispheres"})]
+    lines = ["| scene |" + "".join(f" {m} |" for m, _ in modes), "|---|" + "---:|" * len(modes)]
+    worst = {m: (0.0, "") for m, _ in modes}
+    for scene in every_scene():
+        cells = []
+        for mode, settings in modes:
+            pct, _ = compare(scene, settings)
+            worst[mode] = max(worst[mode], (pct, scene))
+            cells.append(f" {pct:.4f} |")
+        lines.append(f"| `{scene}` |" + "".join(cells))
+    summary = ["Worst interior mismatch (%): " + "; ".join(
+        f"{m} {p:.4f} (`{s}`)" for m, (p, s) in worst.items()) + "."]
+    return summary + [""] + lines
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--repeats", type=int, default=9)
@@ -118,6 +147,8 @@ def main():
             "size; for the automatic R and eq4, each light's R:", ""] + r_sweep()
     body += ["", "The light inside the room, summed over its lights (times: medians of "
              f"{args.repeats} runs):", ""] + light_inside(args.repeats)
+    body += ["", "Each setting on every built-in, example and sweep scene, worst light, at the "
+             "automatic R unless eq4:", ""] + modes_everywhere()
     page = pathlib.Path(args.out)
     text = page.read_text()
     start, end = text.index(BEGIN) + len(BEGIN), text.index(END)
