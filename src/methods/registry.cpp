@@ -24,8 +24,10 @@ std::vector<SettingInfo> method_settings(std::string_view method) {
   }
   if (method == "volume") return {{"count", "auto", {"auto", "pass", "fail"}, ""}};
   if (method == "angular") {
-    return {{"resolution", "0", {}, "0 (automatic) or entries up to 1e6"},
-            {"saturated", "1", flag, ""}};
+    return {{"resolution", "0", {}, "0 (automatic), eq4, or entries up to 1e6"},
+            {"saturated", "1", flag, ""},
+            {"exact", "1", flag, ""},
+            {"light_inside", "turn", {"turn", "hemispheres"}, ""}};
   }
   if (method == "svbsp") {  // "": 1, or 0 with paper=1
     return {{"paper", "0", flag, ""},         {"contour_planes", "0", flag, ""},

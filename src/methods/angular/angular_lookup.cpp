@@ -27,8 +27,9 @@ LookupResult lookup_in(const AngularTable& table, const PairLists& lists, int k,
     if (h.face == query.face) return false;  // a planar face never shadows itself
     const double change = run.crossing(h.plane, query.column);
     if (h.behind(query.local, query.depth_tolerance) &&
-        table.reaches_front_of(pair.hidden, query.face_plane, query.face_light_side,
-                               query.depth_tolerance)) {
+        (!query.cull_faces_behind ||
+         table.reaches_front_of(pair.hidden, query.face_plane, query.face_light_side,
+                                query.depth_tolerance))) {
       const double end = run.phi_crossing(up ? pair.phi_end : pair.phi_begin, query.column);
       next_x = std::min(end, change);
       return true;

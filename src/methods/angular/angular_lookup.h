@@ -27,6 +27,9 @@ struct LookupQuery {
   double column = 0;           ///< its pixel column on the scan line
   bool phi_increasing = true;  ///< phi grows with the column along this run
   double depth_tolerance = 0;  ///< distance from a hidden face's plane still counted on it
+  /// Skip faces wholly behind the point's face (AngularTable::reaches_front_of), an exact
+  /// assist the papers do not have (angular.exact).
+  bool cull_faces_behind = true;
 };
 
 /// Sec. 7: scans entry theta's pairs holding phi, stops at the first pair that shadows the

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
+#include <string>
 
 #include "angular_lookup.h"
 #include "occluders.h"
@@ -16,19 +18,51 @@
 
 namespace shadowkit::angular {
 
-AngularMethod::AngularMethod(const MethodOptions& options) {
-  options.expect_only("angular", {"resolution", "saturated"});
-  const double r = options.number("resolution", 0);
-  if (r < 0 || r != std::floor(r) || r > 1e6) {
+namespace {
+
+// A 0/1 setting.
+bool flag(const MethodOptions& options, const std::string& key, bool fallback) {
+  const double value = options.number(key, fallback ? 1 : 0);
+  if (value != 0 && value != 1) {
+    throw InputError("option 'angular." + key + "'", "expected 0 or 1");
+  }
+  return value == 1;
+}
+
+// angular.resolution: R, 0 (automatic: the view's scan-line step), or eq4 (Sec. 3, eq. 4 as
+// written).
+void parse_resolution(const MethodOptions& options, AngularTableOptions& table) {
+  const std::string text = options.text("resolution", "0");
+  if (text == "eq4") {
+    table.eq4 = true;
+    return;
+  }
+  char* end = nullptr;
+  const double r = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || r < 0 || r != std::floor(r) || r > 1e6) {
     throw InputError("option 'angular.resolution'",
-                     "expected a whole number of theta entries, 0 (automatic) to 1000000");
+                     "expected a whole number of theta entries, 0 (automatic) to 1000000, or eq4");
   }
-  table_options_.resolution = int(r);
-  const double saturated = options.number("saturated", 1);
-  if (saturated != 0 && saturated != 1) {
-    throw InputError("option 'angular.saturated'", "expected 0 or 1");
+  table.resolution = int(r);
+}
+
+// angular.light_inside: one table over the turn, or Sec. 11.2's two hemispheres.
+bool hemispheres(const MethodOptions& options) {
+  const std::string value = options.text("light_inside", "turn");
+  if (value != "turn" && value != "hemispheres") {
+    throw InputError("option 'angular.light_inside'", "expected turn or hemispheres");
   }
-  table_options_.saturated = saturated == 1;
+  return value == "hemispheres";
+}
+
+}  // namespace
+
+AngularMethod::AngularMethod(const MethodOptions& options) {
+  options.expect_only("angular", {"resolution", "saturated", "exact", "light_inside"});
+  parse_resolution(options, table_options_);
+  table_options_.saturated = flag(options, "saturated", true);
+  table_options_.hemispheres = hemispheres(options);
+  exact_ = flag(options, "exact", true);
 }
 
 void AngularMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
@@ -42,8 +76,8 @@ void AngularMethod::build(const Scene& scene, std::size_t light, const Context& 
   boundaries_ = ThetaBoundaries(*frame_, table_.theta());
   depth_tolerance_ = 1e-7 * std::max(box.diagonal(), 1e-12);
   // A block's boundary planes bound it only while it spans less than half a turn.
-  block_runs_ =
-      !table_.blocks().start.empty() && kBlockEntries * table_.theta().step < std::numbers::pi / 2;
+  block_runs_ = !table_.blocks().start.empty() &&
+                kBlockEntries * table_.theta().widest() < std::numbers::pi / 2;
   lookup_calls_ = 0;
 }
 
@@ -87,6 +121,7 @@ int AngularMethod::extend_run(const ScanLineRun& run, const LookupQuery& query, 
   // plane: the shadowing face's shadow mostly ends there too.
   if (!left_entry) return stop;
   if (result.shadowed) {
+    if (!exact_) return stop;
     // The face that shadows the point may shadow the run further.
     const std::optional<double> exact =
         exact_shadow_end(table_, *frame_, run, query, result.hidden);
@@ -145,7 +180,8 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
       query.column = x;
       query.phi_increasing = run.phi_increasing(x);
       query.depth_tolerance = depth_tolerance_;
-      const LookupResult result = grazed(query, frame_->point_light())
+      query.cull_faces_behind = exact_;
+      const LookupResult result = exact_ && grazed(query, frame_->point_light())
                                       ? lookup_grazing(table_, *frame_, run, query, k)
                                       : lookup(table_, run, query);
       lookups += std::size_t(result.lookups);

@@ -12,9 +12,9 @@
 namespace shadowkit::angular {
 
 /// \brief Per light: the RE loops sliced into a table indexed by the scan-line angle theta
-/// (option `resolution` = R, 0 or absent: eq. 4; `saturated` = 0 keeps covered pairs, Sec.
-/// 10); per scan line: one lookup per run of pixels, the answer held until nextX or the
-/// maximum run length of eq. 7.
+/// (option `resolution` = R, 0 or absent: automatic, eq4: eq. 4 as written; `saturated` = 0
+/// keeps covered pairs, Sec. 10; `exact` = 0 drops the exact assists); per scan line: one
+/// lookup per run of pixels, the answer held until nextX or the maximum run length of eq. 7.
 class AngularMethod final : public ShadowMethod {
  public:
   explicit AngularMethod(const MethodOptions& options);
@@ -61,6 +61,9 @@ class AngularMethod final : public ShadowMethod {
   AngularTableBuffers table_buffers_;
   ThetaBoundaries boundaries_;
   double depth_tolerance_ = 0;
+  /// The exact assists the papers do not have: faces wholly behind a receiver culled,
+  /// grazed faces re-checked, shadowed runs extended by their face's exact shadow.
+  bool exact_ = true;
   bool block_runs_ = false;  ///< runs may be answered across a block of entries
   double lookup_calls_ = 0;
 };

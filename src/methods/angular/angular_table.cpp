@@ -196,11 +196,17 @@ void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& fra
   }
 }
 
+// kappa of ThetaQuantization: tan(kappa pi / 2) = kHemisphereTan.
+double hemisphere_kappa() {
+  return 2 * std::atan(kHemisphereTan) / kPi;
+}
+
 // Sec. 3: theta from the global minimum to the global maximum over the RE loops (the whole
 // turn when they go around the light), cut to the theta the camera can see (eq. 4's range
 // "based on the view volume"), in R entries.
-ThetaQuantization quantize(const Scene& scene, const std::vector<ObjectLoops>& objects,
-                           const ViewTheta& view, double scan_line, int resolution) {
+ThetaQuantization quantize(const Scene& scene, const LightFrame& frame,
+                           const std::vector<ObjectLoops>& objects, const ViewTheta& view,
+                           double view_scale, const AngularTableOptions& options) {
   ThetaQuantization q;
   double lo = kInf, hi = -lo;
   for (const ObjectLoops& o : objects) {
@@ -209,7 +215,9 @@ ThetaQuantization quantize(const Scene& scene, const std::vector<ObjectLoops>& o
     hi = std::max(hi, o.theta_hi);
   }
   if (q.full_turn) lo = -kPi, hi = kPi;
-  if (view.bounded) {
+  // Sec. 11.2 splits the turn at the light's XY plane, which the view's cut would not keep.
+  q.hemispheres = q.full_turn && options.hemispheres;
+  if (view.bounded && !q.hemispheres) {
     q.full_turn = false;
     lo = std::max(lo, view.lo);
     hi = std::min(hi, view.hi);
@@ -220,13 +228,43 @@ ThetaQuantization quantize(const Scene& scene, const std::vector<ObjectLoops>& o
     lo -= pad, hi += pad;
   }
   const double range = std::max(hi - lo, 1e-12);
-  q.resolution = resolution > 0 ? resolution : automatic_resolution(scene, scan_line, range);
+  if (options.resolution > 0) {
+    q.resolution = options.resolution;
+  } else if (options.eq4) {
+    q.resolution = eq4_resolution(scene, view_scale, lo, hi, frame.point_light());
+  } else {
+    q.resolution = automatic_resolution(scene, view_scale, range);
+  }
+  // Each hemisphere's entries split at theta' = 0 too, R / 4 to a side: the XY plane, where
+  // Sec. 11.2 splits the loops, then falls between entries.
+  if (q.hemispheres) q.resolution = (q.resolution + 3) / 4 * 4;
   q.step = range / q.resolution;
   q.theta_min = lo;
   return q;
 }
 
 }  // namespace
+
+// Hemisphere h (0: in front of the light, F > 0; 1 behind it, and -1 a turn lower) holds
+// theta in [h pi - pi/2, h pi + pi/2); theta' = theta - h pi is eq. 2's angle within it.
+// Position: R / 4 at theta = -pi/2, so that theta in [-pi, pi] maps to [0, R].
+double ThetaQuantization::hemisphere_position(double theta) const {
+  const double h = std::floor((theta + kPi / 2) / kPi);
+  const double w = std::tan(hemisphere_kappa() * (theta - h * kPi)) / kHemisphereTan;
+  return (h + (w + 1) / 2) * (resolution / 2.0) + resolution / 4.0;
+}
+
+double ThetaQuantization::hemisphere_theta(double p) const {
+  const double u = (p - resolution / 4.0) / (resolution / 2.0);
+  const double h = std::floor(u);
+  const double w = 2 * (u - h) - 1;
+  return h * kPi + std::atan(w * kHemisphereTan) / hemisphere_kappa();
+}
+
+double ThetaQuantization::widest() const {
+  // d theta' / d p is largest at w = 0: (4 / R) kHemisphereTan / kappa.
+  return hemispheres ? 4 * kHemisphereTan / (hemisphere_kappa() * resolution) : step;
+}
 
 // A plane's depth along the rays of a slice as a linear form in (phi, u, v): for a point
 // light the inverse depth 1 / t = (a.x phi + a.y sin + a.z cos) / -b of the plane
@@ -417,7 +455,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   // and corners (the depth of Sec. 5); eq. 4's inputs from the view.
   Occluders occluders;
   ViewTheta view;
-  double scan_line = 0;
+  double view_scale = 0;  // eq. 4's scale: a scan line's theta, or (eq4) Z_f in scan lines
   tbb::parallel_invoke(
       [&] {
         tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
@@ -427,12 +465,13 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
       [&] { occluders = place_occluders(scene, sheets, frame, objects); },
       [&] {
         view = view_theta(scene, frame);
-        if (options.resolution == 0) scan_line = scan_line_theta(scene, frame);
+        if (options.resolution > 0) return;
+        view_scale = options.eq4 ? farthest_depth(scene, frame) : scan_line_theta(scene, frame);
       });
   table.hidden_ = std::move(occluders.hidden);
   table.corner_start_ = std::move(occluders.corner_start);
   table.corners_ = std::move(occluders.corners);
-  table.theta_ = quantize(scene, objects, view, scan_line, options.resolution);
+  table.theta_ = quantize(scene, frame, objects, view, view_scale, options);
   for (const ObjectLoops& o : objects) {
     table.loop_stats_.ridge_edges += double(o.ridges.size());
     table.loop_stats_.loops += double(o.loops.size());

@@ -26,32 +26,60 @@ struct HiddenFace {
 };
 
 /// \brief theta quantized to R integer entries (Sec. 3): entry k holds theta in
-/// [theta_min + k step, theta_min + (k + 1) step) and is sampled at its centre.
+/// [lower(k), lower(k + 1)) and is sampled at its centre. By default entries of equal width
+/// step from theta_min. With hemispheres (Sec. 11.2), R / 2 entries lie on each side of the
+/// light's XY plane (theta = +-pi/2), uniform in tan(kappa theta') of each hemisphere's
+/// theta' (eq. 2, in (-pi/2, pi/2)): finer towards theta' = +-pi/2, where eq. 4 asks for
+/// more, up to 1 + kHemisphereTan^2 times.
 struct ThetaQuantization {
   double theta_min = 0, step = 1;
   int resolution = 1;
-  bool full_turn = false;  ///< point light whose spans go all around it (light in the scene)
+  bool full_turn = false;    ///< point light whose spans go all around it (light in the scene)
+  bool hemispheres = false;  ///< with full_turn: Sec. 11.2's two variable-resolution halves
 
+  /// The fractional entry position of \p theta (unwrapped: theta + 2 pi is R further).
+  double position(double theta) const {
+    return hemispheres ? hemisphere_position(theta) : (theta - theta_min) / step;
+  }
+  /// The theta at fractional entry position \p p; position's inverse.
+  double theta_at(double p) const {
+    return hemispheres ? hemisphere_theta(p) : theta_min + p * step;
+  }
   /// The unwrapped entry number of \p theta: -1 below the table, R above it.
   int index(double theta) const {
-    return int(std::clamp(std::floor((theta - theta_min) / step), -1.0, double(resolution)));
+    return int(std::clamp(std::floor(position(theta)), -1.0, double(resolution)));
   }
   /// The table entry of unwrapped index \p k; -1 when outside the table.
   int entry(int k) const {
     if (full_turn) return ((k % resolution) + resolution) % resolution;
     return k >= 0 && k < resolution ? k : -1;
   }
-  double lower(int k) const { return theta_min + k * step; }
-  double centre(int k) const { return theta_min + (k + 0.5) * step; }
+  double lower(int k) const { return theta_at(k); }
+  double centre(int k) const { return theta_at(k + 0.5); }
+  /// The theta span of the widest entry (with hemispheres: the ones at theta' = 0).
+  double widest() const;
+
+ private:
+  double hemisphere_position(double theta) const;
+  double hemisphere_theta(double p) const;
 };
+
+/// Sec. 11.2's variable resolution: tan(kappa pi / 2), the largest warped tan. Entries at
+/// theta' = +-pi/2 are 1 + 7 = 8 times finer than at theta' = 0: the same ratio as the
+/// automatic R's cap of 8 entries per scan line.
+inline const double kHemisphereTan = std::sqrt(7.0);
 
 struct DepthForm;  // an occluding face's depth along a slice's rays, while the table is built
 class Saturation;  // Sec. 10's test within one entry, while the table is built
 
 /// \brief What the table is built from and how.
 struct AngularTableOptions {
-  int resolution = 0;     ///< R; 0: eq. 4
+  int resolution = 0;     ///< R; 0: automatic (automatic_resolution, or eq4_resolution)
   bool saturated = true;  ///< Sec. 10: drop pairs another pair of the entry already covers
+  bool eq4 = false;       ///< automatic R by eq. 4 as written, not from the view's scan lines
+  /// Sec. 11.2: a light inside the scene gets two hemisphere halves of variable resolution
+  /// (ThetaQuantization::hemispheres), not one uniform table over the turn.
+  bool hemispheres = false;
 };
 
 /// \brief A pair and the entry it belongs to, while the table is built (24 bytes: no reach).

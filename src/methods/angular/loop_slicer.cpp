@@ -218,8 +218,8 @@ void slice_ridge_edge(const SlicedMesh& m, const RidgeEdge& re, double lo, doubl
   scratch.path.clear();
   // One more entry at each end against rounding (the side test decides), within the table
   // unless it goes all around.
-  const double first = std::floor((lo - q.theta_min) / q.step - 0.5);
-  const double last = std::ceil((hi - q.theta_min) / q.step - 0.5);
+  const double first = std::floor(q.position(lo) - 0.5);
+  const double last = std::ceil(q.position(hi) - 0.5);
   const double end = q.full_turn ? first + q.resolution : q.resolution - 1;
   const int k0 = int(std::max(first, q.full_turn ? first : 0.0));
   const int k1 = int(std::min(last, end));

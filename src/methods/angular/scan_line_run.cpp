@@ -88,7 +88,7 @@ ThetaBoundaries::ThetaBoundaries(const LightFrame& frame, const ThetaQuantizatio
 int ThetaBoundaries::locate(Vec3 v, int guess) const {
   // A plane's side tells theta's side only within half a turn of it.
   constexpr int kReach = 4;
-  if (guess != -2 && (!point_light_ || q_.step * kReach < std::numbers::pi / 2)) {
+  if (guess != -2 && (!point_light_ || q_.widest() * kReach < std::numbers::pi / 2)) {
     int k = guess;
     for (int step = 0; step < kReach; ++step) {
       if (!q_.full_turn && (k < 0 || k >= q_.resolution)) break;

@@ -109,4 +109,30 @@ int automatic_resolution(const Scene& scene, double scan_line, double theta_rang
   return int(std::clamp(theta_range / scan_line, 1.0, 8.0 * scene.camera.height));
 }
 
+double farthest_depth(const Scene& scene, const LightFrame& frame) {
+  const ViewFrustum frustum = view_of(scene);
+  const Camera& camera = scene.camera;
+  double farthest = -1, z_f = 0;
+  for (const SceneObject& object : scene.objects) {
+    for (const Vec3 p : object.mesh.vertices) {
+      if (!frustum.holds(p)) continue;
+      const Vec3 v = frame.local(p);
+      const double r = length(v);
+      if (r <= farthest) continue;
+      farthest = r;
+      // One scan line at the vertex spans its camera depth times the row step.
+      z_f = std::abs(v.z) / (dot(p - camera.position, camera.forward()) * camera.pixel_grid().step);
+    }
+  }
+  return z_f;
+}
+
+int eq4_resolution(const Scene& scene, double z_f, double theta_lo, double theta_hi,
+                   bool point_light) {
+  const double cap = 8.0 * scene.camera.height;
+  if (!point_light || z_f == 0) return scene.camera.height;
+  if (theta_lo <= -std::numbers::pi / 2 || theta_hi >= std::numbers::pi / 2) return int(cap);
+  return int(std::clamp(z_f * (std::tan(theta_hi) - std::tan(theta_lo)), 1.0, cap));
+}
+
 }  // namespace shadowkit::angular

@@ -29,4 +29,17 @@ double scan_line_theta(const Scene& scene, const LightFrame& frame);
 /// the number of scan lines when no vertex is in view.
 int automatic_resolution(const Scene& scene, double scan_line, double theta_range);
 
+/// Eq. 4's Z_f as written: the depth -Z of the vertex in view farthest from the light,
+/// counted in scan lines at that vertex (the paper's coordinates are the screen's); 0 when
+/// no vertex is in view.
+double farthest_depth(const Scene& scene, const LightFrame& frame);
+
+/// \brief Eq. 4 as written: R = Z_f (tan theta_max - tan theta_min), \p z_f as
+/// farthest_depth gives it, over the table's [theta_lo, theta_hi]; for a directional light
+/// the number of scan lines (Sec. 3: "if the light source is far away"). Where the range
+/// reaches theta = +-pi/2, tan diverges (Sec. 11.2's reason for a variable resolution): R is
+/// then the cap, 8 per scan line of the image, as it is wherever eq. 4 exceeds it.
+int eq4_resolution(const Scene& scene, double z_f, double theta_lo, double theta_hi,
+                   bool point_light);
+
 }  // namespace shadowkit::angular
