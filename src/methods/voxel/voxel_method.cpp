@@ -83,7 +83,9 @@ VoxelMethod::VoxelMethod(const MethodOptions& options, std::size_t max_subpatche
 }
 
 void VoxelMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
-  grid_ = voxel::make_grid(voxel::frame_bound(scene, whole_scene_), resolution_);
+  std::vector<Camera> views{scene.camera};
+  views.insert(views.end(), other_views_.begin(), other_views_.end());
+  grid_ = voxel::make_grid(voxel::frame_bound(scene, views, whole_scene_), resolution_);
   patches_.emplace(scene);
   // Counted before they are stored: the frame buffer mode keeps every subpatch, and §5.1
   // runs the recursion again for each light.
@@ -114,6 +116,10 @@ void VoxelMethod::build(const Scene& scene, std::size_t light, const Context& /*
     return;
   }
   stats_ = voxel::determine_shadows(light_, leaves_, voxels_, test_, buffer_);
+}
+
+bool VoxelMethod::serves(const Scene& scene, const Camera& camera) const {
+  return voxel::grid_serves(grid_, scene, camera);
 }
 
 voxel::VoxelState VoxelMethod::state_at(Vec3 p) const {

@@ -47,6 +47,13 @@ class VoxelMethod final : public ShadowMethod {
   std::size_t memory_bytes() const override;
   MethodCounters counters() const override;
 
+  /// Views besides the scene's camera that the frame buffer must serve (§5.2: a new view
+  /// needs no new shadow work): with `bound=view`, prepare() bounds the grid to hold them.
+  void serve_views(std::vector<Camera> views) { other_views_ = std::move(views); }
+  /// Whether the frame buffer prepared for \p scene holds every voxel the view of \p camera
+  /// needs, so that a render from there drops no geometry.
+  bool serves(const Scene& scene, const Camera& camera) const;
+
   const voxel::VoxelGrid& grid() const { return grid_; }
   const voxel::PatchSet& patches() const { return *patches_; }
   int adjacency() const { return adjacency_; }
@@ -68,6 +75,7 @@ class VoxelMethod final : public ShadowMethod {
   bool whole_scene_ = false;
   bool streamed_mode_ = false;
   std::size_t max_subpatches_ = kMaxSubpatches;
+  std::vector<Camera> other_views_;
 
   voxel::VoxelGrid grid_;
   std::optional<voxel::PatchSet> patches_;  ///< §5.1: voxelized again per light

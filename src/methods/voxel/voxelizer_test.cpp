@@ -294,11 +294,15 @@ TEST(FrameBound, LeavesOutTheGroundNobodySees) {
                                     {testing::point_light({0, 5, 0})},
                                     {testing::horizontal_quad(-1000, 1000, -1000, 1000, 0),
                                      box({-0.2, 0, -0.2}, {0.2, 0.4, 0.2})});
-  const Bounds3 bound = frame_bound(scene, false);
+  const Bounds3 bound = frame_bound(scene, {&scene.camera, 1}, false);
   EXPECT_LT(bound.extent().x, 5.0);
   EXPECT_LT(bound.extent().z, 5.0);
   EXPECT_GE(bound.hi.y, 0.4);
-  EXPECT_EQ(frame_bound(scene, true).extent().x, 2000);
+  EXPECT_EQ(frame_bound(scene, {&scene.camera, 1}, true).extent().x, 2000);
+  // A camera looking away from everything: nothing to bound but the scene.
+  const Camera away = testing::camera({0, 3, 10}, {0, 13, 20}, 64, 48);
+  EXPECT_TRUE(view_bound(scene, away).empty());
+  EXPECT_EQ(frame_bound(scene, {&away, 1}, false).extent().x, 2000);
 }
 
 TEST(FrameBuffer, TwoBitsPerVoxelInSparseBricks) {
