@@ -17,7 +17,8 @@ struct SurfaceVoxels {
   std::vector<std::uint32_t> first_sample{0};  ///< voxel i: samples[first[i] .. first[i+1])
   std::vector<std::uint32_t> samples;
 
-  /// The voxels of \p leaves' corners (and bridges, see add_samples) inside \p grid.
+  /// The voxels of \p leaves' corners (and bridges, see for_each_leaf_voxel) inside \p grid;
+  /// with \p adjacency 6 also those that close tunnels (close_tunnels()).
   static SurfaceVoxels collect(const std::vector<Subpatch>& leaves, const VoxelGrid& grid,
                                const VoxelKeys& keys, int adjacency);
   std::size_t size() const { return keys.size(); }
