@@ -30,13 +30,13 @@ constexpr double kOffsetEntriesPerVoxel = 2;
 // §4.1: the move off the surface, in voxels.
 const double kOffset = std::sqrt(2.0);
 
-// §4.2: the ray from the sample \p a, lifted off its subpatch of normal \p normal, to the
-// light against the two triangles of every subpatch listed, nearer than the sample, in the
-// entry where that ray projects.
+// §4.2: the ray from the sample \p a, lifted \p lift voxels off its subpatch of normal
+// \p normal, to the light against the two triangles of every subpatch listed, nearer than the
+// sample, in the entry where that ray projects.
 bool topology_test_shadowed(const LightProjection& projection, const BlockingSubpatches& lists,
-                            const std::vector<Subpatch>& leaves, Vec3 a, Vec3 normal) {
+                            const std::vector<Subpatch>& leaves, Vec3 a, Vec3 normal, double lift) {
   const double facing = dot(normal, projection.toward_light(a));
-  if (facing != 0) a += normalize(facing < 0 ? -normal : normal) * kChordSag;
+  if (facing != 0) a += normalize(facing < 0 ? -normal : normal) * lift;
   const Vec3 direction = projection.to_light(a);
   const double reach = length(direction);
   if (reach == 0) return false;
@@ -72,13 +72,14 @@ std::uint32_t facing_sample(const LightProjection& projection, const std::vector
 
 }  // namespace
 
-LightProjection projection_for(const Light& light, const VoxelGrid& grid, ShadowTest test) {
-  return LightProjection(light, grid, test == ShadowTest::offset ? kOffsetEntriesPerVoxel : 1.0);
+LightProjection projection_for(const Light& light, const VoxelGrid& grid, ShadowRules rules) {
+  const bool half_voxel = rules.test == ShadowTest::offset && !rules.paper;
+  return LightProjection(light, grid, half_voxel ? kOffsetEntriesPerVoxel : 1.0);
 }
 
 NearestVoxels nearest_voxels(const LightProjection& projection, std::size_t parts,
-                             const NearestVoxels::VoxelCentres& centres) {
-  return NearestVoxels(projection, parts, centres, kNoHoles);
+                             const NearestVoxels::VoxelCentres& centres, ShadowRules rules) {
+  return NearestVoxels(projection, parts, centres, rules.paper ? 0.0 : kNoHoles);
 }
 
 bool nearest_the_light(const LightProjection& projection, const NearestVoxels& nearest, Vec3 a) {
@@ -103,20 +104,21 @@ bool offset_test_shadowed(const LightProjection& projection, const NearestVoxels
 }
 
 ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatch>& leaves,
-                                   const SurfaceVoxels& voxels, ShadowTest test,
+                                   const SurfaceVoxels& voxels, ShadowRules rules,
                                    CubicFrameBuffer& buffer) {
-  const LightProjection projection = projection_for(light, buffer.grid(), test);
+  const LightProjection projection = projection_for(light, buffer.grid(), rules);
   const VoxelKeys& keys = buffer.keys();
   // The voxel centres (x.5 coordinates: exact as floats).
   std::vector<GridPoint> centres(voxels.size());
   tbb::parallel_for(std::size_t(0), voxels.size(), [&](std::size_t i) {
     centres[i] = GridPoint::of(VoxelGrid::center(keys.voxel(voxels.keys[i])));
   });
-  const NearestVoxels nearest =
-      nearest_voxels(projection, voxels.size(),
-                     [&](std::size_t i, const auto& centre) { centre(centres[i].vec()); });
+  const NearestVoxels nearest = nearest_voxels(
+      projection, voxels.size(),
+      [&](std::size_t i, const auto& centre) { centre(centres[i].vec()); }, rules);
   std::optional<BlockingSubpatches> lists;
-  if (test == ShadowTest::topology) lists.emplace(projection, leaves);
+  if (rules.test == ShadowTest::topology) lists.emplace(projection, leaves);
+  const double lift = rules.paper ? 0.0 : kChordSag;
 
   std::vector<VoxelState> states(voxels.size(), VoxelState::lit);
   std::vector<std::uint8_t> uncertain(voxels.size(), 0);
@@ -125,11 +127,11 @@ ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatc
     uncertain[i] = 1;
     const std::uint32_t sample = facing_sample(projection, leaves, voxels, i);
     const bool shadowed =
-        test == ShadowTest::offset
+        rules.test == ShadowTest::offset
             ? offset_test_shadowed(projection, nearest, leaf_normal(leaves[sample / 4]),
                                    centres[i].vec())
             : topology_test_shadowed(projection, *lists, leaves, sample_point(leaves, sample),
-                                     leaf_normal(leaves[sample / 4]));
+                                     leaf_normal(leaves[sample / 4]), lift);
     states[i] = shadowed ? VoxelState::shadowed : VoxelState::lit;
   });
 

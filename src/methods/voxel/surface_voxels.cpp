@@ -49,7 +49,7 @@ SurfaceVoxels with_fills(const SurfaceVoxels& voxels, std::vector<TunnelFill> fi
 }  // namespace
 
 SurfaceVoxels SurfaceVoxels::collect(const std::vector<Subpatch>& leaves, const VoxelGrid& grid,
-                                     const VoxelKeys& keys, int adjacency) {
+                                     const VoxelKeys& keys, int adjacency, bool corners_only) {
   // In key order: grouped by brick, each brick's few samples sorted.
   std::vector<std::uint32_t> first;
   std::vector<Sample> samples;
@@ -72,7 +72,7 @@ SurfaceVoxels SurfaceVoxels::collect(const std::vector<Subpatch>& leaves, const 
   }
   if (!out.keys.empty()) out.first_sample.push_back(std::uint32_t(out.samples.size()));
   // §3: N = 6 promises to stop 26-paths, which corners alone do not on curved surfaces.
-  if (adjacency == 6) {
+  if (adjacency == 6 && !corners_only) {
     std::vector<TunnelFill> fills = close_tunnels(out.keys, grid, keys);
     if (!fills.empty()) return with_fills(out, std::move(fills));
   }

@@ -28,6 +28,8 @@ namespace shadowkit::voxel {
 /// - `framebuffer` (default 1): 1 keeps the voxels' states in the cubic frame buffer (§5.2);
 ///   0 streams the voxels onto the projection plane and decides each visible point on the
 ///   fly (§5.1, voxel::StreamedShadows), offset test only.
+/// - `paper` (default 0): 1 runs §3 and §4 as the paper writes them (voxel::ShadowRules;
+///   with N = 6, the corners' voxels alone, no tunnels closed).
 /// - `max_subpatches` (default kMaxSubpatches): the most leaves the voxelization may make;
 ///   prepare() counts them before keeping more than voxel::kKeptWhileCounting, and more is
 ///   an InputError.
@@ -71,7 +73,7 @@ class VoxelMethod final : public ShadowMethod {
  private:
   int resolution_ = 256;
   int adjacency_ = 26;
-  voxel::ShadowTest test_ = voxel::ShadowTest::topology;
+  voxel::ShadowRules rules_;
   bool whole_scene_ = false;
   bool streamed_mode_ = false;
   std::size_t max_subpatches_ = kMaxSubpatches;

@@ -154,6 +154,10 @@ TEST(VoxelSpecks, TopologyTestLeavesNoneOnTheFigure5Objects) {
     EXPECT_LE(specks(reference, mask, kMaskShadow), most_dark_specks) << resolution;
     EXPECT_LE(specks(reference, mask, kMaskLit), 3) << resolution;
   }
+  // As the paper writes it (voxel.paper=1: the ray from the sample itself), they are back.
+  VoxelMethod paper(voxel_options({{"resolution", "256"}, {"paper", "1"}}));
+  testing::method_mask(paper, scene, vsb, 0);
+  EXPECT_GT(isolated_shadowed_voxels(paper), 20);
 }
 
 // One subpatch more than voxel.max_subpatches allows is refused in prepare(), with the
@@ -195,10 +199,14 @@ TEST(VoxelOptions, BadValuesAreInputErrors) {
   EXPECT_THROW(VoxelMethod(voxel_options({{"bound", "all"}})), InputError);
   EXPECT_THROW(VoxelMethod(voxel_options({{"bias", "1"}})), InputError);
   EXPECT_THROW(VoxelMethod(voxel_options({{"max_subpatches", "0"}})), InputError);
+  EXPECT_THROW(VoxelMethod(voxel_options({{"paper", "2"}})), InputError);
   EXPECT_THROW(VoxelMethod(voxel_options({{"max_subpatches", "2.5"}})), InputError);
   EXPECT_THROW(VoxelMethod(voxel_options({{"max_subpatches", "268435457"}})), InputError);
-  EXPECT_NO_THROW(VoxelMethod(voxel_options(
-      {{"resolution", "512"}, {"adjacency", "6"}, {"test", "offset"}, {"bound", "scene"}})));
+  EXPECT_NO_THROW(VoxelMethod(voxel_options({{"resolution", "512"},
+                                             {"adjacency", "6"},
+                                             {"test", "offset"},
+                                             {"bound", "scene"},
+                                             {"paper", "1"}})));
 }
 
 }  // namespace

@@ -55,12 +55,14 @@ struct Voxelized {
   SurfaceVoxels voxels;
 };
 
-Voxelized voxelize_scene(const Scene& scene, int resolution, int adjacency) {
+Voxelized voxelize_scene(const Scene& scene, int resolution, int adjacency,
+                         bool corners_only = false) {
   Voxelized v;
   v.grid = make_grid(scene.bounds(), resolution);
   const PatchSet patches(scene);
   v.leaves = *voxelize(patches, v.grid, adjacency, std::numeric_limits<std::size_t>::max());
-  v.voxels = SurfaceVoxels::collect(v.leaves, v.grid, VoxelKeys(v.grid.dims), adjacency);
+  v.voxels =
+      SurfaceVoxels::collect(v.leaves, v.grid, VoxelKeys(v.grid.dims), adjacency, corners_only);
   return v;
 }
 
@@ -291,6 +293,9 @@ TEST(Separability, NoLeakFromInsideACatmullClarkSurface) {
       EXPECT_FALSE(leaks(v, path, inside)) << "M=" << resolution << " N=" << adjacency;
     }
   }
+  // The paper's corners alone (voxel.paper=1) let the 26-path through.
+  const Voxelized corners = voxelize_scene(scene, 48, 6, true);
+  EXPECT_TRUE(leaks(corners, 26, corners.grid.voxel_of(corners.grid.to_grid({0, 0, 0}))));
 }
 
 // Whether the empty voxels of a 2 x 2 x 2 block (bit x + 2y + 4z set for a non-empty one)
