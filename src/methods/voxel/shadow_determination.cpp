@@ -12,16 +12,19 @@
 namespace shadowkit::voxel {
 namespace {
 
-// §4.2: hits nearer than this (voxels) to the sample are its own surface around it.
+// §4.2: hits nearer than this (voxels) to the sample are its own surface around it: the
+// paper's rule, with only rounding to absorb.
 constexpr double kSelfHit = 1e-3;
 // §4.2 tests the ray against flat subpatches, while the sample lies on the curved surface.
 // Where a coarser leaf meets finer ones, its side is a chord past their corners on the
 // surface; on a concave surface it passes above them, and a ray from such a corner hits it
 // a few thousandths of a voxel away: an isolated shadowed voxel, a dark speck on a lit
-// surface. The ray starts this far (voxels) off the surface along its subpatch's normal:
-// above the sag of a side of 2 sqrt(3) voxels (corners in 26-adjacent voxels) on any surface
-// curved to a radius of 6 voxels or more, where tighter curves are below the voxel size.
-constexpr double kChordSag = 0.25;
+// surface. By default hits within this distance (voxels) along the ray are the sample's own
+// surface: the sag of a side of 2 sqrt(3) voxels (corners in 26-adjacent voxels) on any
+// surface curved to a radius of 6 voxels or more, met at 90 degrees to the ray. Moving the
+// ray's start along the ray, not off the surface, leaves the shadows of a grazing light
+// their length.
+constexpr double kOwnSurface = 0.25;
 // Half a voxel: the footprint of a voxel on the plane for "nearest the light is lit".
 constexpr double kNoHoles = 0.5;
 // §4.1 compares a point moved by sqrt(2) voxels with voxels' footprints: entries of half
@@ -30,17 +33,15 @@ constexpr double kOffsetEntriesPerVoxel = 2;
 // §4.1: the move off the surface, in voxels.
 const double kOffset = std::sqrt(2.0);
 
-// §4.2: the ray from the sample \p a, lifted \p lift voxels off its subpatch of normal
-// \p normal, to the light against the two triangles of every subpatch listed, nearer than the
-// sample, in the entry where that ray projects.
+// §4.2: the ray from the sample \p a to the light against the two triangles of every
+// subpatch listed, nearer than the sample, in the entry where that ray projects; hits within
+// \p own_surface voxels of \p a are its own surface.
 bool topology_test_shadowed(const LightProjection& projection, const BlockingSubpatches& lists,
-                            const std::vector<Subpatch>& leaves, Vec3 a, Vec3 normal, double lift) {
-  const double facing = dot(normal, projection.toward_light(a));
-  if (facing != 0) a += normalize(facing < 0 ? -normal : normal) * lift;
+                            const std::vector<Subpatch>& leaves, Vec3 a, double own_surface) {
   const Vec3 direction = projection.to_light(a);
   const double reach = length(direction);
   if (reach == 0) return false;
-  const RaySegment ray{a, direction, kSelfHit / reach, 1};
+  const RaySegment ray{a, direction, own_surface / reach, 1};
   const double distance = projection.distance(a);
   for (const auto& record : lists.list(projection.entry(a))) {
     if (record.distance >= distance) break;
@@ -118,7 +119,7 @@ ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatc
       [&](std::size_t i, const auto& centre) { centre(centres[i].vec()); }, rules);
   std::optional<BlockingSubpatches> lists;
   if (rules.test == ShadowTest::topology) lists.emplace(projection, leaves);
-  const double lift = rules.paper ? 0.0 : kChordSag;
+  const double own_surface = rules.paper ? kSelfHit : kOwnSurface;
 
   std::vector<VoxelState> states(voxels.size(), VoxelState::lit);
   std::vector<std::uint8_t> uncertain(voxels.size(), 0);
@@ -131,7 +132,7 @@ ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatc
             ? offset_test_shadowed(projection, nearest, leaf_normal(leaves[sample / 4]),
                                    centres[i].vec())
             : topology_test_shadowed(projection, *lists, leaves, sample_point(leaves, sample),
-                                     leaf_normal(leaves[sample / 4]), lift);
+                                     own_surface);
     states[i] = shadowed ? VoxelState::shadowed : VoxelState::lit;
   });
 

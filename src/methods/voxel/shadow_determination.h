@@ -17,9 +17,10 @@ enum class ShadowTest { offset, topology };
 
 /// \brief How §4 decides: the test, and whether as the paper writes it (`voxel.paper=1`):
 /// voxels projected as points, the offset test on entries one voxel wide, the topology
-/// test's ray from the sample itself. shadowkit's default gives a voxel a footprint of half a
-/// voxel around its centre (no holes between a caster's voxels), half-voxel entries to the
-/// offset test, and lifts the topology test's ray above the chords of the subpatches.
+/// test's hits counted from the sample itself. shadowkit's default gives a voxel a footprint
+/// of half a voxel around its centre (no holes between a caster's voxels), half-voxel entries
+/// to the offset test, and takes the topology test's hits within a quarter voxel of the
+/// sample for its own surface (the chords of the subpatches around it).
 struct ShadowRules {
   ShadowTest test = ShadowTest::topology;
   bool paper = false;

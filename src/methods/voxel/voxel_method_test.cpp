@@ -154,7 +154,7 @@ TEST(VoxelSpecks, TopologyTestLeavesNoneOnTheFigure5Objects) {
     EXPECT_LE(specks(reference, mask, kMaskShadow), most_dark_specks) << resolution;
     EXPECT_LE(specks(reference, mask, kMaskLit), 3) << resolution;
   }
-  // As the paper writes it (voxel.paper=1: the ray from the sample itself), they are back.
+  // As the paper writes it (voxel.paper=1: every hit from the sample on), they are back.
   VoxelMethod paper(voxel_options({{"resolution", "256"}, {"paper", "1"}}));
   testing::method_mask(paper, scene, vsb, 0);
   EXPECT_GT(isolated_shadowed_voxels(paper), 10);  // 16
