@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "shadowkit/app/commands.h"
 #include "shadowkit/core/error.h"
@@ -58,8 +59,11 @@ int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx) {
   }
   const Scene scene = load_scene(options.scene, ctx);
   if (!frame_buffer) return render_still(scene, settings, options, ctx);
+  // §5.2: the frame buffer is made for both views, so that the turned one drops nothing.
+  std::vector<Camera> other_views;
+  if (!options.turned_image.empty()) other_views.push_back(turned(scene.camera, options.turn_deg));
   const auto start = std::chrono::steady_clock::now();
-  voxel::FrameBufferImage source(scene, settings, ctx);
+  voxel::FrameBufferImage source(scene, settings, ctx, other_views);
   const double prepare_ms = ms_since(start);
   const auto view_start = std::chrono::steady_clock::now();
   write_png(options.image, source.render(scene.camera));
@@ -71,7 +75,7 @@ int run_voxel_render(const VoxelRenderOptions& options, const Context& ctx) {
       options.image.c_str());
   if (!options.turned_image.empty()) {
     const auto turn_start = std::chrono::steady_clock::now();
-    write_png(options.turned_image, source.render(turned(scene.camera, options.turn_deg)));
+    write_png(options.turned_image, source.render(other_views.front()));
     std::printf("view turned by %g degrees, no shadow work: %.1f ms: %s\n", options.turn_deg,
                 ms_since(turn_start), options.turned_image.c_str());
   }

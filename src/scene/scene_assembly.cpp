@@ -65,18 +65,62 @@ class PolygonBudget {
     }
     used_ += polygons;
   }
+  std::size_t left() const { return limits::kPolygons - used_; }
 
  private:
   std::size_t used_ = 0;
 };
 
-SceneObject build_object(ObjectSource& object, PolygonBudget& budget, const Context& ctx) {
+// The most triangles one object's tessellation for the view may make: four times the
+// 584k-triangle knot of examples/knot-600k.json. Past it the tessellation is coarsened,
+// with a warning, rather than refused: the scene still loads.
+constexpr std::size_t kViewTessellationTriangles = std::size_t(1) << 22;
+
+// What a tessellation for the view of \p scene's camera must hold to (ViewTolerance).
+ViewTolerance view_tolerance(const Scene& scene) {
+  ViewTolerance view;
+  view.eye = scene.camera.position;
+  view.pixel_at_unit_distance = 2 * scene.camera.tan_half_fov() / scene.camera.height;
+  for (const Light& light : scene.lights) {
+    if (light.type == Light::Type::point) {
+      view.point_lights.push_back(light.position);
+    } else {
+      view.toward_lights.push_back(-light.direction);
+    }
+  }
+  return view;
+}
+
+// A Catmull-Clark object tessellated for the view of \p scene (its camera and lights).
+SceneObject tessellated_for_view(const ObjectSource& object,
+                                 std::shared_ptr<const SubdivisionSurface> surface,
+                                 const Scene& scene, PolygonBudget& budget, const Context& ctx) {
+  const std::string where = key_location(object.where, "tessellation");
+  const ViewTolerance view = view_tolerance(scene);
+  ViewTessellation t =
+      surface->tessellate_for_view(view, std::min(kViewTessellationTriangles, budget.left()));
+  if (t.coarsened) {
+    ctx.warning(where + ": within half a pixel of the view it would make " +
+                std::to_string(t.triangles_asked) + " triangles; coarsened to " +
+                std::to_string(t.soup.face_count()) + " (at most " + std::to_string(t.finest) +
+                " segments a patch)");
+  }
+  budget.take(t.soup.face_count(), where);
+  const std::string label = object.where + " (" + object.name + ")";
+  return {object.name, Mesh::build(t.soup, label, ctx), 0, std::move(surface)};
+}
+
+SceneObject build_object(ObjectSource& object, const Scene& scene, PolygonBudget& budget,
+                         const Context& ctx) {
   const std::string label = object.where + " (" + object.name + ")";
   if (object.tessellation == 0) {
     budget.take(object.soup.face_count(), object.where);
     return {object.name, Mesh::build(object.soup, label, ctx), 0, {}};
   }
   auto surface = SubdivisionSurface::build(object.soup, label);
+  if (object.tessellation == kTessellationForView) {
+    return tessellated_for_view(object, std::move(surface), scene, budget, ctx);
+  }
   // Two triangles per cell, segments x segments cells per patch: counted before tessellating.
   const std::size_t per_patch = 2 * std::size_t(object.tessellation) * object.tessellation;
   if (surface->patch_count() > limits::kPolygons / per_patch) {
@@ -142,7 +186,7 @@ Scene assemble_scene(SceneSource source, const Context& ctx) {
   for (std::size_t i = 0; i < source.objects.size(); ++i) {
     ObjectSource& object = source.objects[i];
     for (Vec3& p : object.soup.positions) p = scene.frame.to_working(p);
-    scene.objects.push_back(build_object(object, budget, ctx));
+    scene.objects.push_back(build_object(object, scene, budget, ctx));
     scene.objects.back().input_object = object.input_object.value_or(std::uint32_t(i));
     scene.objects.back().input_first_face = object.input_first_face;
   }

@@ -135,7 +135,8 @@ void apply_object_transform(const JsonCursor& c, std::vector<Vec3>& positions) {
   apply_transform(positions, scale, rotate, translate);
 }
 
-// Segments per patch edge of a Catmull-Clark object's tessellation, 0 for a polygon mesh.
+// Segments per patch edge of a Catmull-Clark object's tessellation, kTessellationForView
+// for "view", 0 for a polygon mesh.
 // With the default 8, the polygons of examples/subdivision.json stay within 0.3% of their
 // object's size of the limit surface; the gap shrinks as 1 / segments^2 on regular patches
 // but only about as 1 / segments next to extraordinary vertices.
@@ -148,7 +149,13 @@ int tessellation_segments(const JsonCursor& c) {
   if (scheme != "catmull-clark") {
     c["subdivision"].fail("unknown scheme '" + scheme + "' (expected \"catmull-clark\")");
   }
-  return c.has("tessellation") ? c["tessellation"].integer(1, limits::kTessellation) : 8;
+  if (!c.has("tessellation")) return 8;
+  const JsonCursor tessellation = c["tessellation"];
+  if (!tessellation.value().is_string()) return tessellation.integer(1, limits::kTessellation);
+  if (tessellation.string() != "view") {
+    tessellation.fail("expected a number of segments or \"view\"");
+  }
+  return kTessellationForView;
 }
 
 void read_objects(const JsonCursor& list, const fs::path& dir, SceneSource& scene,

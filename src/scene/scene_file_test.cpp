@@ -141,6 +141,24 @@ TEST_F(SceneFileTest, CatmullClarkObjectsAreTessellatedLimitSurfaces) {
   EXPECT_EQ(s.objects[2].subdivision, nullptr);
 }
 
+// "tessellation": "view" fits the cells to the camera (64 x 48 pixels here): seen from close,
+// the cube needs many cells a patch; from 120 away, half a pixel holds a whole patch.
+TEST_F(SceneFileTest, TessellationForTheViewFollowsTheCamera) {
+  write("cube.obj", kCubeObj);
+  const std::string light = R"({"type": "point", "position": [3, 10, 4]})";
+  const auto cube_faces = [&](const std::string& position) {
+    const Scene s = load_scene_file(
+        write("scene.json",
+              scene(R"("position": )" + position + R"(, "look_at": [0, 0, 0])", light,
+                    object(R"("subdivision": "catmull-clark", "tessellation": "view")"))),
+        quiet_);
+    EXPECT_TRUE(s.objects[0].mesh.closed());
+    return s.objects[0].mesh.face_count();
+  };
+  EXPECT_GT(cube_faces("[0, 1, 2.5]"), 24u * 2 * 2 * 2);  // mixed: 310
+  EXPECT_EQ(cube_faces("[0, 40, 120]"), 24u * 2);
+}
+
 TEST_F(SceneFileTest, BadSubdivisionKeysAreRejected) {
   write("cube.obj", kCubeObj);
   const std::string camera = R"("position": [0, 4, 12], "look_at": [0, 0, 0])";
@@ -152,7 +170,7 @@ TEST_F(SceneFileTest, BadSubdivisionKeysAreRejected) {
               HasSubstr("key 'objects[0].subdivision': unknown scheme 'loop' (expected "
                         "\"catmull-clark\")"));
   EXPECT_THAT(error(R"("subdivision": true)"), HasSubstr("key 'objects[0].subdivision'"));
-  for (const char* bad : {"0", "2.5", "1000", "\"8\""}) {
+  for (const char* bad : {"0", "2.5", "1000", "\"8\"", "\"fine\"", "-1"}) {
     EXPECT_THAT(error(std::string(R"("subdivision": "catmull-clark", "tessellation": )") + bad),
                 HasSubstr("key 'objects[0].tessellation'"));
   }

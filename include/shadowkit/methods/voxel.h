@@ -4,6 +4,7 @@
 /// the voxel-render command).
 #include <cstddef>
 #include <memory>
+#include <vector>
 
 #include "shadowkit/core/context.h"
 #include "shadowkit/core/image.h"
@@ -32,17 +33,22 @@ struct StillImage {
 StillImage render_still(const Scene& scene, const MethodOptions& settings, const Context& ctx);
 
 /// \brief §5.2: the scene's subpatches tessellated once (§5.3), with every light's shadow
-/// states from the cubic frame buffer; render() draws them from any camera with no new
-/// shadow work.
+/// states from the cubic frame buffer; render() draws them from the views it was made for
+/// with no new shadow work.
 class FrameBufferImage {
  public:
+  /// The image of \p scene, which must outlive it, for its camera and \p other_views: with
+  /// voxel.bound=view the frame buffer is bounded to hold what each of them needs.
   /// InputError when \p settings are bad or ask for §5.1 (framebuffer=0).
-  FrameBufferImage(const Scene& scene, const MethodOptions& settings, const Context& ctx);
+  FrameBufferImage(const Scene& scene, const MethodOptions& settings, const Context& ctx,
+                   std::vector<Camera> other_views = {});
   FrameBufferImage(FrameBufferImage&&) noexcept;
   FrameBufferImage& operator=(FrameBufferImage&&) noexcept;
   ~FrameBufferImage();
 
   /// The subpatches seen by \p camera, shaded with their corners' shadow states (§5).
+  /// InputError when the frame buffer lacks voxels \p camera's view needs (a camera it was
+  /// not made for, with voxel.bound=view): geometry is never dropped silently.
   Image<Rgb8> render(const Camera& camera);
   std::size_t triangle_count() const;
   /// Bytes of the shadow data kept: the frame buffer and the subpatches' states.

@@ -11,11 +11,16 @@
 
 namespace shadowkit {
 
+/// ObjectSource::tessellation of a Catmull-Clark object tessellated for the scene's camera
+/// (`"tessellation": "view"`): every cell within half a pixel of the limit surface.
+inline constexpr int kTessellationForView = -1;
+
 /// \brief One object as its source gives it, in world coordinates.
 struct ObjectSource {
   std::string name;
   PolygonSoup soup;
-  /// Segments per patch edge when \p soup is a Catmull-Clark control mesh; 0: polygons.
+  /// Segments per patch edge when \p soup is a Catmull-Clark control mesh, or
+  /// kTessellationForView; 0: polygons.
   int tessellation = 0;
   /// Labels the object's errors and warnings ("scene.json: key 'objects[2]'").
   std::string where;

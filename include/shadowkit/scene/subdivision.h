@@ -21,6 +21,26 @@ struct SurfacePoint {
   Vec3 normal() const { return normalize(cross(du, dv)); }
 };
 
+/// \brief How finely a view sees, a pixel at distance d being d x pixel_at_unit_distance: a
+/// tessellation for it keeps every cell within \p pixels pixels of the limit surface, and
+/// where the surface turns from a light, a cell no more than a pixel across: there the
+/// facets decide the contract's condition 1, and its terminator moves by up to a cell.
+struct ViewTolerance {
+  Vec3 eye;
+  double pixel_at_unit_distance = 0;  ///< 2 tan(fov_y / 2) / height for a pinhole camera
+  double pixels = 0.5;
+  std::vector<Vec3> point_lights;   ///< positions
+  std::vector<Vec3> toward_lights;  ///< unit directions toward the directional lights
+};
+
+/// \brief A tessellation fitted to a view (SubdivisionSurface::tessellate_for_view()).
+struct ViewTessellation {
+  PolygonSoup soup;
+  int finest = 1;                   ///< the most segments of a patch
+  std::size_t triangles_asked = 0;  ///< what the view's tolerance asked for
+  bool coarsened = false;           ///< the bound made it coarser than the view asks
+};
+
 /// \brief The limit surface of a Catmull-Clark control mesh: no creases, boundary edges and
 /// corners sharp (OpenSubdiv's VTX_BOUNDARY_EDGE_AND_CORNER), so an open mesh keeps its outline.
 ///
@@ -55,6 +75,14 @@ class SubdivisionSurface {
   /// once and shared by the patches around it, so a closed control mesh gives a closed mesh.
   /// \p face_patch, when given, receives the patch of each output triangle.
   PolygonSoup tessellate(int segments, std::vector<std::uint32_t>* face_patch = nullptr) const;
+
+  /// A crack-free tessellation whose cells, per patch, are the fewest (n x n, n a power of
+  /// two up to 256) that meet \p view's tolerance, checked at every cell's corners, side
+  /// midpoints and centre.
+  /// A side takes the segments of the finer of its patches; the coarser patch's cells along
+  /// it are fanned from their centres. Past \p most_triangles, every patch's n is halved
+  /// until it fits (or every patch is one cell).
+  ViewTessellation tessellate_for_view(const ViewTolerance& view, std::size_t most_triangles) const;
 
   ~SubdivisionSurface();
   SubdivisionSurface(const SubdivisionSurface&) = delete;

@@ -39,15 +39,21 @@ Bounds3 reach_toward(const Bounds3& seen, const Light& light, const Bounds3& sce
 
 }  // namespace
 
-Bounds3 frame_bound(const Scene& scene, bool whole_scene) {
-  if (whole_scene) return scene.bounds();
-  Bounds3 seen = clipped_bounds(scene, ViewFrustum::of(scene.camera, 0).planes);
-  if (seen.empty()) return scene.bounds();  // nothing visible: any grid will do
+Bounds3 view_bound(const Scene& scene, const Camera& camera) {
+  const Bounds3 seen = clipped_bounds(scene, ViewFrustum::of(camera, 0).planes);
+  if (seen.empty()) return seen;
   Bounds3 bound = seen;
   for (const Light& light : scene.lights) {
     bound.add(clipped_bounds(scene, box_planes(reach_toward(seen, light, scene.bounds()))));
   }
   return bound;
+}
+
+Bounds3 frame_bound(const Scene& scene, std::span<const Camera> views, bool whole_scene) {
+  if (whole_scene) return scene.bounds();
+  Bounds3 bound;
+  for (const Camera& camera : views) bound.add(view_bound(scene, camera));
+  return bound.empty() ? scene.bounds() : bound;  // nothing visible: any grid will do
 }
 
 VoxelGrid make_grid(const Bounds3& bound, int resolution) {
@@ -60,6 +66,18 @@ VoxelGrid make_grid(const Bounds3& bound, int resolution) {
     grid.dims[a] = std::min(resolution, int(std::ceil(extent[a] / grid.size)) + 2);
   }
   return grid;
+}
+
+bool grid_serves(const VoxelGrid& grid, const Scene& scene, const Camera& camera) {
+  const Bounds3 needed = view_bound(scene, camera);
+  if (needed.empty()) return true;
+  const Vec3 hi =
+      grid.origin +
+      Vec3{double(grid.dims[0]), double(grid.dims[1]), double(grid.dims[2])} * grid.size;
+  for (int a = 0; a < 3; ++a) {
+    if (needed.lo[a] < grid.origin[a] || needed.hi[a] > hi[a]) return false;
+  }
+  return true;
 }
 
 }  // namespace shadowkit::voxel

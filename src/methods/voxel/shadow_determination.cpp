@@ -12,8 +12,19 @@
 namespace shadowkit::voxel {
 namespace {
 
-// §4.2: hits nearer than this (voxels) to the sample are its own surface around it.
+// §4.2: hits nearer than this (voxels) to the sample are its own surface around it: the
+// paper's rule, with only rounding to absorb.
 constexpr double kSelfHit = 1e-3;
+// §4.2 tests the ray against flat subpatches, while the sample lies on the curved surface.
+// Where a coarser leaf meets finer ones, its side is a chord past their corners on the
+// surface; on a concave surface it passes above them, and a ray from such a corner hits it
+// a few thousandths of a voxel away: an isolated shadowed voxel, a dark speck on a lit
+// surface. By default hits within this distance (voxels) along the ray are the sample's own
+// surface: the sag of a side of 2 sqrt(3) voxels (corners in 26-adjacent voxels) on any
+// surface curved to a radius of 6 voxels or more, met at 90 degrees to the ray. Moving the
+// ray's start along the ray, not off the surface, leaves the shadows of a grazing light
+// their length.
+constexpr double kOwnSurface = 0.25;
 // Half a voxel: the footprint of a voxel on the plane for "nearest the light is lit".
 constexpr double kNoHoles = 0.5;
 // §4.1 compares a point moved by sqrt(2) voxels with voxels' footprints: entries of half
@@ -22,14 +33,15 @@ constexpr double kOffsetEntriesPerVoxel = 2;
 // §4.1: the move off the surface, in voxels.
 const double kOffset = std::sqrt(2.0);
 
-// §4.2: the ray from the sample to the light against the two triangles of every subpatch
-// listed, nearer than the sample, in the entry where that ray projects.
+// §4.2: the ray from the sample \p a to the light against the two triangles of every
+// subpatch listed, nearer than the sample, in the entry where that ray projects; hits within
+// \p own_surface voxels of \p a are its own surface.
 bool topology_test_shadowed(const LightProjection& projection, const BlockingSubpatches& lists,
-                            const std::vector<Subpatch>& leaves, Vec3 a) {
+                            const std::vector<Subpatch>& leaves, Vec3 a, double own_surface) {
   const Vec3 direction = projection.to_light(a);
   const double reach = length(direction);
   if (reach == 0) return false;
-  const RaySegment ray{a, direction, kSelfHit / reach, 1};
+  const RaySegment ray{a, direction, own_surface / reach, 1};
   const double distance = projection.distance(a);
   for (const auto& record : lists.list(projection.entry(a))) {
     if (record.distance >= distance) break;
@@ -61,13 +73,14 @@ std::uint32_t facing_sample(const LightProjection& projection, const std::vector
 
 }  // namespace
 
-LightProjection projection_for(const Light& light, const VoxelGrid& grid, ShadowTest test) {
-  return LightProjection(light, grid, test == ShadowTest::offset ? kOffsetEntriesPerVoxel : 1.0);
+LightProjection projection_for(const Light& light, const VoxelGrid& grid, ShadowRules rules) {
+  const bool half_voxel = rules.test == ShadowTest::offset && !rules.paper;
+  return LightProjection(light, grid, half_voxel ? kOffsetEntriesPerVoxel : 1.0);
 }
 
 NearestVoxels nearest_voxels(const LightProjection& projection, std::size_t parts,
-                             const NearestVoxels::VoxelCentres& centres) {
-  return NearestVoxels(projection, parts, centres, kNoHoles);
+                             const NearestVoxels::VoxelCentres& centres, ShadowRules rules) {
+  return NearestVoxels(projection, parts, centres, rules.paper ? 0.0 : kNoHoles);
 }
 
 bool nearest_the_light(const LightProjection& projection, const NearestVoxels& nearest, Vec3 a) {
@@ -92,20 +105,21 @@ bool offset_test_shadowed(const LightProjection& projection, const NearestVoxels
 }
 
 ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatch>& leaves,
-                                   const SurfaceVoxels& voxels, ShadowTest test,
+                                   const SurfaceVoxels& voxels, ShadowRules rules,
                                    CubicFrameBuffer& buffer) {
-  const LightProjection projection = projection_for(light, buffer.grid(), test);
+  const LightProjection projection = projection_for(light, buffer.grid(), rules);
   const VoxelKeys& keys = buffer.keys();
   // The voxel centres (x.5 coordinates: exact as floats).
   std::vector<GridPoint> centres(voxels.size());
   tbb::parallel_for(std::size_t(0), voxels.size(), [&](std::size_t i) {
     centres[i] = GridPoint::of(VoxelGrid::center(keys.voxel(voxels.keys[i])));
   });
-  const NearestVoxels nearest =
-      nearest_voxels(projection, voxels.size(),
-                     [&](std::size_t i, const auto& centre) { centre(centres[i].vec()); });
+  const NearestVoxels nearest = nearest_voxels(
+      projection, voxels.size(),
+      [&](std::size_t i, const auto& centre) { centre(centres[i].vec()); }, rules);
   std::optional<BlockingSubpatches> lists;
-  if (test == ShadowTest::topology) lists.emplace(projection, leaves);
+  if (rules.test == ShadowTest::topology) lists.emplace(projection, leaves);
+  const double own_surface = rules.paper ? kSelfHit : kOwnSurface;
 
   std::vector<VoxelState> states(voxels.size(), VoxelState::lit);
   std::vector<std::uint8_t> uncertain(voxels.size(), 0);
@@ -114,10 +128,11 @@ ShadowStatistics determine_shadows(const Light& light, const std::vector<Subpatc
     uncertain[i] = 1;
     const std::uint32_t sample = facing_sample(projection, leaves, voxels, i);
     const bool shadowed =
-        test == ShadowTest::offset
+        rules.test == ShadowTest::offset
             ? offset_test_shadowed(projection, nearest, leaf_normal(leaves[sample / 4]),
                                    centres[i].vec())
-            : topology_test_shadowed(projection, *lists, leaves, sample_point(leaves, sample));
+            : topology_test_shadowed(projection, *lists, leaves, sample_point(leaves, sample),
+                                     own_surface);
     states[i] = shadowed ? VoxelState::shadowed : VoxelState::lit;
   });
 

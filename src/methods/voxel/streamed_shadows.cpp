@@ -37,13 +37,15 @@ void project_patch(const PatchSet& patches, std::size_t patch, const VoxelGrid& 
 }  // namespace
 
 StreamedShadows::StreamedShadows(const PatchSet& patches, const VoxelGrid& grid, int adjacency,
-                                 const Light& light)
+                                 const Light& light, ShadowRules rules)
     : grid_(grid),
-      projection_(projection_for(light, grid, ShadowTest::offset)),
-      nearest_(nearest_voxels(projection_, patches.size(),
-                              [&](std::size_t patch, const std::function<void(Vec3)>& centre) {
-                                project_patch(patches, patch, grid, adjacency, centre);
-                              })) {}
+      projection_(projection_for(light, grid, rules)),
+      nearest_(nearest_voxels(
+          projection_, patches.size(),
+          [&](std::size_t patch, const std::function<void(Vec3)>& centre) {
+            project_patch(patches, patch, grid, adjacency, centre);
+          },
+          rules)) {}
 
 bool StreamedShadows::shadowed(Vec3 g, Vec3 normal) const {
   // The voxel's centre stands for the point, as a voxel of the frame buffer does (§5). A

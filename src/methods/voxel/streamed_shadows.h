@@ -8,6 +8,7 @@
 #include "light_projection.h"
 #include "patch_set.h"
 #include "projection_entries.h"
+#include "shadow_determination.h"
 #include "voxel_grid.h"
 
 namespace shadowkit::voxel {
@@ -15,9 +16,9 @@ namespace shadowkit::voxel {
 class StreamedShadows {
  public:
   /// Voxelizes \p patches into \p grid (twice: once to size the plane, once to fill it) and
-  /// projects every surface voxel for \p light.
-  StreamedShadows(const PatchSet& patches, const VoxelGrid& grid, int adjacency,
-                  const Light& light);
+  /// projects every surface voxel for \p light, by \p rules (the offset test).
+  StreamedShadows(const PatchSet& patches, const VoxelGrid& grid, int adjacency, const Light& light,
+                  ShadowRules rules);
   /// Whether the voxel of grid point \p g, on a surface of normal \p normal, is shadowed.
   bool shadowed(Vec3 g, Vec3 normal) const;
   /// Whether voxel \p v, on a surface of normal \p normal, is shadowed: nearest the light in

@@ -10,6 +10,7 @@
 
 #include "crack_free_tessellation.h"
 #include "frame_bound.h"
+#include "shadowkit/core/error.h"
 #include "shadowkit/core/palette.h"
 #include "testing/test_scenes.h"
 
@@ -242,6 +243,52 @@ TEST(StillRender, BatchesGiveTheImageOfOnePass) {
     EXPECT_LT(background, one_pass.pixels.size() / 2);  // the scene fills the picture
     EXPECT_GT(background, 0u);
   }
+}
+
+// Pixels where \p reference shows geometry and \p image shows background.
+std::size_t lost_pixels(const Image<Rgb8>& image, const Image<Rgb8>& reference) {
+  std::size_t lost = 0;
+  for (std::size_t i = 0; i < reference.pixels.size(); ++i) {
+    lost += !(reference.pixels[i] == kBackground) && image.pixels[i] == kBackground;
+  }
+  return lost;
+}
+
+std::size_t covered_pixels(const Image<Rgb8>& image) {
+  return std::size_t(std::count_if(image.pixels.begin(), image.pixels.end(),
+                                   [](Rgb8 p) { return !(p == kBackground); }));
+}
+
+// §5.2: a new view needs no new shadow work. A camera near a wide ground sees a wedge of it;
+// turned a quarter around its target it sees another wedge, outside the bound of the first
+// view. A frame buffer made for both views draws the turned view with every pixel a frame
+// buffer made for the turned view alone draws; one made for the first view alone refuses the
+// turned view rather than drop the wedge.
+TEST(FrameBufferImage, ATurnedViewLosesNoGeometry) {
+  const Scene scene = testing::make_scene(testing::camera({0, 2, 5}, {0, 0, 0}, 96, 64),
+                                          {testing::point_light({2, 6, 1})},
+                                          {testing::horizontal_quad(-20, 20, -20, 20, 0),
+                                           testing::box({-0.5, 0, -0.5}, {0.5, 1, 0.5})});
+  Camera turned = scene.camera;
+  turned.position = {5, 2, 0};
+  Scene turned_scene = scene;
+  turned_scene.camera = turned;
+  const MethodOptions settings("voxel", {{"resolution", "64"}});
+  const Context ctx;
+  const Image<Rgb8> fresh = FrameBufferImage(turned_scene, settings, ctx).render(turned);
+  FrameBufferImage both(scene, settings, ctx, {turned});
+  const Image<Rgb8> kept = both.render(turned);
+  EXPECT_GT(covered_pixels(fresh), fresh.pixels.size() / 2);
+  EXPECT_EQ(lost_pixels(kept, fresh), 0u);
+  EXPECT_EQ(lost_pixels(fresh, kept), 0u);
+
+  FrameBufferImage first_only(scene, settings, ctx);
+  EXPECT_GT(covered_pixels(first_only.render(scene.camera)), 0u);
+  EXPECT_THROW(first_only.render(turned), InputError);
+  // A view that sees nothing needs nothing; the scene's box serves every view.
+  EXPECT_EQ(covered_pixels(first_only.render(testing::camera({0, 2, 25}, {0, 2, 40}, 32, 24))), 0u);
+  const MethodOptions whole("voxel", {{"resolution", "64"}, {"bound", "scene"}});
+  EXPECT_EQ(lost_pixels(FrameBufferImage(scene, whole, ctx).render(turned), fresh), 0u);
 }
 
 // A scene the camera does not see: every batch draws nothing, the picture is background.

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "bucket_sort.h"
+#include "tunnel_closing.h"
 
 namespace shadowkit::voxel {
 
@@ -21,10 +22,34 @@ void add_samples(const Subpatch& leaf, std::uint32_t id, const VoxelGrid& grid,
   });
 }
 
+// \p voxels with the voxels \p fills adds (tunnel_closing.h), each with its source's samples.
+SurfaceVoxels with_fills(const SurfaceVoxels& voxels, std::vector<TunnelFill> fills) {
+  std::sort(fills.begin(), fills.end(),
+            [](const TunnelFill& a, const TunnelFill& b) { return a.key < b.key; });
+  SurfaceVoxels out;
+  const auto add = [&](std::uint64_t key, std::uint64_t of) {
+    const auto at = std::size_t(std::lower_bound(voxels.keys.begin(), voxels.keys.end(), of) -
+                                voxels.keys.begin());
+    out.keys.push_back(key);
+    out.samples.insert(out.samples.end(), voxels.samples.begin() + voxels.first_sample[at],
+                       voxels.samples.begin() + voxels.first_sample[at + 1]);
+    out.first_sample.push_back(std::uint32_t(out.samples.size()));
+  };
+  std::size_t next_fill = 0;
+  for (const std::uint64_t key : voxels.keys) {
+    for (; next_fill < fills.size() && fills[next_fill].key < key; ++next_fill) {
+      add(fills[next_fill].key, fills[next_fill].source);
+    }
+    add(key, key);
+  }
+  for (; next_fill < fills.size(); ++next_fill) add(fills[next_fill].key, fills[next_fill].source);
+  return out;
+}
+
 }  // namespace
 
 SurfaceVoxels SurfaceVoxels::collect(const std::vector<Subpatch>& leaves, const VoxelGrid& grid,
-                                     const VoxelKeys& keys, int adjacency) {
+                                     const VoxelKeys& keys, int adjacency, bool corners_only) {
   // In key order: grouped by brick, each brick's few samples sorted.
   std::vector<std::uint32_t> first;
   std::vector<Sample> samples;
@@ -46,6 +71,11 @@ SurfaceVoxels SurfaceVoxels::collect(const std::vector<Subpatch>& leaves, const 
     out.samples.push_back(sample);
   }
   if (!out.keys.empty()) out.first_sample.push_back(std::uint32_t(out.samples.size()));
+  // §3: N = 6 promises to stop 26-paths, which corners alone do not on curved surfaces.
+  if (adjacency == 6 && !corners_only) {
+    std::vector<TunnelFill> fills = close_tunnels(out.keys, grid, keys);
+    if (!fills.empty()) return with_fills(out, std::move(fills));
+  }
   return out;
 }
 

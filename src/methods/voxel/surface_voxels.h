@@ -17,9 +17,11 @@ struct SurfaceVoxels {
   std::vector<std::uint32_t> first_sample{0};  ///< voxel i: samples[first[i] .. first[i+1])
   std::vector<std::uint32_t> samples;
 
-  /// The voxels of \p leaves' corners (and bridges, see add_samples) inside \p grid.
+  /// The voxels of \p leaves' corners (and bridges, see for_each_leaf_voxel) inside \p grid;
+  /// with \p adjacency 6 also those that close tunnels (close_tunnels()), unless the paper's
+  /// corners alone are asked for (\p corners_only).
   static SurfaceVoxels collect(const std::vector<Subpatch>& leaves, const VoxelGrid& grid,
-                               const VoxelKeys& keys, int adjacency);
+                               const VoxelKeys& keys, int adjacency, bool corners_only = false);
   std::size_t size() const { return keys.size(); }
   std::size_t memory_bytes() const;
 };

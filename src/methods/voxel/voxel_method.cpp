@@ -48,6 +48,12 @@ bool bound_option(const MethodOptions& options) {
   return bound == "scene";
 }
 
+bool paper_option(const MethodOptions& options) {
+  const double paper = options.number("paper", 0);
+  if (paper != 0 && paper != 1) bad_option("paper", "expected 0 or 1", options);
+  return paper == 1;
+}
+
 // §5.1 keeps no voxels and no subpatches: the topology test's lists are what it avoids.
 bool streamed_option(const MethodOptions& options, voxel::ShadowTest test) {
   const double framebuffer = options.number("framebuffer", 1);
@@ -72,18 +78,20 @@ std::size_t max_subpatches_option(const MethodOptions& options, std::size_t fall
 }  // namespace
 
 VoxelMethod::VoxelMethod(const MethodOptions& options, std::size_t max_subpatches) {
-  options.expect_only(
-      "voxel", {"resolution", "adjacency", "test", "bound", "framebuffer", "max_subpatches"});
+  options.expect_only("voxel", {"resolution", "adjacency", "test", "bound", "framebuffer", "paper",
+                                "max_subpatches"});
   resolution_ = resolution_option(options);
   adjacency_ = adjacency_option(options);
-  test_ = test_option(options);
+  rules_ = {test_option(options), paper_option(options)};
   whole_scene_ = bound_option(options);
-  streamed_mode_ = streamed_option(options, test_);
+  streamed_mode_ = streamed_option(options, rules_.test);
   max_subpatches_ = max_subpatches_option(options, max_subpatches);
 }
 
 void VoxelMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
-  grid_ = voxel::make_grid(voxel::frame_bound(scene, whole_scene_), resolution_);
+  std::vector<Camera> views{scene.camera};
+  views.insert(views.end(), other_views_.begin(), other_views_.end());
+  grid_ = voxel::make_grid(voxel::frame_bound(scene, views, whole_scene_), resolution_);
   patches_.emplace(scene);
   // Counted before they are stored: the frame buffer mode keeps every subpatch, and §5.1
   // runs the recursion again for each light.
@@ -102,7 +110,7 @@ void VoxelMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
   if (!leaves) throw too_many();
   leaves_ = std::move(*leaves);
   const voxel::VoxelKeys keys(grid_.dims);
-  voxels_ = voxel::SurfaceVoxels::collect(leaves_, grid_, keys, adjacency_);
+  voxels_ = voxel::SurfaceVoxels::collect(leaves_, grid_, keys, adjacency_, rules_.paper);
   buffer_ = voxel::CubicFrameBuffer(grid_, voxels_.keys);
 }
 
@@ -110,10 +118,14 @@ void VoxelMethod::build(const Scene& scene, std::size_t light, const Context& /*
   light_ = scene.lights.at(light);
   if (streamed_mode_) {
     streamed_.reset();  // the previous light's plane goes before the next one is built
-    streamed_.emplace(*patches_, grid_, adjacency_, light_);
+    streamed_.emplace(*patches_, grid_, adjacency_, light_, rules_);
     return;
   }
-  stats_ = voxel::determine_shadows(light_, leaves_, voxels_, test_, buffer_);
+  stats_ = voxel::determine_shadows(light_, leaves_, voxels_, rules_, buffer_);
+}
+
+bool VoxelMethod::serves(const Scene& scene, const Camera& camera) const {
+  return voxel::grid_serves(grid_, scene, camera);
 }
 
 voxel::VoxelState VoxelMethod::state_at(Vec3 p) const {

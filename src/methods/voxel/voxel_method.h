@@ -28,6 +28,8 @@ namespace shadowkit::voxel {
 /// - `framebuffer` (default 1): 1 keeps the voxels' states in the cubic frame buffer (§5.2);
 ///   0 streams the voxels onto the projection plane and decides each visible point on the
 ///   fly (§5.1, voxel::StreamedShadows), offset test only.
+/// - `paper` (default 0): 1 runs §3 and §4 as the paper writes them (voxel::ShadowRules;
+///   with N = 6, the corners' voxels alone, no tunnels closed).
 /// - `max_subpatches` (default kMaxSubpatches): the most leaves the voxelization may make;
 ///   prepare() counts them before keeping more than voxel::kKeptWhileCounting, and more is
 ///   an InputError.
@@ -49,6 +51,13 @@ class VoxelMethod final : public ShadowMethod {
   std::size_t memory_bytes() const override;
   MethodCounters counters() const override;
 
+  /// Views besides the scene's camera that the frame buffer must serve (§5.2: a new view
+  /// needs no new shadow work): with `bound=view`, prepare() bounds the grid to hold them.
+  void serve_views(std::vector<Camera> views) { other_views_ = std::move(views); }
+  /// Whether the frame buffer prepared for \p scene holds every voxel the view of \p camera
+  /// needs, so that a render from there drops no geometry.
+  bool serves(const Scene& scene, const Camera& camera) const;
+
   const voxel::VoxelGrid& grid() const { return grid_; }
   const voxel::PatchSet& patches() const { return *patches_; }
   int adjacency() const { return adjacency_; }
@@ -66,10 +75,11 @@ class VoxelMethod final : public ShadowMethod {
  private:
   int resolution_ = 256;
   int adjacency_ = 26;
-  voxel::ShadowTest test_ = voxel::ShadowTest::topology;
+  voxel::ShadowRules rules_;
   bool whole_scene_ = false;
   bool streamed_mode_ = false;
   std::size_t max_subpatches_ = kMaxSubpatches;
+  std::vector<Camera> other_views_;
 
   voxel::VoxelGrid grid_;
   std::optional<voxel::PatchSet> patches_;  ///< §5.1: voxelized again per light

@@ -42,20 +42,22 @@ StillImage render_still(const Scene& scene, const MethodOptions& settings, const
 }
 
 struct FrameBufferImage::Parts {
+  const Scene& scene;
   VoxelMethod method;
   SubpatchImage image;
 };
 
 FrameBufferImage::FrameBufferImage(const Scene& scene, const MethodOptions& settings,
-                                   const Context& ctx) {
+                                   const Context& ctx, std::vector<Camera> other_views) {
   VoxelMethod method = method_for_render(settings);
+  method.serve_views(std::move(other_views));
   if (!method.keeps_frame_buffer()) {
     throw InputError("option 'voxel.framebuffer'",
                      "the image from the cubic frame buffer (Lai & Cheng 5.2) needs "
                      "voxel.framebuffer=1");
   }
   SubpatchImage image = make_subpatch_image(scene, method, ctx);
-  parts_ = std::make_unique<Parts>(Parts{std::move(method), std::move(image)});
+  parts_ = std::make_unique<Parts>(Parts{scene, std::move(method), std::move(image)});
 }
 
 FrameBufferImage::FrameBufferImage(FrameBufferImage&&) noexcept = default;
@@ -63,6 +65,12 @@ FrameBufferImage& FrameBufferImage::operator=(FrameBufferImage&&) noexcept = def
 FrameBufferImage::~FrameBufferImage() = default;
 
 Image<Rgb8> FrameBufferImage::render(const Camera& camera) {
+  if (!parts_->method.serves(parts_->scene, camera)) {
+    throw InputError("scene '" + parts_->scene.name + "'",
+                     "this view sees geometry, or shadows on it, outside the cubic frame "
+                     "buffer made for the views given (voxel.bound=view); make the image for "
+                     "this view too, or set voxel.bound=scene");
+  }
   return parts_->image.render(camera);
 }
 

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -14,6 +15,7 @@
 #include "patch_set.h"
 #include "surface_voxels.h"
 #include "testing/test_scenes.h"
+#include "tunnel_closing.h"
 
 namespace shadowkit::voxel {
 namespace {
@@ -53,12 +55,14 @@ struct Voxelized {
   SurfaceVoxels voxels;
 };
 
-Voxelized voxelize_scene(const Scene& scene, int resolution, int adjacency) {
+Voxelized voxelize_scene(const Scene& scene, int resolution, int adjacency,
+                         bool corners_only = false) {
   Voxelized v;
   v.grid = make_grid(scene.bounds(), resolution);
   const PatchSet patches(scene);
   v.leaves = *voxelize(patches, v.grid, adjacency, std::numeric_limits<std::size_t>::max());
-  v.voxels = SurfaceVoxels::collect(v.leaves, v.grid, VoxelKeys(v.grid.dims), adjacency);
+  v.voxels =
+      SurfaceVoxels::collect(v.leaves, v.grid, VoxelKeys(v.grid.dims), adjacency, corners_only);
   return v;
 }
 
@@ -276,16 +280,79 @@ TEST(SharedSides, SubdivisionPatchesAgreeOnEverySharedSide) {
   EXPECT_EQ(shared, 48);
 }
 
-// On a curved surface the N = 6 voxelization is 6-connected but may let a 26-path through
-// where the surface turns diagonally between voxels (docs/methods/voxel.md); it still stops
-// 18-paths.
+// §3 on a curved surface: corners in 26-adjacent voxels stop 6-paths, in 6-adjacent voxels
+// 26-paths. Where a subpatch grazes a voxel vertex with no corner in the two voxels that
+// touch there, N = 6 closes the tunnel (tunnel_closing.h); at M = 48 a 26-path once slipped
+// through the cube's surface there.
 TEST(Separability, NoLeakFromInsideACatmullClarkSurface) {
   const Scene scene = subdivision_scene();
-  for (const auto& [adjacency, path] : {std::pair{26, 6}, std::pair{18, 6}, std::pair{6, 18}}) {
-    const Voxelized v = voxelize_scene(scene, 48, adjacency);
-    const VoxelIndex inside = v.grid.voxel_of(v.grid.to_grid({0, 0, 0}));
-    EXPECT_FALSE(leaks(v, path, inside)) << "N=" << adjacency;
+  for (const int resolution : {32, 48, 64}) {
+    for (const auto& [adjacency, path] : {std::pair{26, 6}, std::pair{18, 6}, std::pair{6, 26}}) {
+      const Voxelized v = voxelize_scene(scene, resolution, adjacency);
+      const VoxelIndex inside = v.grid.voxel_of(v.grid.to_grid({0, 0, 0}));
+      EXPECT_FALSE(leaks(v, path, inside)) << "M=" << resolution << " N=" << adjacency;
+    }
   }
+  // The paper's corners alone (voxel.paper=1) let the 26-path through.
+  const Voxelized corners = voxelize_scene(scene, 48, 6, true);
+  EXPECT_TRUE(leaks(corners, 26, corners.grid.voxel_of(corners.grid.to_grid({0, 0, 0}))));
+}
+
+// Whether the empty voxels of a 2 x 2 x 2 block (bit x + 2y + 4z set for a non-empty one)
+// are one 6-connected set, by a flood fill over VoxelIndex adjacency.
+bool empties_joined(std::uint8_t occupied) {
+  std::vector<VoxelIndex> empty;
+  for (int b = 0; b < 8; ++b) {
+    if (!(occupied >> b & 1)) empty.push_back({b & 1, b >> 1 & 1, b >> 2 & 1});
+  }
+  if (empty.empty()) return true;
+  std::vector<bool> reached(empty.size(), false);
+  reached[0] = true;
+  for (std::size_t round = 0; round < empty.size(); ++round) {
+    for (std::size_t i = 0; i < empty.size(); ++i) {
+      for (std::size_t j = 0; j < empty.size(); ++j) {
+        if (reached[i] && adjacent(empty[i], empty[j], 6)) reached[j] = true;
+      }
+    }
+  }
+  return std::all_of(reached.begin(), reached.end(), [](bool r) { return r; });
+}
+
+// Every block: the fill takes only empty voxels and leaves the empty ones joined, and a block
+// whose empty voxels are joined already gets none.
+TEST(TunnelFill, JoinsTheEmptyVoxelsOfEveryBlock) {
+  for (int occupied = 0; occupied < 256; ++occupied) {
+    const std::uint8_t fill = tunnel_fill(std::uint8_t(occupied));
+    EXPECT_EQ(fill & occupied, 0) << occupied;
+    EXPECT_TRUE(empties_joined(std::uint8_t(occupied | fill))) << occupied;
+    if (empties_joined(std::uint8_t(occupied))) {
+      EXPECT_EQ(fill, 0) << occupied;
+    }
+  }
+  EXPECT_EQ(tunnel_fill(0x00), 0);     // nothing there
+  EXPECT_EQ(tunnel_fill(0xFF), 0);     // nothing empty
+  EXPECT_EQ(tunnel_fill(0x7E), 0x01);  // the six around the diagonal 0-7: voxel 0 filled
+  EXPECT_EQ(tunnel_fill(0xF6), 0x01);  // 0 and 3 touch along an edge, walled off on top
+  EXPECT_EQ(tunnel_fill(0x06), 0);     // 0 and 3 joined over the top layer
+  EXPECT_EQ(tunnel_fill(0x96), 0x29);  // a checkerboard: three of its four empty voxels
+}
+
+// The six voxels around a body diagonal of a block in a 6^3 grid: one end of the diagonal is
+// filled, with the samples of a voxel next to it; no voxels, no fill.
+TEST(TunnelFill, ClosesATunnelInAGridOnce) {
+  VoxelGrid grid;
+  grid.dims = {6, 6, 6};
+  const VoxelKeys keys(grid.dims);
+  std::vector<std::uint64_t> ring;
+  for (int b = 1; b < 7; ++b)
+    ring.push_back(keys.key({2 + (b & 1), 2 + (b >> 1 & 1), 2 + (b >> 2 & 1)}));
+  std::sort(ring.begin(), ring.end());
+  const std::vector<TunnelFill> fills = close_tunnels(ring, grid, keys);
+  ASSERT_EQ(fills.size(), 1u);
+  EXPECT_EQ(keys.voxel(fills[0].key), (VoxelIndex{2, 2, 2}));
+  EXPECT_TRUE(std::binary_search(ring.begin(), ring.end(), fills[0].source));
+  EXPECT_TRUE(adjacent(keys.voxel(fills[0].source), {2, 2, 2}, 6));
+  EXPECT_TRUE(close_tunnels({}, grid, keys).empty());
 }
 
 TEST(FrameBound, LeavesOutTheGroundNobodySees) {
@@ -294,11 +361,15 @@ TEST(FrameBound, LeavesOutTheGroundNobodySees) {
                                     {testing::point_light({0, 5, 0})},
                                     {testing::horizontal_quad(-1000, 1000, -1000, 1000, 0),
                                      box({-0.2, 0, -0.2}, {0.2, 0.4, 0.2})});
-  const Bounds3 bound = frame_bound(scene, false);
+  const Bounds3 bound = frame_bound(scene, {&scene.camera, 1}, false);
   EXPECT_LT(bound.extent().x, 5.0);
   EXPECT_LT(bound.extent().z, 5.0);
   EXPECT_GE(bound.hi.y, 0.4);
-  EXPECT_EQ(frame_bound(scene, true).extent().x, 2000);
+  EXPECT_EQ(frame_bound(scene, {&scene.camera, 1}, true).extent().x, 2000);
+  // A camera looking away from everything: nothing to bound but the scene.
+  const Camera away = testing::camera({0, 3, 10}, {0, 13, 20}, 64, 48);
+  EXPECT_TRUE(view_bound(scene, away).empty());
+  EXPECT_EQ(frame_bound(scene, {&away, 1}, false).extent().x, 2000);
 }
 
 TEST(FrameBuffer, TwoBitsPerVoxelInSparseBricks) {

@@ -3,12 +3,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <opensubdiv/far/primvarRefiner.h>
-#include <opensubdiv/far/topologyDescriptor.h>
 
 #include <map>
 #include <unordered_map>
 
 #include "control_meshes.h"
+#include "osd_reference.h"
 #include "shadowkit/core/error.h"
 
 namespace shadowkit {
@@ -17,11 +17,7 @@ namespace {
 namespace Far = OpenSubdiv::Far;
 using ::testing::HasSubstr;
 
-struct Point {
-  Vec3 p;
-  void Clear() { p = {}; }
-  void AddWithWeight(const Point& src, double w) { p += src.p * w; }
-};
+using Point = test::OsdPoint;
 
 /// A vertex of a uniform refinement with its place on a patch.
 struct PatchSample {
@@ -38,26 +34,12 @@ struct PatchSample {
 class UniformReference {
  public:
   UniformReference(const PolygonSoup& control, const SubdivisionSurface& surface, int levels) {
-    OpenSubdiv::Sdc::Options rules;
-    rules.SetVtxBoundaryInterpolation(OpenSubdiv::Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-    std::vector<int> sizes, indices(control.indices.begin(), control.indices.end());
-    bool quads = true;
-    for (std::size_t f = 0; f < control.face_count(); ++f) {
-      sizes.push_back(int(control.face_start[f + 1] - control.face_start[f]));
-      quads = quads && sizes.back() == 4;
-    }
-    Far::TopologyDescriptor d;
-    d.numVertices = int(control.positions.size());
-    d.numFaces = int(sizes.size());
-    d.numVertsPerFace = sizes.data();
-    d.vertIndicesPerFace = indices.data();
-    using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-    refiner_.reset(Factory::Create(d, Factory::Options(OpenSubdiv::Sdc::SCHEME_CATMARK, rules)));
+    refiner_ = test::reference_refiner(control);
     Far::TopologyRefiner::UniformOptions uniform(levels);
     uniform.fullTopologyInLastLevel = true;  // the limit masks need the last level's rings
     refiner_->RefineUniform(uniform);
     // The surface's patches are the control faces or, after the one-step rule, level 1's.
-    base_level_ = quads && surface.patch_count() == control.face_count() ? 0 : 1;
+    base_level_ = surface.patch_count() == surface.control_face_count() ? 0 : 1;
     refine_positions(control.positions);
     place_base_faces(surface);
     for (int level = base_level_; level < levels; ++level) descend(level);

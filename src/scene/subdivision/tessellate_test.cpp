@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+#include <random>
 #include <set>
 
 #include "control_meshes.h"
@@ -80,6 +83,117 @@ TEST(Tessellation, TinyAndHugeCoordinatesStayClosed) {
     EXPECT_TRUE(mesh.closed());
     EXPECT_EQ(mesh.face_count(), 24u * 9 * 2);
   }
+}
+
+// A pinhole camera's view from \p eye: 720 rows over a 45 degree field, no lights.
+ViewTolerance view_from(Vec3 eye) {
+  ViewTolerance view;
+  view.eye = eye;
+  view.pixel_at_unit_distance = 2 * std::tan(M_PI / 8) / 720;
+  return view;
+}
+
+// Seen from near one side, the patches there take more segments than those far off; sides
+// between them take the finer count, and the coarser cells along them are fanned, so the
+// mesh stays closed and outward, with every point on the limit surface.
+TEST(ViewTessellation, MixedSegmentsStayClosedAndOutward) {
+  for (const auto& [control, eye] : {std::pair{test::cube_control(), Vec3{0.05, 0.1, 0.6}},
+                                     {test::torus_control(), Vec3{2, 1, 0.5}}}) {
+    const auto surface = SubdivisionSurface::build(control, "test");
+    const ViewTessellation t = surface->tessellate_for_view(view_from(eye), 1 << 22);
+    EXPECT_FALSE(t.coarsened);
+    EXPECT_EQ(t.triangles_asked, t.soup.face_count());
+    EXPECT_GE(t.finest, 4);
+    EXPECT_LT(t.soup.face_count(), surface->patch_count() * t.finest * t.finest * 2);
+    const Mesh mesh = Mesh::build(t.soup, "test", kQuiet);
+    EXPECT_EQ(mesh.face_count(), t.soup.face_count());
+    EXPECT_TRUE(mesh.closed());
+    EXPECT_TRUE(mesh.consistently_oriented());
+    EXPECT_GT(signed_volume(t.soup), 0);
+  }
+}
+
+// The point of triangle (a, b, c) nearest \p p (Ericson, Real-Time Collision Detection 5.1.5).
+Vec3 nearest_on_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a, bp = p - b, cp = p - c;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap), d3 = dot(ab, bp), d4 = dot(ac, bp);
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d1 <= 0 && d2 <= 0) return a;
+  if (d3 >= 0 && d4 <= d3) return b;
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
+  if (va <= 0 && d4 >= d3 && d5 >= d6) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  return a + ab * (vb / (va + vb + vc)) + ac * (vc / (va + vb + vc));
+}
+
+double distance_to(const PolygonSoup& soup, Vec3 p) {
+  double best = INFINITY;
+  for (std::size_t f = 0; f < soup.face_count(); ++f) {
+    const std::uint32_t* v = &soup.indices[soup.face_start[f]];
+    best =
+        std::min(best, length(p - nearest_on_triangle(p, soup.positions[v[0]], soup.positions[v[1]],
+                                                      soup.positions[v[2]])));
+  }
+  return best;
+}
+
+// The limit surface at random points lies within a pixel of the tessellation for the view
+// (the cells are held to half a pixel at their centres and side midpoints), where the
+// uniform 8 x 8 of the same torus, seen from close, is more than a pixel off.
+TEST(ViewTessellation, TheLimitSurfaceStaysWithinAPixel) {
+  const auto surface = SubdivisionSurface::build(test::torus_control(), "torus");
+  const ViewTolerance view = view_from({0.5, 3, 0.2});
+  const PolygonSoup soup = surface->tessellate_for_view(view, std::size_t(1) << 22).soup;
+  const PolygonSoup uniform = surface->tessellate(8);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> share(0, 1);
+  double worst = 0, worst_uniform = 0;
+  for (int k = 0; k < 200; ++k) {
+    const auto patch = std::uint32_t(k % surface->patch_count());
+    const Vec3 q = surface->evaluate(patch, share(random), share(random)).position;
+    const double pixel = view.pixel_at_unit_distance * length(q - view.eye);
+    worst = std::max(worst, distance_to(soup, q) / pixel);
+    worst_uniform = std::max(worst_uniform, distance_to(uniform, q) / pixel);
+  }
+  std::printf("the limit surface within %.3f pixels of the view's tessellation, %.3f of 8 x 8\n",
+              worst, worst_uniform);
+  EXPECT_LE(worst, 1.0);
+  EXPECT_GT(worst_uniform, 1.0);
+}
+
+TEST(ViewTessellation, NearerEyesAskForMoreAndAFarEyeForOneCell) {
+  const auto surface = SubdivisionSurface::build(test::torus_control(), "torus");
+  std::size_t previous = 0;
+  for (const double distance : {400.0, 40.0, 8.0, 4.0}) {
+    const ViewTessellation t =
+        surface->tessellate_for_view(view_from({0, distance, 0}), std::size_t(1) << 22);
+    EXPECT_GE(t.soup.face_count(), previous) << distance;
+    previous = t.soup.face_count();
+  }
+  // So far off that a patch is below half a pixel: one cell each, the uniform tessellation.
+  const ViewTessellation far = surface->tessellate_for_view(view_from({0, 1e6, 0}), 1 << 22);
+  EXPECT_EQ(far.finest, 1);
+  EXPECT_EQ(far.soup.positions, surface->tessellate(1).positions);
+  EXPECT_EQ(far.soup.indices, surface->tessellate(1).indices);
+}
+
+// Over the bound, every patch is halved until the tessellation fits, still closed; at one
+// cell a patch it is what it is.
+TEST(ViewTessellation, TheBoundCoarsensItAndItStaysClosed) {
+  const auto surface = SubdivisionSurface::build(test::torus_control(), "torus");
+  const ViewTolerance near = view_from({0, 1.2, 0});
+  const ViewTessellation free = surface->tessellate_for_view(near, std::size_t(1) << 22);
+  const ViewTessellation bounded = surface->tessellate_for_view(near, free.soup.face_count() / 3);
+  EXPECT_TRUE(bounded.coarsened);
+  EXPECT_EQ(bounded.triangles_asked, free.soup.face_count());
+  EXPECT_LE(bounded.soup.face_count(), free.soup.face_count() / 3);
+  EXPECT_EQ(bounded.finest * 2, free.finest);
+  EXPECT_TRUE(Mesh::build(bounded.soup, "torus", kQuiet).closed());
+  const ViewTessellation tiny = surface->tessellate_for_view(near, 1);
+  EXPECT_EQ(tiny.finest, 1);
+  EXPECT_EQ(tiny.soup.face_count(), surface->patch_count() * 2);
 }
 
 }  // namespace
