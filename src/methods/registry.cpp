@@ -41,7 +41,8 @@ std::vector<SettingInfo> method_settings(std::string_view method) {
             {"test", "topology", {"topology", "offset"}, ""},
             {"bound", "view", {"view", "scene"}, ""},
             {"max_subpatches", "33554432", {}, "1..2^28"},
-            {"framebuffer", "1", flag, ""}};
+            {"framebuffer", "1", flag, ""},
+            {"paper", "0", flag, ""}};
   }
   return {};
 }
