@@ -2,6 +2,8 @@
 #include <httplib.h>
 #include <pthread.h>
 
+#include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <memory>
@@ -186,11 +188,19 @@ int run_serve(const ServeOptions& options, const Context& ctx) {
                 ": the viewer is open to every machine that can reach this address; it has no "
                 "password");
   }
-  signals.on_signal([&http] { http.stop(); });
+  std::atomic<bool> listening_over = false;
+  signals.on_signal([&http, &listening_over] {
+    // A signal may come before listen_after_bind() runs, when stop() would be lost.
+    while (!http.is_running() && !listening_over) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    http.stop();
+  });
   std::printf("shadowkit serve: http://%s:%d/ (frame stream ws://%s:%d/; Ctrl-C stops)\n",
               host.c_str(), port, host.c_str(), stream->port());
   std::fflush(stdout);
   http.listen_after_bind();
+  listening_over = true;
   stream->stop();
   sessions.reset();
   return 0;

@@ -53,12 +53,19 @@ class ServeProcess {
     if (pid_ > 0 && !stopped_) stop();
     close(out_);
   }
-  /// SIGTERM, then the exit status.
+  /// SIGTERM, then the exit status; -1 when it has not exited 30 s later (it is then killed).
   int stop() {
     stopped_ = true;
     kill(pid_, SIGTERM);
     int status = 0;
-    waitpid(pid_, &status, 0);
+    for (int waited_ms = 0; waitpid(pid_, &status, WNOHANG) == 0; waited_ms += 10) {
+      if (waited_ms > 30000) {
+        kill(pid_, SIGKILL);
+        waitpid(pid_, &status, 0);
+        return -1;
+      }
+      usleep(10000);
+    }
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
   /// Exit status of a process that stops by itself (a refused option), with all it printed.
@@ -220,6 +227,15 @@ TEST(ServeOptions, RefusesWhatItCannotListenOn) {
   EXPECT_THAT(elsewhere.output(), HasSubstr("cannot listen on 192.0.2.1"));
   ServeProcess scene({"no-such-scene.json", "--port", "0"});
   EXPECT_EQ(scene.wait(), 2);
+}
+
+// SIGTERM as soon as the URL is printed, before the server may have started listening.
+TEST(ServeOptions, StopsOnSigtermAtOnce) {
+  for (int i = 0; i < 10; ++i) {
+    ServeProcess server({"cubes:27", "--port", "0"});
+    ASSERT_TRUE(server.listening()) << server.output();
+    EXPECT_EQ(server.stop(), 0);
+  }
 }
 
 TEST(ServeOptions, WarnsWhenItListensBeyondLoopback) {
