@@ -29,8 +29,8 @@ StreamSessions::~StreamSessions() {
 void StreamSessions::request(Connection connection, std::string text) {
   {
     std::lock_guard lock(mutex_);
-    std::string& waiting = waiting_[connection];
-    replaced_ += !waiting.empty();
+    std::optional<std::string>& waiting = waiting_[connection];
+    replaced_ += waiting.has_value();
     waiting = std::move(text);
   }
   wake_.notify_all();
@@ -54,7 +54,7 @@ void StreamSessions::work() {
       auto it = waiting_.upper_bound(last_served_);
       for (std::size_t n = 0; n < waiting_.size(); ++n, ++it) {
         if (it == waiting_.end()) it = waiting_.begin();
-        if (!it->second.empty()) return it;
+        if (it->second) return it;
       }
       return waiting_.end();
     };
@@ -62,8 +62,8 @@ void StreamSessions::work() {
     if (stopping_) return;
     const auto it = next();
     last_served_ = it->first;
-    const std::string text = std::move(it->second);
-    it->second.clear();
+    const std::string text = std::move(*it->second);
+    it->second.reset();
     lock.unlock();
     answer(last_served_, text);
     lock.lock();

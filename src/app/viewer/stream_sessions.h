@@ -10,6 +10,7 @@
 #include <functional>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -42,8 +43,8 @@ class StreamSessions {
   std::function<void(Connection, std::string)> send_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
-  /// Each open connection's newest request not yet taken; empty: none.
-  std::map<Connection, std::string> waiting_;
+  /// Each open connection's newest request not yet taken, if any.
+  std::map<Connection, std::optional<std::string>> waiting_;
   Connection last_served_ = 0;
   std::uint64_t replaced_ = 0;
   bool stopping_ = false;

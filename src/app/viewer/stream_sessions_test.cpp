@@ -99,9 +99,12 @@ TEST_F(StreamSessionsTest, ABadRequestIsAnsweredWithItsReason) {
   got = answers.wait([](const auto& a) { return a.size() == 2; });
   EXPECT_EQ(got[1].info["error"], "request: is not valid JSON");
   EXPECT_TRUE(got[1].info["id"].is_null());
-  sessions.request(1, request(4));
+  sessions.request(1, "");
   got = answers.wait([](const auto& a) { return a.size() == 3; });
-  EXPECT_EQ(got[2].info["id"], 4);
+  EXPECT_EQ(got[2].info["error"], "request: is not valid JSON");
+  sessions.request(1, request(4));
+  got = answers.wait([](const auto& a) { return a.size() == 4; });
+  EXPECT_EQ(got[3].info["id"], 4);
 }
 
 TEST_F(StreamSessionsTest, EveryConnectionIsServed) {
