@@ -165,29 +165,20 @@ Turn turn_between(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
   return t;
 }
 
-// Where branch \p b crosses slice \p s (at theta \p theta): its edge there, found by its
-// upper thetas and confirmed by the slice's own side test. False when none crosses.
-bool branch_crossing(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Branch& b,
-                     const ThetaSlice& s, double theta, Crossing& at) {
+// The ridge edge of branch \p b that crosses slice \p s (at theta \p theta), found by the
+// branch's upper thetas and confirmed by the slice's own side test, and where; -1 when none
+// does.
+std::int64_t branch_crossing(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
+                             const Branch& b, const ThetaSlice& s, double theta, Crossing& at) {
   const auto first_below = std::partition_point(b.top.begin(), b.top.end(),
                                                 [theta](double top) { return top >= theta; });
   const int i = int(first_below - b.top.begin()) - 1;
   for (const int c : {i, i + 1, i - 1}) {
     if (c < 0 || c >= int(b.ridges.size())) continue;
-    const RidgeEdge& re = ridges[b.ridges[std::size_t(c)]];
-    if (!crosses(m, s, re.edge)) continue;
-    at = edge_crossing(m, s, re.edge);
-    return at.rho > 0;
-  }
-  return false;
-}
-
-// The ridge edge of branch \p b that crosses slice \p s, and where; -1 when none does.
-std::int64_t crossing_ridge(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Branch& b,
-                            const ThetaSlice& s, double theta, Crossing& at) {
-  if (!branch_crossing(m, ridges, b, s, theta, at)) return -1;
-  for (const std::uint32_t i : b.ridges) {
-    if (ridges[i].edge == std::uint32_t(at.edge)) return i;
+    const std::uint32_t re = b.ridges[std::size_t(c)];
+    if (!crosses(m, s, ridges[re].edge)) continue;
+    at = edge_crossing(m, s, ridges[re].edge);
+    return at.rho > 0 ? re : -1;
   }
   return -1;
 }
@@ -237,8 +228,8 @@ void insert_hole_peak(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
   for (const std::uint32_t b : pairs.active()) {
     const std::int64_t e = pairs.partner(b);
     Crossing from, to;
-    if (e < 0 || !branch_crossing(m, ridges, branches[b], s, t.theta, from) ||
-        !branch_crossing(m, ridges, branches[std::size_t(e)], s, t.theta, to)) {
+    if (e < 0 || branch_crossing(m, ridges, branches[b], s, t.theta, from) < 0 ||
+        branch_crossing(m, ridges, branches[std::size_t(e)], s, t.theta, to) < 0) {
       continue;
     }
     if (from.phi < phi && phi < to.phi && to.phi - from.phi < width) {
@@ -283,11 +274,11 @@ void pairs_at(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
     RePair p;
     p.entry = s.entry;
     p.theta = theta;
-    const std::int64_t begin = crossing_ridge(m, ridges, branches[b], s, theta, p.from);
+    const std::int64_t begin = branch_crossing(m, ridges, branches[b], s, theta, p.from);
     if (begin < 0) continue;
     p.begin = std::uint32_t(begin);
     const std::int64_t e = pairs.partner(b);
-    if (e >= 0) p.end = crossing_ridge(m, ridges, branches[std::size_t(e)], s, theta, p.to);
+    if (e >= 0) p.end = branch_crossing(m, ridges, branches[std::size_t(e)], s, theta, p.to);
     out.push_back(p);
   }
 }
