@@ -178,7 +178,7 @@ std::int64_t branch_crossing(const SlicedMesh& m, std::span<const RidgeEdge> rid
     const std::uint32_t re = b.ridges[std::size_t(c)];
     if (!crosses(m, s, ridges[re].edge)) continue;
     at = edge_crossing(m, s, ridges[re].edge);
-    return at.rho > 0 ? re : -1;
+    return at.rho > 0 ? std::int64_t(re) : -1;
   }
   return -1;
 }
