@@ -267,6 +267,23 @@ TEST(RePairing, TouchingLoopsPairApart) {
   expect_pairs_join_their_far_sheets(touching);
 }
 
+// A light in the planes of two faces of a box (as in the conformance scene
+// lights-in-face-planes, whose rows pairing=paper also runs): those faces occlude nothing,
+// and every pair still names ridge edges of the loop, in the slice's half-plane, and joins
+// its far sheet.
+TEST(RePairing, ALightInFacePlanesPairsTheLoopOfTheOtherFaces) {
+  const Paired box(
+      testing::make_scene(testing::camera({-6, 3, 3}, {0, 0.5, 0}, 64, 48),
+                          {Light::point({-2, 1.2, 1})}, {testing::box({-1, 0, -1}, {1, 1.2, 1})}),
+      64);
+  for (const RePair& p : box.pairs) {
+    EXPECT_LT(p.begin, box.loops.ridges.size());
+    EXPECT_LT(p.end, std::int64_t(box.loops.ridges.size()));
+    EXPECT_GT(p.from.rho, 0);
+  }
+  expect_pairs_join_their_far_sheets(box);
+}
+
 // The paper takes closed, consistently oriented objects: an open one (the Z-folded strip of
 // Figs. 3 / 23) is left to the walk.
 TEST(RePairing, AnOpenMeshIsLeftToTheWalk) {
