@@ -7,36 +7,171 @@
 #include <limits>
 
 #include "shadowkit/core/error.h"
+#include "shadowkit/raster/cluster_view.h"
 #include "shadowkit/raster/tile_bins.h"
 #include "shadowkit/raster/triangle_setup.h"
 
 namespace shadowkit {
 namespace {
 
+using raster::ClusterInView;
 using raster::TileBins;
+using raster::TileDepth;
 constexpr int kTile = ScanConverter::kTileSize;
+constexpr int kTilePixels = kTile * kTile;
 
-struct TileBuffers {
-  double key[kTile * kTile];
-  std::uint32_t face[kTile * kTile];
+// Every tile of the raster, each in its own kTile x kTile slot of the buffers, drawn into
+// batch after batch.
+class TileFrame {
+ public:
+  TileFrame(int width, int height)
+      : width_(width),
+        height_(height),
+        tiles_x_((width + kTile - 1) / kTile),
+        tiles_y_((height + kTile - 1) / kTile) {
+    const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
+    // Kept per thread between frames: a fresh 25 MB at 1920x1080 costs its page faults.
+    thread_local std::vector<double> keys;
+    thread_local std::vector<std::uint32_t> faces;
+    keys.resize(tiles * kTilePixels);
+    faces.resize(tiles * kTilePixels);
+    key_ = keys.data(), face_ = faces.data();
+    depth_.resize(tiles);
+  }
+
+  int tile_count() const { return tiles_x_ * tiles_y_; }
+  RasterTile tile(int t) const {
+    const int x0 = (t % tiles_x_) * kTile, y0 = (t / tiles_x_) * kTile;
+    return {x0,
+            y0,
+            std::min(kTile, width_ - x0),
+            std::min(kTile, height_ - y0),
+            key_ + std::size_t(t) * kTilePixels,
+            face_ + std::size_t(t) * kTilePixels};
+  }
+
+  // Whether what is drawn already hides every pixel \p c can draw.
+  bool hides(const ClusterInView& c) const {
+    if (!started_) return false;
+    for (int ty = c.y0 / kTile; ty <= c.y1 / kTile; ++ty) {
+      for (int tx = c.x0 / kTile; tx <= c.x1 / kTile; ++tx) {
+        const int x0 = tx * kTile, y0 = ty * kTile;
+        if (!depth_[std::size_t(ty) * tiles_x_ + tx].hidden(
+                std::max(x0, c.x0), std::min(x0 + kTile - 1, c.x1), std::max(y0, c.y0),
+                std::min(y0 + kTile - 1, c.y1), c.nearest)) {
+          return false;
+        }
+      }
+    }
+    return true;
+  }
+
+  // Draws \p tris into every tile they reach; the first batch starts every tile, and the
+  // last hands every tile to \p fn while it is in cache.
+  void draw(const raster::ScreenTriangles& tris, bool first, bool last,
+            const std::function<void(const RasterTile&)>& fn) {
+    const TileBins bins(tris, width_, height_);
+    tbb::parallel_for(0, tile_count(), [&](int t) {
+      const RasterTile r = tile(t);
+      if (first)
+        depth_[t].reset(r.x0, r.y0, r.width, r.height, key_ + std::size_t(t) * kTilePixels,
+                        face_ + std::size_t(t) * kTilePixels);
+      if (bins.start[t + 1] > bins.start[t]) {
+        depth_[t].draw(tris,
+                       {bins.items.data() + bins.start[t], bins.items.data() + bins.start[t + 1]});
+      }
+      if (last) fn(r);
+    });
+    started_ = true;
+  }
+
+ private:
+  int width_, height_, tiles_x_, tiles_y_;
+  double* key_;
+  std::uint32_t* face_;
+  std::vector<TileDepth> depth_;
+  bool started_ = false;  ///< whether the tiles have been reset
 };
+
+// Faces of outward solids turned from the eye, which their solid's near side hides: only of
+// solids wholly past the near plane, since one the near plane cuts shows its inside.
+class HiddenSides {
+ public:
+  HiddenSides(const Scene& scene, const RasterProjection& view)
+      : scene_(scene), view_(view), past_near_(scene.outward_solids().size()) {
+    tbb::parallel_for(std::size_t(0), past_near_.size(), [&](std::size_t s) {
+      const Bounds3& box = scene.outward_solids().bounds(s);
+      bool past = true;
+      for (int k = 0; k < 8; ++k) past = past && view.to_view(box.corner(k)).z > view.near;
+      past_near_[s] = past;
+    });
+  }
+
+  bool hidden(std::uint32_t face) const {
+    const OutwardSolids& solids = scene_.outward_solids();
+    const std::int32_t s = solids.solid_of(face);
+    if (s < 0 || !past_near_[std::size_t(s)]) return false;
+    return view_.orthographic ? solids.far_side_along(scene_, face, view_.forward)
+                              : solids.far_side_from(scene_, face, view_.eye);
+  }
+
+ private:
+  const Scene& scene_;
+  const RasterProjection& view_;
+  std::vector<std::uint8_t> past_near_;
+};
+
+// The triangles of the clusters \p batch that neither what \p frame has drawn nor their own
+// solid hides.
+std::vector<std::uint32_t> unhidden_triangles(const Scene& scene, const HiddenSides& sides,
+                                              const TileFrame& frame,
+                                              std::span<const ClusterInView> batch) {
+  const TriangleClusters& clusters = scene.triangles().clusters;
+  const std::vector<std::uint32_t>& face = scene.triangles().triangle_face;
+  constexpr std::size_t kSize = TriangleClusters::kSize;
+  std::vector<std::uint32_t> kept(batch.size() * kSize);
+  std::vector<std::uint8_t> count(batch.size(), 0);
+  tbb::parallel_for(std::size_t(0), batch.size(), [&](std::size_t i) {
+    if (frame.hides(batch[i])) return;
+    for (const std::uint32_t t : clusters.cluster(batch[i].cluster)) {
+      if (!sides.hidden(face[t])) kept[i * kSize + count[i]++] = t;
+    }
+  });
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < batch.size(); ++i) {
+    std::copy_n(kept.begin() + std::ptrdiff_t(i * kSize), count[i],
+                kept.begin() + std::ptrdiff_t(n));
+    n += count[i];
+  }
+  kept.resize(n);
+  return kept;
+}
 
 }  // namespace
 
+// The clusters go nearest first in batches that grow geometrically, each culled against what
+// the batches before it drew: hierarchical z-buffer visibility (Greene, Kass & Miller 1993)
+// with the scene's clusters as its boxes. Of a million triangles in a cube field, the near
+// ones hide most of the rest before any is set up. Every pixel still gets the nearest key of
+// all the triangles, whatever order they are drawn in.
 void ScanConverter::rasterize_tiles(const RasterProjection& view, const Context& /*ctx*/,
                                     const std::function<void(const RasterTile&)>& fn) const {
-  const raster::ScreenTriangles tris = raster::setup_triangles(scene_, view);
-  const TileBins bins(tris, view.width, view.height);
-  const int tile_count = bins.tiles_x * bins.tiles_y;
-  tbb::parallel_for(0, tile_count, [&](int tile) {
-    thread_local TileBuffers buf;
-    const int x0 = (tile % bins.tiles_x) * kTile, y0 = (tile / bins.tiles_x) * kTile;
-    const int w = std::min(kTile, view.width - x0), h = std::min(kTile, view.height - y0);
-    raster::draw_tile(
-        tris, {bins.items.data() + bins.start[tile], bins.items.data() + bins.start[tile + 1]}, x0,
-        y0, w, h, buf.key, buf.face);
-    fn(RasterTile{x0, y0, w, h, buf.key, buf.face});
-  });
+  const std::vector<ClusterInView> order = raster::clusters_in_view(scene_, view);
+  std::vector<std::size_t> batch_start{0};
+  for (std::size_t size = std::max(kFirstBatch, order.size() / 64);
+       batch_start.back() < order.size(); size += size / 4) {
+    batch_start.push_back(std::min(order.size(), batch_start.back() + size));
+  }
+  if (batch_start.size() == 1) batch_start.push_back(0);  // nothing in view: one empty batch
+
+  TileFrame frame(view.width, view.height);
+  const HiddenSides sides(scene_, view);
+  for (std::size_t b = 0; b + 1 < batch_start.size(); ++b) {
+    const std::span<const ClusterInView> batch(order.data() + batch_start[b],
+                                               batch_start[b + 1] - batch_start[b]);
+    const std::vector<std::uint32_t> ids = unhidden_triangles(scene_, sides, frame, batch);
+    frame.draw(raster::setup_triangles(scene_, view, ids), b == 0, b + 2 == batch_start.size(), fn);
+  }
 }
 
 DepthFaceBuffer ScanConverter::rasterize(const RasterProjection& view, const Context& ctx) const {

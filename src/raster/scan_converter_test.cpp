@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <random>
 
 #include "shadowkit/core/image.h"
@@ -142,13 +143,15 @@ TEST(ScanConverter, NearestFaceWinsWithoutBackFaceCulling) {
   EXPECT_NEAR(1.0 / bottom.depth_key[16 * 32 + 16], 5.0, 1e-3);  // view depth, off-axis pixel
 }
 
-// Every triangle depth-tested over the whole raster in triangle order, the first of equally
-// near ones kept: what the tiles, their hierarchical depth and their nearest-first order must
-// reproduce bit for bit.
-DepthFaceBuffer in_triangle_order(const Scene& scene, const RasterProjection& view) {
+// Every triangle but those of faces \p skip names depth-tested over the whole raster in
+// triangle order, the first of equally near ones kept: what the tiles, their hierarchical
+// depth and their nearest-first order must reproduce bit for bit.
+DepthFaceBuffer in_triangle_order(const Scene& scene, const RasterProjection& view,
+                                  const std::function<bool(std::uint32_t)>& skip = {}) {
   std::vector<double> key(std::size_t(view.width) * view.height, -INFINITY);
   std::vector<std::uint32_t> face(key.size(), kNoFace);
   for_each_owned_pixel(scene, view, [&](const raster::ScreenTriangle& t, int x, int y) {
+    if (skip && skip(t.face)) return;
     const std::size_t i = std::size_t(y) * view.width + x;
     const double z = t.key_a * x + (t.key_b * y + t.key_c);
     if (z > key[i]) key[i] = z, face[i] = t.face;
@@ -175,16 +178,51 @@ TEST(ScanConverter, HiddenTrianglesDroppedWholeChangeNoPixel) {
       testing::make_scene(testing::camera({0, 4, 25}, {0, 2, 0}, 200, 150, 50), {}, objects);
   const RasterProjection view = RasterProjection::from_camera(scene.camera, 1e-3);
   const DepthFaceBuffer tiles = ScanConverter(scene).rasterize(view, {});
-  const DepthFaceBuffer reference = in_triangle_order(scene, view);
-  std::size_t ground = 0;
+  // The far side of each box from the eye is not drawn: its near side hides it. Drawn, it
+  // takes pixel centres along the silhouettes only, where snapped to 1/256 pixel it reaches
+  // past the near side (or ties with it on their shared edge).
+  const auto far_side = [&](std::uint32_t f) {
+    return scene.outward_solids().far_side_from(scene, f, view.eye);
+  };
+  const DepthFaceBuffer reference = in_triangle_order(scene, view, far_side);
+  const DepthFaceBuffer every_face = in_triangle_order(scene, view);
+  std::size_t ground = 0, silhouette = 0;
   for (std::size_t i = 0; i < tiles.face.size(); ++i) {
     ASSERT_EQ(tiles.face[i], reference.face[i]) << "pixel " << i;
     ASSERT_EQ(tiles.depth_key[i], reference.depth_key[i]) << "pixel " << i;
+    if (tiles.face[i] != every_face.face[i] || tiles.depth_key[i] != every_face.depth_key[i]) {
+      ASSERT_TRUE(far_side(every_face.face[i])) << "pixel " << i;
+      ++silhouette;
+    }
     if (tiles.face[i] == kNoFace) continue;
     ASSERT_NE(scene.object_of_face(tiles.face[i]), 301u) << "pixel " << i;
     ground += scene.object_of_face(tiles.face[i]) == 300;
   }
   EXPECT_GT(ground, 1000u);  // the first of the coincident squares shows
+  EXPECT_LT(silhouette, tiles.face.size() / 200);
+}
+
+// The far side of a closed box is drawn where its near side cannot hide it: from inside the
+// box, and where the near plane cuts the near side away.
+TEST(ScanConverter, FarSideShowsFromInsideAndThroughTheNearPlane) {
+  const RasterProjection inside_view = [] {
+    const Camera c = testing::camera({0.2, 0.1, 0.3}, {1, 0, 0}, 40, 30, 60);
+    return RasterProjection::from_camera(c, 1e-3);
+  }();
+  const Scene room = testing::make_scene(testing::camera({0.2, 0.1, 0.3}, {1, 0, 0}, 40, 30, 60),
+                                         {}, {testing::box({-1, -1, -1}, {1, 1, 1})});
+  ASSERT_EQ(room.outward_solids().size(), 1u);
+  const DepthFaceBuffer walls = ScanConverter(room).rasterize(inside_view, {});
+  EXPECT_EQ(std::count(walls.face.begin(), walls.face.end(), kNoFace), 0);
+
+  // The eye 1e-4 outside the box's -x face, looking in: the near plane at 1e-3 cuts that face
+  // away, and the +x face behind it fills the view.
+  const Camera at_wall = testing::camera({-1.0001, 0, 0}, {1, 0, 0}, 40, 30, 60);
+  const Scene box = testing::make_scene(at_wall, {}, {testing::box({-1, -1, -1}, {1, 1, 1})});
+  const DepthFaceBuffer cut =
+      ScanConverter(box).rasterize(RasterProjection::from_camera(at_wall, 1e-3), {});
+  EXPECT_EQ(std::count(cut.face.begin(), cut.face.end(), kNoFace), 0);
+  EXPECT_EQ(cut.face[15 * 40 + 20], 1u);  // +x
 }
 
 }  // namespace

@@ -7,64 +7,7 @@
 namespace shadowkit::raster {
 namespace {
 
-constexpr int kTile = TileBins::kTile;
-
-// One level of hierarchical depth (Greene, Kass & Miller 1993) over blocks of a tile: each block's
-// farthest key so far. Triangles go nearest first, so that most of those hidden behind the nearer
-// ones meet full blocks and are dropped whole: a cube field seen at a low angle stacks
-// dozens of triangles on a pixel.
-constexpr int kBlock = 8, kBlocks = kTile / kBlock;
-static_assert(kBlocks * kBlocks <= 64, "a bit per block");
-
-// A tile's keys, w x h in rows of w, with their blocks' farthest keys.
-struct DepthBlocks {
-  double* key = nullptr;
-  int w = 0, h = 0;
-  double far[kBlocks * kBlocks];
-  std::uint64_t stale = 0;  ///< blocks drawn into since their farthest key was taken
-
-  // The farthest key of block b; background counts as -inf, farther than anything.
-  double far_key(int b) const {
-    const int bx = (b % kBlocks) * kBlock, by = (b / kBlocks) * kBlock;
-    double out = INFINITY;
-    for (int y = by; y < std::min(h, by + kBlock); ++y) {
-      for (int x = bx; x < std::min(w, bx + kBlock); ++x) out = std::min(out, key[y * w + x]);
-    }
-    return out;
-  }
-};
-
-// The pixels [xa, xb] x [ya, yb] of a tile at (x0, y0) as a rectangle of blocks.
-struct BlockRange {
-  int bx0, bx1, by0, by1;
-  BlockRange(int xa, int xb, int ya, int yb, int x0, int y0)
-      : bx0((xa - x0) / kBlock),
-        bx1((xb - x0) / kBlock),
-        by0((ya - y0) / kBlock),
-        by1((yb - y0) / kBlock) {}
-};
-
-// Whether every block of \p r has its farthest key beyond \p nearest: nothing with keys at
-// most \p nearest can show there.
-bool hidden(DepthBlocks& d, const BlockRange& r, double nearest) {
-  for (int by = r.by0; by <= r.by1; ++by) {
-    for (int bx = r.bx0; bx <= r.bx1; ++bx) {
-      const int b = by * kBlocks + bx;
-      if (d.stale >> b & 1) {
-        d.far[b] = d.far_key(b);
-        d.stale &= ~(std::uint64_t(1) << b);
-      }
-      if (!(nearest < d.far[b])) return false;
-    }
-  }
-  return true;
-}
-
-void mark_stale(DepthBlocks& d, const BlockRange& r) {
-  for (int by = r.by0; by <= r.by1; ++by) {
-    for (int bx = r.bx0; bx <= r.bx1; ++bx) d.stale |= std::uint64_t(1) << (by * kBlocks + bx);
-  }
-}
+constexpr int kBlock = TileDepth::kBlock, kBlocks = TileDepth::kBlocks;
 
 // The largest key of triangle \p t over pixel centres [xa, xb] x [ya, yb], raised past the
 // rounding of the per-pixel sums: a linear function peaks at a corner.
@@ -95,50 +38,99 @@ void draw_span(const ScreenTriangle& t, int py, int xa, int xb, double* key, std
   }
 }
 
-template <bool kFaces>
-void draw(const ScreenTriangles& tris, std::span<const std::uint32_t> bin, int x0, int y0, int w,
-          int h, double* keys, std::uint32_t* faces) {
-  thread_local DepthBlocks d;
-  thread_local std::vector<std::pair<double, std::uint32_t>> order;  // nearest first
-  d.key = keys, d.w = w, d.h = h, d.stale = 0;
+}  // namespace
+
+void TileDepth::reset(int x0, int y0, int w, int h, double* keys, std::uint32_t* faces) {
+  x0_ = x0, y0_ = y0, w_ = w, h_ = h, key_ = keys, face_ = faces, stale_ = 0;
   std::fill_n(keys, w * h, -INFINITY);
-  if constexpr (kFaces) std::fill_n(faces, w * h, kNoFace);
-  std::fill_n(d.far, kBlocks * kBlocks, -INFINITY);
-  order.clear();
-  for (const std::uint32_t id : bin) {
-    const ScreenTriangle& t = tris[id];
-    order.emplace_back(nearest_key(t, std::max(x0, t.min_x), std::min(x0 + w - 1, t.max_x),
-                                   std::max(y0, t.min_y), std::min(y0 + h - 1, t.max_y)),
-                       id);
+  if (faces) std::fill_n(faces, w * h, kNoFace);
+  std::fill_n(far_, kBlocks * kBlocks, -INFINITY);
+}
+
+TileDepth::BlockRange TileDepth::blocks(int xa, int xb, int ya, int yb) const {
+  return {(xa - x0_) / kBlock, (xb - x0_) / kBlock, (ya - y0_) / kBlock, (yb - y0_) / kBlock};
+}
+
+bool TileDepth::hidden(int xa, int xb, int ya, int yb, double nearest) const {
+  return hidden(blocks(xa, xb, ya, yb), nearest);
+}
+
+bool TileDepth::hidden(const BlockRange& r, double nearest) const {
+  for (int by = r.by0; by <= r.by1; ++by) {
+    for (int bx = r.bx0; bx <= r.bx1; ++bx) {
+      if (!(nearest < far_[by * kBlocks + bx])) return false;
+    }
   }
-  std::sort(order.begin(), order.end(),
-            [](const auto& a, const auto& b) { return a.first > b.first; });
-  for (const auto& [unused, id] : order) {
-    const ScreenTriangle& t = tris[id];
-    const int ya = std::max(y0, t.min_y), yb = std::min(y0 + h - 1, t.max_y);
-    const int xa0 = std::max(x0, t.min_x), xb0 = std::min(x0 + w - 1, t.max_x);
-    const BlockRange blocks(xa0, xb0, ya, yb, x0, y0);
-    if (hidden(d, blocks, nearest_key(t, xa0, xb0, ya, yb))) continue;
-    mark_stale(d, blocks);
-    SpanWalker walker(t, ya);
-    for (int py = ya; py <= yb; ++py, walker.next_row()) {
-      int xa = xa0, xb = xb0;
-      if (!walker.span(xa, xb)) continue;
-      const std::ptrdiff_t row = std::ptrdiff_t(py - y0) * w - x0;
-      draw_span<kFaces>(t, py, xa, xb, keys + row, kFaces ? faces + row : nullptr);
+  return true;
+}
+
+// Takes the farthest key of the blocks of \p r drawn into since; background counts as -inf,
+// farther than anything.
+void TileDepth::refresh(const BlockRange& r) {
+  for (int by = r.by0; by <= r.by1; ++by) {
+    for (int bx = r.bx0; bx <= r.bx1; ++bx) {
+      const int b = by * kBlocks + bx;
+      if (!(stale_ >> b & 1)) continue;
+      stale_ &= ~(std::uint64_t(1) << b);
+      double far = INFINITY;
+      for (int y = by * kBlock; y < std::min(h_, (by + 1) * kBlock); ++y) {
+        const double* row = key_ + y * w_;
+        for (int x = bx * kBlock; x < std::min(w_, (bx + 1) * kBlock); ++x) {
+          far = std::min(far, row[x]);
+        }
+      }
+      far_[b] = far;
     }
   }
 }
 
-}  // namespace
+template <bool kFaces>
+void TileDepth::draw_triangles(const ScreenTriangles& tris, std::span<const std::uint32_t> bin) {
+  thread_local std::vector<std::pair<double, std::uint32_t>> order;  // nearest first
+  order.clear();
+  const int xe = x0_ + w_ - 1, ye = y0_ + h_ - 1;
+  for (const std::uint32_t id : bin) {
+    const ScreenTriangle& t = tris[id];
+    order.emplace_back(nearest_key(t, std::max(x0_, t.min_x), std::min(xe, t.max_x),
+                                   std::max(y0_, t.min_y), std::min(ye, t.max_y)),
+                       id);
+  }
+  std::sort(order.begin(), order.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (const auto& [nearest, id] : order) {
+    const ScreenTriangle& t = tris[id];
+    const int ya = std::max(y0_, t.min_y), yb = std::min(ye, t.max_y);
+    const int xa0 = std::max(x0_, t.min_x), xb0 = std::min(xe, t.max_x);
+    const BlockRange r = blocks(xa0, xb0, ya, yb);
+    refresh(r);
+    if (hidden(r, nearest)) continue;
+    for (int by = r.by0; by <= r.by1; ++by) {
+      for (int bx = r.bx0; bx <= r.bx1; ++bx) stale_ |= std::uint64_t(1) << (by * kBlocks + bx);
+    }
+    SpanWalker walker(t, ya);
+    for (int py = ya; py <= yb; ++py, walker.next_row()) {
+      int xa = xa0, xb = xb0;
+      if (!walker.span(xa, xb)) continue;
+      const std::ptrdiff_t row = std::ptrdiff_t(py - y0_) * w_ - x0_;
+      draw_span<kFaces>(t, py, xa, xb, key_ + row, kFaces ? face_ + row : nullptr);
+    }
+  }
+  refresh({0, (w_ - 1) / kBlock, 0, (h_ - 1) / kBlock});
+}
+
+void TileDepth::draw(const ScreenTriangles& tris, std::span<const std::uint32_t> bin) {
+  if (face_) {
+    draw_triangles<true>(tris, bin);
+  } else {
+    draw_triangles<false>(tris, bin);
+  }
+}
 
 void draw_tile(const ScreenTriangles& tris, std::span<const std::uint32_t> bin, int x0, int y0,
                int w, int h, double* keys, std::uint32_t* faces) {
-  if (faces) {
-    draw<true>(tris, bin, x0, y0, w, h, keys, faces);
-  } else {
-    draw<false>(tris, bin, x0, y0, w, h, keys, nullptr);
-  }
+  thread_local TileDepth tile;
+  tile.reset(x0, y0, w, h, keys, faces);
+  tile.draw(tris, bin);
 }
 
 }  // namespace shadowkit::raster

@@ -243,8 +243,56 @@ SpanWalker::SpanWalker(const ScreenTriangle& t, int first_row)
              EdgeWalker(t, 2, first_row)} {}
 
 ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view) {
-  return setup_triangles(scene, view, {});
+  return setup_triangles(scene, view, std::function<bool(std::uint32_t)>());
 }
+
+namespace {
+
+// A triangle corner in view space: its position, the clip planes it is outside of and, when
+// inside them all, its fixed-point pixel position. The same point always gives the same
+// corner, so every triangle sharing a vertex snaps it identically.
+struct Corner {
+  Vec3 view_pos;
+  unsigned outcode;
+  FixedPoint fixed;
+};
+
+Corner corner(const RasterProjection& view, const std::array<ClipPlane, kClipPlanes>& planes,
+              Vec3 position) {
+  Corner c{view.to_view(position), 0, {}};
+  for (int k = 0; k < kClipPlanes; ++k) c.outcode |= (planes[k].eval(c.view_pos) < 0) << k;
+  if (c.outcode == 0) c.fixed = to_fixed(view, c.view_pos);
+  return c;
+}
+
+// Sets up triangle \p t of \p scene from its corners: dropped outside the clip planes,
+// clipped where it crosses them.
+void setup_triangle(const Scene& scene, const RasterProjection& view,
+                    const std::array<ClipPlane, kClipPlanes>& planes, std::uint32_t t,
+                    const Corner& c0, const Corner& c1, const Corner& c2,
+                    TriangleBuilder& builder) {
+  if (c0.outcode & c1.outcode & c2.outcode) return;
+  const std::uint32_t face = scene.triangles().triangle_face[t];
+  const DepthPlane k = depth_plane(scene.face_plane(face), view);
+  if (!k.valid) return;
+  const unsigned any_out = c0.outcode | c1.outcode | c2.outcode;
+  if (!any_out) return builder.emit(c0.fixed, c1.fixed, c2.fixed, k, face);
+  thread_local Polygon poly;
+  poly = clip({c0.view_pos, c1.view_pos, c2.view_pos}, planes, any_out);
+  if (poly.size() < 3) return;
+  const FixedPoint f0 = to_fixed(view, poly[0]);
+  FixedPoint prev = to_fixed(view, poly[1]);
+  for (std::size_t i = 2; i < poly.size(); ++i) {
+    const FixedPoint cur = to_fixed(view, poly[i]);
+    builder.emit(f0, prev, cur, k, face);
+    prev = cur;
+  }
+}
+
+// A triangle clipped by the five planes has at most eight corners: six triangles.
+constexpr std::size_t kChunkTriangles = ScreenTriangles::kChunkSize / 6;
+
+}  // namespace
 
 ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view,
                                 const std::function<bool(std::uint32_t)>& keep) {
@@ -265,56 +313,48 @@ ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view
     });
   }
 
-  // Per vertex, once: view-space position, outcode and (if inside) fixed-point position,
-  // so that every triangle sharing a vertex snaps it identically.
-  std::vector<Vec3> view_pos(nv);
-  std::vector<unsigned> outcode(nv);
-  std::vector<FixedPoint> fixed(nv);
+  // Per vertex, once.
+  std::vector<Corner> corners(nv);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nv, 4096), [&](const auto& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      if (keep && !used[i]) continue;
-      view_pos[i] = view.to_view(list.positions[i]);
-      unsigned code = 0;
-      for (int k = 0; k < kClipPlanes; ++k) code |= (planes[k].eval(view_pos[i]) < 0) << k;
-      outcode[i] = code;
-      if (code == 0) fixed[i] = to_fixed(view, view_pos[i]);
+      if (!keep || used[i]) corners[i] = corner(view, planes, list.positions[i]);
     }
   });
 
-  // A triangle clipped by the five planes has at most eight corners: six triangles.
-  constexpr std::size_t kChunk = ScreenTriangles::kChunkSize / 6;
   ScreenTriangles out;
   auto& chunks = out.chunks_;
-  chunks.resize((nt + kChunk - 1) / kChunk);
+  chunks.resize((nt + kChunkTriangles - 1) / kChunkTriangles);
   SHADOWKIT_CHECK(chunks.size() < (std::size_t(1) << (32 - ScreenTriangles::kPlaceBits)));
   tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
     TriangleBuilder builder(view, chunks[c]);
-    Polygon poly;
-    for (std::size_t t = c * kChunk; t < std::min(nt, (c + 1) * kChunk); ++t) {
+    for (std::size_t t = c * kChunkTriangles; t < std::min(nt, (c + 1) * kChunkTriangles); ++t) {
       if (keep && !keep(std::uint32_t(t))) continue;
       const auto& tri = list.triangles[t];
-      const unsigned all_out = outcode[tri[0]] & outcode[tri[1]] & outcode[tri[2]];
-      const unsigned any_out = outcode[tri[0]] | outcode[tri[1]] | outcode[tri[2]];
-      if (all_out) continue;
-      const std::uint32_t face = list.triangle_face[t];
-      const DepthPlane k = depth_plane(scene.face_plane(face), view);
-      if (!k.valid) continue;
-      if (!any_out) {
-        builder.emit(fixed[tri[0]], fixed[tri[1]], fixed[tri[2]], k, face);
-        continue;
-      }
-      poly = clip({view_pos[tri[0]], view_pos[tri[1]], view_pos[tri[2]]}, planes, any_out);
-      if (poly.size() < 3) continue;
-      const FixedPoint f0 = to_fixed(view, poly[0]);
-      FixedPoint prev = to_fixed(view, poly[1]);
-      for (std::size_t i = 2; i < poly.size(); ++i) {
-        const FixedPoint cur = to_fixed(view, poly[i]);
-        builder.emit(f0, prev, cur, k, face);
-        prev = cur;
-      }
+      setup_triangle(scene, view, planes, std::uint32_t(t), corners[tri[0]], corners[tri[1]],
+                     corners[tri[2]], builder);
     }
   });
+  return out;
+}
 
+ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view,
+                                std::span<const std::uint32_t> ids) {
+  const TriangleList& list = scene.triangles();
+  const auto planes = clip_planes(view);
+  ScreenTriangles out;
+  auto& chunks = out.chunks_;
+  chunks.resize((ids.size() + kChunkTriangles - 1) / kChunkTriangles);
+  SHADOWKIT_CHECK(chunks.size() < (std::size_t(1) << (32 - ScreenTriangles::kPlaceBits)));
+  tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
+    TriangleBuilder builder(view, chunks[c]);
+    const std::size_t end = std::min(ids.size(), (c + 1) * kChunkTriangles);
+    for (std::size_t i = c * kChunkTriangles; i < end; ++i) {
+      const auto& tri = list.triangles[ids[i]];
+      setup_triangle(scene, view, planes, ids[i], corner(view, planes, list.positions[tri[0]]),
+                     corner(view, planes, list.positions[tri[1]]),
+                     corner(view, planes, list.positions[tri[2]]), builder);
+    }
+  });
   return out;
 }
 

@@ -53,6 +53,8 @@ void Scene::finalize() {
     }
     for (std::uint32_t v : mesh.face_vertices) bounds_.add(mesh.vertices[v]);
   }
+  triangles_.clusters = cluster_triangles(triangles_);
+  outward_solids_ = OutwardSolids(*this);
 }
 
 void apply_transform(std::vector<Vec3>& positions, Vec3 scale, Vec3 rotate_deg, Vec3 translate) {

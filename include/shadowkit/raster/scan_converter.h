@@ -38,6 +38,8 @@ class ScanConverter {
 
   /// Tile edge in pixels.
   static constexpr int kTileSize = 64;
+  /// Clusters in the first of the batches that double (rasterize_tiles), at least.
+  static constexpr std::size_t kFirstBatch = 64;
 
   /// Nearest face per pixel. Ties in depth go to the lower triangle index.
   DepthFaceBuffer rasterize(const RasterProjection& view, const Context& ctx) const;

@@ -21,11 +21,47 @@ struct TileBins {
   int tile_count() const { return tiles_x * tiles_y; }
 };
 
+/// \brief One tile's nearest depth keys (and faces), drawn into batch after batch, with one
+/// level of hierarchical depth (Greene, Kass & Miller 1993) over its blocks of 8 x 8 pixels:
+/// each block's farthest key so far. Triangles go nearest first, so that most of those hidden
+/// behind nearer ones meet full blocks and are dropped whole: a cube field seen at a low angle
+/// stacks dozens of triangles on a pixel.
+class TileDepth {
+ public:
+  static constexpr int kBlock = 8, kBlocks = TileBins::kTile / kBlock;
+  static_assert(kBlocks * kBlocks <= 64, "a bit per block");
+
+  /// Starts the tile of pixels [x0, x0 + w) x [y0, y0 + h) with nothing drawn: \p keys (rows of
+  /// w) all -inf and, unless \p faces is null, \p faces all kNoFace.
+  void reset(int x0, int y0, int w, int h, double* keys, std::uint32_t* faces);
+  /// Draws the triangles \p bin (ids into \p tris) over the tile: every key and face is the one
+  /// drawing all batches in triangle order gives. Between equally near triangles the lower
+  /// face id wins.
+  void draw(const ScreenTriangles& tris, std::span<const std::uint32_t> bin);
+  /// Whether nothing with keys at most \p nearest can show in pixels [xa, xb] x [ya, yb]
+  /// (inside the tile): every block there has its farthest key beyond it. Reads the blocks
+  /// as the last draw() left them, so threads may ask while no one draws.
+  bool hidden(int xa, int xb, int ya, int yb, double nearest) const;
+
+ private:
+  struct BlockRange {
+    int bx0, bx1, by0, by1;
+  };
+  BlockRange blocks(int xa, int xb, int ya, int yb) const;
+  bool hidden(const BlockRange& r, double nearest) const;
+  void refresh(const BlockRange& r);
+  template <bool kFaces>
+  void draw_triangles(const ScreenTriangles& tris, std::span<const std::uint32_t> bin);
+
+  int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
+  double* key_ = nullptr;
+  std::uint32_t* face_ = nullptr;
+  double far_[kBlocks * kBlocks];
+  std::uint64_t stale_ = 0;  ///< blocks drawn into since their farthest key was taken
+};
+
 /// Draws the triangles \p bin (ids into \p tris) over the pixels [x0, x0 + w) x [y0, y0 + h)
-/// of one tile: the nearest depth key per pixel into \p keys (rows of w, -inf where nothing
-/// is drawn) and, unless \p faces is null, its face id into \p faces (kNoFace where
-/// nothing). Triangles go nearest first and those hidden behind what is drawn already are
-/// dropped whole; every key and face is the one drawing them in triangle order gives.
+/// of one tile from nothing: TileDepth::reset and TileDepth::draw.
 void draw_tile(const ScreenTriangles& tris, std::span<const std::uint32_t> bin, int x0, int y0,
                int w, int h, double* keys, std::uint32_t* faces);
 

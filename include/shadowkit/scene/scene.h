@@ -1,15 +1,18 @@
 #pragma once
 /// \brief The scene model: camera, lights and meshes in world space (scene-format.md).
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "shadowkit/core/vec.h"
 #include "shadowkit/scene/mesh.h"
+#include "shadowkit/scene/outward_solids.h"
 #include "shadowkit/scene/subdivision.h"
 #include "shadowkit/scene/sun_position.h"
 
@@ -84,11 +87,30 @@ struct SceneObject {
 };
 
 /// \brief Every face of every object, triangulated once for the scan converter and Embree.
+/// \brief A scene's triangles in small, spatially compact groups with their bounds: what lets
+/// a pass skip a whole group hidden behind nearer geometry. A group is at most kSize
+/// triangles, consecutive in the Morton order of their centroids.
+struct TriangleClusters {
+  static constexpr std::uint32_t kSize = 16;
+  std::vector<std::uint32_t> triangles;  ///< triangle ids, cluster after cluster
+  std::vector<Bounds3> bounds;           ///< per cluster, of its triangles' corners
+
+  std::size_t size() const { return bounds.size(); }
+  std::span<const std::uint32_t> cluster(std::size_t c) const {
+    const std::size_t first = c * kSize;
+    return {triangles.data() + first, std::min<std::size_t>(kSize, triangles.size() - first)};
+  }
+};
+
 struct TriangleList {
   std::vector<Vec3> positions;  ///< all objects' vertices, concatenated
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::uint32_t> triangle_face;  ///< global face id per triangle
+  TriangleClusters clusters;
 };
+
+/// Groups \p list's triangles into clusters (TriangleClusters).
+TriangleClusters cluster_triangles(const TriangleList& list);
 
 /// \brief Where a scene's working coordinates sit in its world (the input's coordinates):
 /// world = origin + scale * working.
@@ -137,12 +159,14 @@ struct Scene {
                            : Bounds3{frame.to_world(bounds_.lo), frame.to_world(bounds_.hi)};
   }
   const TriangleList& triangles() const { return triangles_; }
+  const OutwardSolids& outward_solids() const { return outward_solids_; }
 
   std::vector<std::uint32_t> face_object;  ///< object index per global face id
 
  private:
   Bounds3 bounds_;
   TriangleList triangles_;
+  OutwardSolids outward_solids_;
   std::vector<Plane> face_planes_;  ///< copies of the meshes' planes, by global face id
 };
 

@@ -5,7 +5,7 @@
 #include <functional>
 #include <vector>
 
-#include "outward_solids.h"
+#include "shadowkit/scene/outward_solids.h"
 #include "svbsp_tree.h"
 
 namespace shadowkit::svbsp {

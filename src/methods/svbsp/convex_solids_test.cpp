@@ -33,7 +33,7 @@ PolygonSoup l_prism() {
 
 std::size_t convex_count(const std::vector<PolygonSoup>& soups) {
   const Scene scene = testing::make_scene(kCamera, {testing::point_light({0, 9, 0})}, soups);
-  return ConvexSolids(scene, OutwardSolids(scene)).size();
+  return ConvexSolids(scene, scene.outward_solids()).size();
 }
 
 TEST(ConvexSolids, BoxesAndSpheresAreConvexButNotAnLShapeARoomOrAnOpenQuad) {
@@ -44,7 +44,7 @@ TEST(ConvexSolids, BoxesAndSpheresAreConvexButNotAnLShapeARoomOrAnOpenQuad) {
   EXPECT_EQ(convex_count({testing::horizontal_quad(-1, 1, -1, 1, 0)}), 0u);
   // The tetrahedra of tetra:3 touch only at corners: each is a solid of its own.
   const Scene tetra = load_scene("tetra:3", {});
-  EXPECT_EQ(ConvexSolids(tetra, OutwardSolids(tetra)).size(), 64u);
+  EXPECT_EQ(ConvexSolids(tetra, tetra.outward_solids()).size(), 64u);
 }
 
 TEST(ConvexSolids, ContourPlanesOfABoxLitFromAboveACorner) {
@@ -52,7 +52,7 @@ TEST(ConvexSolids, ContourPlanesOfABoxLitFromAboveACorner) {
   // the box on its positive side.
   const Scene scene = testing::make_scene(kCamera, {testing::point_light({4, 9, 5})},
                                           {testing::box({-1, 1, -1}, {1, 3, 1})});
-  const ConvexSolids solids(scene, OutwardSolids(scene));
+  const ConvexSolids solids(scene, scene.outward_solids());
   const Light& light = scene.lights[0];
   const auto planes = solids.contour_planes(
       0, light, [&](std::uint32_t f) { return light_side(scene.face_plane(f), light) > 0; });

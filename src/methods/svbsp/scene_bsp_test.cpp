@@ -113,7 +113,7 @@ TEST(SceneBsp, ConvexSolidsStayWholeOneLeafEach) {
   // The cubes stand apart in their slots: planes through the gaps and their faces part them,
   // so each one is one leaf holding its six faces and nothing else.
   const Scene scene = load_scene("cubes:125", {});
-  const ConvexSolids solids(scene, OutwardSolids(scene));
+  const ConvexSolids solids(scene, scene.outward_solids());
   ASSERT_EQ(solids.size(), 125u);
   const SceneBsp bsp = SceneBsp::build(scene, &solids);
   EXPECT_EQ(bsp.solid_count(), 125u);

@@ -28,9 +28,16 @@ double in_plane_tolerance(const Scene& scene, const Light& light) {
 
 }  // namespace
 
-FarSide far_side_of(const OutwardSolids& solids, const Scene& scene, const Light& light) {
-  return
-      [&solids, &scene, light](std::uint32_t face) { return solids.far_side(scene, face, light); };
+FarSide far_side_of(const Scene& scene, const Light& light) {
+  const OutwardSolids& solids = scene.outward_solids();
+  if (light.type == Light::Type::point) {
+    return [&solids, &scene, p = light.position](std::uint32_t face) {
+      return solids.far_side_from(scene, face, p);
+    };
+  }
+  return [&solids, &scene, d = light.direction](std::uint32_t face) {
+    return solids.far_side_along(scene, face, d);
+  };
 }
 
 FrontFacing front_facing(const Scene& scene, const Light& light) {

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "convex_solids.h"
-#include "outward_solids.h"
 #include "scene_bsp.h"
+#include "shadowkit/scene/outward_solids.h"
 #include "svbsp_tree.h"
 
 namespace shadowkit::svbsp {
@@ -48,8 +48,8 @@ struct GeneratorSettings {
 /// pieces are shadowed without filtering. Empty: every piece is filtered.
 using FarSide = std::function<bool(std::uint32_t face)>;
 
-/// The far-side test of \p solids for \p light.
-FarSide far_side_of(const OutwardSolids& solids, const Scene& scene, const Light& light);
+/// The far-side test of the scene's outward solids for \p light.
+FarSide far_side_of(const Scene& scene, const Light& light);
 
 /// \brief The body of Fig. 3 for one light: fed the scene pieces one BSP node at a time in
 /// front-to-back order, it grows the light's SVBSP tree and gives each piece's fragments.

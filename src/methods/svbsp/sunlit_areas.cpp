@@ -13,9 +13,10 @@ namespace {
 // Per global face: 1 when it bounds an outward solid (OutwardSolids): turned from the sun,
 // it neither receives light nor casts a shadow that the solid does not.
 std::vector<char> outward_solid_faces(const Scene& scene) {
-  const OutwardSolids solids(scene);
   std::vector<char> outward(scene.face_count());
-  for (std::uint32_t f = 0; f < scene.face_count(); ++f) outward[f] = solids.bounds_solid(f);
+  for (std::uint32_t f = 0; f < scene.face_count(); ++f) {
+    outward[f] = scene.outward_solids().bounds_solid(f);
+  }
   return outward;
 }
 

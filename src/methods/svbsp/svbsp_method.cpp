@@ -1,7 +1,5 @@
 #include "svbsp_method.h"
 
-#include <tbb/parallel_invoke.h>
-
 #include <algorithm>
 #include <string>
 
@@ -39,23 +37,21 @@ SvbspMethod::SvbspMethod(const MethodOptions& options) {
 void SvbspMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
   if (!contour_planes_) {
     // Independent: the solids' faces are found while the tree is built.
-    tbb::parallel_invoke([&] { bsp_ = svbsp::SceneBsp::build(scene); },
-                         [&] { solids_.emplace(scene); });
+    bsp_ = svbsp::SceneBsp::build(scene);
     return;
   }
   // §6, contour edges: the tree keeps each convex solid whole.
-  solids_.emplace(scene);
-  convex_solids_.emplace(scene, *solids_);
+  convex_solids_.emplace(scene, scene.outward_solids());
   bsp_ = svbsp::SceneBsp::build(scene, &*convex_solids_);
 }
 
 void SvbspMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
-  SHADOWKIT_CHECK(bsp_.has_value() && solids_.has_value());
+  SHADOWKIT_CHECK(bsp_.has_value());
   light_ = scene.lights[light];
-  result_ = svbsp::generate_shadows(
-      *bsp_, scene, light_, generator_,
-      far_side_ ? svbsp::far_side_of(*solids_, scene, light_) : svbsp::FarSide{},
-      convex_solids_ ? &*convex_solids_ : nullptr);
+  result_ =
+      svbsp::generate_shadows(*bsp_, scene, light_, generator_,
+                              far_side_ ? svbsp::far_side_of(scene, light_) : svbsp::FarSide{},
+                              convex_solids_ ? &*convex_solids_ : nullptr);
   if (shadowed_only_) {  // §6: one light at a time, the lit fragments are thrown away
     std::erase_if(result_.fragments, [](const svbsp::Fragment& f) { return f.lit; });
   }

@@ -41,7 +41,6 @@ class SvbspMethod final : public ShadowMethod {
   bool contour_planes_ = false;
   bool shadowed_only_ = false;
   std::optional<svbsp::SceneBsp> bsp_;
-  std::optional<svbsp::OutwardSolids> solids_;
   std::optional<svbsp::ConvexSolids> convex_solids_;  ///< with contour_planes only
   Light light_;
   svbsp::LightFragments result_;

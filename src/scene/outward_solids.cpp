@@ -1,10 +1,10 @@
-#include "outward_solids.h"
+#include "shadowkit/scene/outward_solids.h"
 
 #include <numeric>
 
-#include "shadowkit/methods/shadow_method.h"
+#include "shadowkit/scene/scene.h"
 
-namespace shadowkit::svbsp {
+namespace shadowkit {
 namespace {
 
 std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t f) {
@@ -61,10 +61,14 @@ OutwardSolids::OutwardSolids(const Scene& scene) : solid_(scene.face_count(), -1
   }
 }
 
-bool OutwardSolids::far_side(const Scene& scene, std::uint32_t face, const Light& light) const {
+bool OutwardSolids::far_side_from(const Scene& scene, std::uint32_t face, Vec3 point) const {
   const std::int32_t solid = solid_[face];
-  if (solid < 0 || !(light_side(scene.face_plane(face), light) < 0)) return false;
-  return light.type != Light::Type::point || outside(bounds_[std::size_t(solid)], light.position);
+  return solid >= 0 && scene.face_plane(face).distance(point) < 0 &&
+         outside(bounds_[std::size_t(solid)], point);
 }
 
-}  // namespace shadowkit::svbsp
+bool OutwardSolids::far_side_along(const Scene& scene, std::uint32_t face, Vec3 direction) const {
+  return solid_[face] >= 0 && dot(scene.face_plane(face).normal, direction) > 0;
+}
+
+}  // namespace shadowkit
