@@ -135,11 +135,13 @@ const std::vector<SceneEntry>& scene_catalog() {
     // The smallest failing scenes of scripts/mismatch_sweep.py.
     for (const char* file :
          {"angular-coarse-torus-self-shadow.json", "angular-eye-inside-box.json",
-          "angular-grazing-light-far-shadow.json",
+          "angular-fins-around-a-light-full-turn.json", "angular-grazing-light-far-shadow.json",
           "angular-knot-shadow-under-a-light-on-the-ground.json",
           "angular-light-axis-along-box-top.json", "angular-light-inside-touching-boxes.json",
-          "angular-low-sun-along-a-torus.json", "angular-resolution-grazing-light.json",
-          "angular-saturation-grazing-light.json", "raytrace-light-in-ceiling-plane.json",
+          "angular-low-sun-along-a-torus.json", "angular-open-box-face-steep-to-the-light.json",
+          "angular-prism-on-a-large-ground.json", "angular-resolution-grazing-light.json",
+          "angular-saturation-grazing-light.json", "angular-small-sheet-far-from-the-camera.json",
+          "raytrace-light-in-ceiling-plane.json",
           "volume-light-inside-box.json"}) {
       c.push_back({std::string("sweep/") + file, [file] { return sweep(file); }});
     }
@@ -405,6 +407,8 @@ const SceneTolerances kTolerances[] = {
     // -- examples/sweep/
     {"sweep/angular-coarse-torus-self-shadow.json", 0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-eye-inside-box.json",           0,      kExact, kExact, kAngular, kVoxelBand},
+    {"sweep/angular-fins-around-a-light-full-turn.json",
+                                                    0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-grazing-light-far-shadow.json", 0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-knot-shadow-under-a-light-on-the-ground.json",
                                                     0,      kExact, kExact, kAngular, kVoxelBand},
@@ -412,8 +416,13 @@ const SceneTolerances kTolerances[] = {
     {"sweep/angular-light-inside-touching-boxes.json",
                                                     0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-low-sun-along-a-torus.json",    0,      kExact, kExact, kAngular, kVoxelBand},
+    {"sweep/angular-open-box-face-steep-to-the-light.json",
+                                                    0,      kExact, kExact, kAngular, kVoxelBand},
+    {"sweep/angular-prism-on-a-large-ground.json",  0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-resolution-grazing-light.json", 0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-saturation-grazing-light.json", 0,      kExact, kExact, kAngular, kVoxelBand},
+    {"sweep/angular-small-sheet-far-from-the-camera.json",
+                                                    0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/raytrace-light-in-ceiling-plane.json",  0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/volume-light-inside-box.json",          0,      kExact, kExact, kAngular, kVoxelBand},
     // -- degenerate cases

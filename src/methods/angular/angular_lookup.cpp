@@ -144,6 +144,10 @@ LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
       if (blocks(i)) return {true, next_x, 2, i};
     }
   }
+  // A face thinner than the gap between the two slices crosses neither.
+  for (const std::uint32_t i : table.between(std::min(k, other))) {
+    if (blocks(i)) return {true, next_x, 2, i};
+  }
   return {false, next_x, 2};
 }
 

@@ -455,7 +455,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   // and corners (the depth of Sec. 5); eq. 4's inputs from the view.
   Occluders occluders;
   ViewTheta view;
-  double view_scale = 0;  // eq. 4's scale: a scan line's theta, or (eq4) Z_f in scan lines
+  double view_scale = 0;  // eq. 4's scale: an entry's theta, or (eq4) Z_f in scan lines
   tbb::parallel_invoke(
       [&] {
         tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
@@ -466,12 +466,13 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
       [&] {
         view = view_theta(scene, frame);
         if (options.resolution > 0) return;
-        view_scale = options.eq4 ? farthest_depth(scene, frame) : scan_line_theta(scene, frame);
+        view_scale = options.eq4 ? farthest_depth(scene, frame) : entry_theta(scene, frame);
       });
   table.hidden_ = std::move(occluders.hidden);
   table.corner_start_ = std::move(occluders.corner_start);
   table.corners_ = std::move(occluders.corners);
   table.theta_ = quantize(scene, frame, objects, view, view_scale, options);
+  table.fill_between(frame.point_light());
   for (const ObjectLoops& o : objects) {
     table.loop_stats_.ridge_edges += double(o.ridges.size());
     table.loop_stats_.loops += double(o.loops.size());
@@ -624,6 +625,37 @@ std::vector<AngularPair> AngularTable::compact(const std::vector<std::uint32_t>&
   std::swap(entries_.pairs, pairs);
   entries_.start = std::move(start);
   return pairs;
+}
+
+void AngularTable::fill_between(bool point_light) {
+  const int r = theta_.resolution;
+  const std::size_t slots = std::size_t(theta_.full_turn ? r : r + 1);
+  std::vector<int> slot(hidden_.size(), -1);
+  parallel_each(hidden_.size(), [&](std::size_t i) {
+    double lo = kInf, hi = -kInf;
+    for (const Vec3& c : corners(std::uint32_t(i))) {
+      if (point_light && c.y == 0 && c.z == 0) return;  // on the light's axis: every theta
+      const double theta = point_light ? std::atan2(c.y, c.z) : c.y;
+      lo = std::min(lo, theta), hi = std::max(hi, theta);
+    }
+    // A face whose corners are half a turn or more apart goes around the light's axis.
+    if (!(lo <= hi) || (point_light && hi - lo >= kPi)) return;
+    const auto gap = [&](double theta) {
+      return int(std::clamp(std::floor(theta_.position(theta) - 0.5), -1.0, double(r - 1)));
+    };
+    const int g = gap(lo);
+    if (gap(hi) == g) slot[i] = gap_slot(g);
+  });
+  between_start_.assign(slots + 1, 0);
+  for (const int s : slot) {
+    if (s >= 0) ++between_start_[std::size_t(s) + 1];
+  }
+  for (std::size_t s = 0; s < slots; ++s) between_start_[s + 1] += between_start_[s];
+  between_.resize(between_start_.back());
+  std::vector<std::uint32_t> next(between_start_.begin(), between_start_.end() - 1);
+  for (std::uint32_t i = 0; i < slot.size(); ++i) {
+    if (slot[i] >= 0) between_[next[std::size_t(slot[i])]++] = i;
+  }
 }
 
 void AngularTable::fill_blocks() {

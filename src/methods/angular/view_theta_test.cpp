@@ -72,10 +72,10 @@ TEST(ViewTheta, AutomaticResolutionFollowsTheScanLines) {
   const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center());
   const ViewTheta view = view_theta(scene, frame);
   ASSERT_TRUE(view.bounded);
-  const int full = automatic_resolution(scene, scan_line_theta(scene, frame), view.hi - view.lo);
+  const int full = automatic_resolution(scene, entry_theta(scene, frame), view.hi - view.lo);
   scene.camera.height /= 4;
   scene.camera.width /= 4;
-  const int quarter = automatic_resolution(scene, scan_line_theta(scene, frame), view.hi - view.lo);
+  const int quarter = automatic_resolution(scene, entry_theta(scene, frame), view.hi - view.lo);
   EXPECT_NEAR(double(full) / quarter, 4, 0.05);
   EXPECT_GT(full, 1080 / 2);
   EXPECT_LT(full, 4 * 1080);
