@@ -297,6 +297,7 @@ def main():
     write_meshes(args.out)
     rng = random.Random(args.seed)
     stats = {m: {"runs": 0, "fail": 0, "worst": 0.0, "worst_at": ""} for m in methods}
+    every = {m: [] for m in methods}  # (pct, scene light) of every light
     errors = []
     start = time.monotonic()
     lights = 0
@@ -315,6 +316,7 @@ def main():
             continue
         for (m, l), (pct, _) in result.items():
             stats[m]["runs"] += 1
+            every[m].append((pct, f"{name} L{l}"))
             if pct > stats[m]["worst"]:
                 stats[m]["worst"], stats[m]["worst_at"] = pct, f"{name} L{l}"
         for m, l, pct, interior in failures_of(result):
@@ -336,6 +338,9 @@ def main():
         st = stats[m]
         print(f"{m:8} {THRESHOLDS[m]:11} {st['runs']:7} {st['fail']:5} {st['worst']:9.4f}  "
               f"{st['worst_at']}")
+    for m in methods:
+        worst = sorted(every[m], reverse=True)[:5]
+        print(f"{m} worst lights: " + ", ".join(f"{at} {pct:.4f}%" for pct, at in worst))
     return 1 if errors or any(st["fail"] for st in stats.values()) else 0
 
 

@@ -472,7 +472,6 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   table.corner_start_ = std::move(occluders.corner_start);
   table.corners_ = std::move(occluders.corners);
   table.theta_ = quantize(scene, frame, objects, view, view_scale, options);
-  table.fill_between(frame.point_light());
   for (const ObjectLoops& o : objects) {
     table.loop_stats_.ridge_edges += double(o.ridges.size());
     table.loop_stats_.loops += double(o.loops.size());
@@ -490,6 +489,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     for (const std::uint32_t f : objects[o].axis_faces) work.push_back({-kInf, o, ~f});
   }
   const EntryRays rays(table.theta_, frame.point_light());
+  table.fill_between(rays, frame.point_light());
   std::vector<ThetaSlice> slices(table.theta_.resolution);
   tbb::parallel_invoke(
       [&] {
@@ -627,24 +627,28 @@ std::vector<AngularPair> AngularTable::compact(const std::vector<std::uint32_t>&
   return pairs;
 }
 
-void AngularTable::fill_between(bool point_light) {
+void AngularTable::fill_between(const EntryRays& rays, bool point_light) {
   const int r = theta_.resolution;
   const std::size_t slots = std::size_t(theta_.full_turn ? r : r + 1);
   std::vector<int> slot(hidden_.size(), -1);
+  // How far past the centre of unwrapped entry k corner v lies: a sine's sign for a point
+  // light (within half a turn of it), theta's difference for a directional one.
+  const auto past = [&](Vec3 v, int k) {
+    const auto [u, w] = rays.centre(theta_.entry(k));
+    return point_light ? v.y * w - v.z * u : v.y - u;
+  };
   parallel_each(hidden_.size(), [&](std::size_t i) {
-    double lo = kInf, hi = -kInf;
-    for (const Vec3& c : corners(std::uint32_t(i))) {
-      if (point_light && c.y == 0 && c.z == 0) return;  // on the light's axis: every theta
-      const double theta = point_light ? std::atan2(c.y, c.z) : c.y;
-      lo = std::min(lo, theta), hi = std::max(hi, theta);
+    const std::span<const Vec3> c = corners(std::uint32_t(i));
+    if (c.empty() || (point_light && c[0].y == 0 && c[0].z == 0)) return;
+    // The gap of the first corner (one arctangent per face), then every corner strictly
+    // within it: the face then lies within it too, a wedge of less than half a turn.
+    const double theta = point_light ? std::atan2(c[0].y, c[0].z) : c[0].y;
+    const int g = int(std::clamp(std::floor(theta_.position(theta) - 0.5), -1.0, double(r - 1)));
+    const bool below = theta_.full_turn || g >= 0, above = theta_.full_turn || g + 1 < r;
+    for (const Vec3& v : c) {
+      if ((below && !(past(v, g) > 0)) || (above && !(past(v, g + 1) < 0))) return;
     }
-    // A face whose corners are half a turn or more apart goes around the light's axis.
-    if (!(lo <= hi) || (point_light && hi - lo >= kPi)) return;
-    const auto gap = [&](double theta) {
-      return int(std::clamp(std::floor(theta_.position(theta) - 0.5), -1.0, double(r - 1)));
-    };
-    const int g = gap(lo);
-    if (gap(hi) == g) slot[i] = gap_slot(g);
+    slot[i] = gap_slot(g);
   });
   between_start_.assign(slots + 1, 0);
   for (const int s : slot) {

@@ -71,6 +71,7 @@ inline const double kHemisphereTan = std::sqrt(7.0);
 
 struct DepthForm;  // an occluding face's depth along a slice's rays, while the table is built
 class Saturation;  // Sec. 10's test within one entry, while the table is built
+class EntryRays;   // the entries' centre and bound directions, while the table is built
 
 /// \brief What the table is built from and how.
 struct AngularTableOptions {
@@ -235,7 +236,7 @@ class AngularTable {
   // The blocks from the kept pairs of the entries.
   void fill_blocks();
   // The occluding faces between consecutive entries' centres (between()).
-  void fill_between(bool point_light);
+  void fill_between(const EntryRays& rays, bool point_light);
   int gap_slot(int g) const {
     const int r = theta_.resolution;
     return theta_.full_turn ? ((g % r) + r) % r : std::clamp(g, -1, r - 1) + 1;

@@ -2,9 +2,13 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <utility>
 
 #include "angular_method.h"
+#include "view_theta.h"
 #include "shadowkit/core/error.h"
+#include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/scene_file.h"
 #include "testing/method_testing.h"
 #include "testing/test_scenes.h"
@@ -60,6 +64,69 @@ TEST(AngularScenes, MismatchFallsAsTheThetaResolutionGrows) {
     previous = mismatch;
   }
   EXPECT_GT(worst_interior_mismatch(scene, {"angular", {{"resolution", "99"}}}), 0.05);
+}
+
+Scene sweep(const char* file) {
+  return load_scene_file(std::string(SHADOWKIT_SOURCE_DIR) + "/examples/sweep/" + file, {});
+}
+
+// R and the mismatch of the only light of \p scene.
+std::pair<double, double> resolution_and_mismatch(const Scene& scene,
+                                                  const MethodOptions& options = {}) {
+  const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  AngularMethod method(options);
+  const double pct = testing::compare_with_reference(scene, vsb, "angular", options)[0]
+                         .interior_pct();
+  testing::method_mask(method, scene, vsb, 0);
+  return {testing::counter(method, "theta_resolution"), pct};
+}
+
+// Scenes of the mismatch sweep where the automatic R from the scene's vertices (one entry
+// per scan line at their lower quartile, at most 8 per image row) left more than 0.2%:
+// receivers that change theta little across the image, far from the light or steep to it,
+// which that R left coarse; the R from the receivers' pixels resolves them.
+TEST(AngularScenes, TheAutomaticResolutionResolvesTheSweepsReceivers) {
+  struct Case {
+    const char* file;
+    int old_r;              // the R from the vertices, and its mismatch there (percent)
+    double old_mismatch;
+    int r_least, r_most;    // the automatic R now
+    double mismatch_most;   // and its mismatch
+  };
+  for (const Case& c : {
+           // A sheet of 190 interior pixels: one differing pixel is 0.53%.
+           Case{"angular-small-sheet-far-from-the-camera.json", 31, 0.5, 500, 700, 0},
+           // The face of an open box steep to a high light: 4 times finer in theta per pixel
+           // than the view's average.
+           Case{"angular-open-box-face-steep-to-the-light.json", 283, 0.2, 1700, 2000, 0.05},
+           // A ground far below the light, the prism's vertices near it.
+           Case{"angular-prism-on-a-large-ground.json", 160, 0.6, 1000, 1400, 0},
+           // Fins around a light: the table goes all around it, the view sees a sliver.
+           Case{"angular-fins-around-a-light-full-turn.json", 1920, 1.1, kMostAutomaticEntries,
+                kMostAutomaticEntries, 0}}) {
+    const Scene scene = sweep(c.file);
+    const auto [r, mismatch] = resolution_and_mismatch(scene);
+    EXPECT_GE(r, c.r_least) << c.file;
+    EXPECT_LE(r, c.r_most) << c.file;
+    EXPECT_LE(mismatch, c.mismatch_most) << c.file;
+    const MethodOptions old("angular", {{"resolution", std::to_string(c.old_r)}});
+    EXPECT_GT(resolution_and_mismatch(scene, old).second, c.old_mismatch) << c.file;
+  }
+}
+
+// Under a light just above the ground, the knot's shadow on the ground comes from its faces
+// that reach below the light's height: thin in theta, they may lie wholly between the two
+// slices around a pixel, where the grazed-face re-check took no pair of theirs. At R = 192
+// and 193 that left 0.15% and 0.16% lit; the faces between the slices are candidates too.
+TEST(AngularScenes, TheGrazedFaceRecheckFindsFacesBetweenTheSlices) {
+  const Scene scene = sweep("angular-knot-shadow-under-a-light-on-the-ground.json");
+  for (const char* r : {"192", "193"}) {
+    const MethodOptions options("angular", {{"resolution", r}});
+    EXPECT_EQ(resolution_and_mismatch(scene, options).second, 0) << r;
+    // Without the re-check the table alone answers those pixels, in shadow.
+    const MethodOptions table_alone("angular", {{"resolution", r}, {"exact", "0"}});
+    EXPECT_EQ(resolution_and_mismatch(scene, table_alone).second, 0) << r;
+  }
 }
 
 // Sec. 10: dropping covered pairs shrinks the table and leaves the mask alone.

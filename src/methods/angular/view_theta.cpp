@@ -70,9 +70,10 @@ ViewTheta view_theta(const Scene& scene, const LightFrame& frame) {
 
 namespace {
 
-// Receiver triangles larger than this many pixels are integrated in quarters (down to
-// kSplitDepth levels): the theta of a pixel changes across a large face such as a ground.
-constexpr double kSplitPixels = 1024;
+// Receiver triangles larger than this share of the image are integrated in quarters (down
+// to kSplitDepth levels): the theta of a pixel changes across a large face such as a ground.
+// A share, not pixels, so that the integral takes the same samples at any image size.
+constexpr double kSplitShare = 1.0 / 64;
 constexpr int kSplitDepth = 4;
 
 // Faces per task of the integral: fixed blocks, so that its sum is the same on every run.
@@ -97,7 +98,8 @@ class ReceiverIntegral {
         forward_(scene.camera.forward()),
         step_(scene.camera.pixel_grid().step),
         right_(scene.camera.right() * step_),
-        up_(scene.camera.true_up() * step_) {}
+        up_(scene.camera.true_up() * step_),
+        split_pixels_(kSplitShare * scene.camera.width * scene.camera.height) {}
 
   // A face with world plane \p plane, wholly within the view: one sample at its corners'
   // mean where it is small on screen, else its fan of triangles.
@@ -108,7 +110,7 @@ class ReceiverIntegral {
       area += pixel_area(corners[0], corners[k], corners[k + 1]);
     }
     if (!(area > 0)) return;
-    if (area > kSplitPixels) {
+    if (area > split_pixels_) {
       for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
         triangle(plane, corners[0], corners[k], corners[k + 1], 0, sum);
       }
@@ -122,7 +124,7 @@ class ReceiverIntegral {
   void triangle(const Plane& plane, Vec3 a, Vec3 b, Vec3 c, int depth, PixelThetaSum& sum) const {
     const double area = pixel_area(a, b, c);
     if (!(area > 0)) return;
-    if (area > kSplitPixels && depth < kSplitDepth) {
+    if (area > split_pixels_ && depth < kSplitDepth) {
       const Vec3 ab = (a + b) * 0.5, bc = (b + c) * 0.5, ca = (c + a) * 0.5;
       triangle(plane, a, ab, ca, depth + 1, sum);
       triangle(plane, ab, b, bc, depth + 1, sum);
@@ -160,9 +162,8 @@ class ReceiverIntegral {
   // exact re-check answers there, Sec. "Faces the light grazes" of the method page).
   double pixel_theta_at(const Plane& plane, Vec3 p) const {
     const Vec3 v = frame_.local(p);
-    const Vec3 n = frame_.local_direction(plane.normal);
-    const double sine = frame_.point_light() ? std::abs(dot(n, v)) / (length(n) * length(v))
-                                             : std::abs(n.z) / length(n);
+    const Vec3 n = frame_.local_direction(plane.normal);  // a unit normal
+    const double sine = frame_.point_light() ? std::abs(dot(n, v)) / length(v) : std::abs(n.z);
     if (!(sine >= kGrazingSine)) return 0;
     // The point where the ray through a pixel one step away meets the plane: the ray (of
     // unit depth) r moves by the step d, the point by depth (d - r (n.d) / (n.r)).
@@ -177,13 +178,15 @@ class ReceiverIntegral {
       if (!frame_.point_light()) return m.y;
       return (v.z * m.y - v.y * m.z) / (v.y * v.y + v.z * v.z);
     };
-    return std::hypot(theta_change(moved(right_)), theta_change(moved(up_)));
+    const double across = theta_change(moved(right_)), down = theta_change(moved(up_));
+    return std::sqrt(across * across + down * down);
   }
 
   const LightFrame& frame_;
   Vec3 eye_, forward_;
   double step_;
   Vec3 right_, up_;  // one pixel at unit depth
+  double split_pixels_;
 };
 
 }  // namespace
@@ -195,21 +198,17 @@ double entries_per_pixel(double pixels) {
 double entry_theta(const Scene& scene, const LightFrame& frame) {
   const ViewFrustum frustum = view_of(scene);
   const ReceiverIntegral integral(scene, frame);
-  // Fixed blocks of faces, each with its own sum.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> blocks;  // object, first face
-  for (std::uint32_t o = 0; o < scene.objects.size(); ++o) {
-    const std::uint32_t faces = std::uint32_t(scene.objects[o].mesh.face_count());
-    for (std::uint32_t f = 0; f < faces; f += kFaceBlock) blocks.push_back({o, f});
-  }
-  std::vector<PixelThetaSum> sums(blocks.size());
-  tbb::parallel_for(std::size_t(0), blocks.size(), [&](std::size_t i) {
-    const auto [o, first] = blocks[i];
-    const SceneObject& object = scene.objects[o];
-    const Mesh& mesh = object.mesh;
-    const std::uint32_t last = std::min<std::uint32_t>(first + kFaceBlock, mesh.face_count());
+  // Fixed blocks of the scene's faces, each with its own sum.
+  const std::uint32_t faces = scene.face_count();
+  std::vector<PixelThetaSum> sums((faces + kFaceBlock - 1) / kFaceBlock);
+  tbb::parallel_for(std::size_t(0), sums.size(), [&](std::size_t i) {
+    const std::uint32_t first = std::uint32_t(i) * kFaceBlock;
+    const std::uint32_t last = std::min(first + kFaceBlock, faces);
     std::vector<Vec3> corners;
-    for (std::uint32_t f = first; f < last; ++f) {
-      const Plane& plane = scene.face_plane(object.first_face + f);
+    for (std::uint32_t face = first; face < last; ++face) {
+      const Mesh& mesh = scene.objects[scene.object_of_face(face)].mesh;
+      const std::uint32_t f = scene.local_face(face);
+      const Plane& plane = scene.face_plane(face);
       // Contract condition 1: only a face whose seen side the light faces can be lit.
       const double light = frame.point_light() ? plane.distance(frame.origin())
                                                : -frame.local_direction(plane.normal).z;
