@@ -137,7 +137,9 @@ const std::vector<SceneEntry>& scene_catalog() {
          {"angular-coarse-torus-self-shadow.json", "angular-eye-inside-box.json",
           "angular-fins-around-a-light-full-turn.json", "angular-grazing-light-far-shadow.json",
           "angular-knot-shadow-under-a-light-on-the-ground.json",
-          "angular-light-axis-along-box-top.json", "angular-light-inside-touching-boxes.json",
+          "angular-light-axis-along-box-top.json",
+          "angular-light-in-the-plane-of-box-bottoms.json",
+          "angular-light-inside-touching-boxes.json",
           "angular-low-sun-along-a-torus.json", "angular-open-box-face-steep-to-the-light.json",
           "angular-prism-on-a-large-ground.json", "angular-resolution-grazing-light.json",
           "angular-saturation-grazing-light.json", "raytrace-light-in-ceiling-plane.json",
@@ -413,6 +415,8 @@ const SceneTolerances kTolerances[] = {
     {"sweep/angular-knot-shadow-under-a-light-on-the-ground.json",
                                                     0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-light-axis-along-box-top.json", 0,      kExact, kExact, kAngular, kVoxelBand},
+    {"sweep/angular-light-in-the-plane-of-box-bottoms.json",
+                                                    0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-light-inside-touching-boxes.json",
                                                     0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-low-sun-along-a-torus.json",    0,      kExact, kExact, kAngular, kVoxelBand},
@@ -462,6 +466,9 @@ const struct {
     {"subdivision.json", 2.5},
     // Two fins, open non-manifold meshes, lit from their back around the light (1.9%).
     {"sweep/angular-fins-around-a-light-full-turn.json", 2.0},
+    // A point light in the plane of the ground and of the boxes' bottom faces (5.2%, not
+    // examined).
+    {"sweep/angular-light-in-the-plane-of-box-bottoms.json", 5.5},
     // A light inside a closed box: every wall is turned from it, so nothing casts and the
     // ground around the box is lit (14%, 95%, 80%).
     {"sweep/angular-light-inside-touching-boxes.json", 15},
@@ -513,6 +520,11 @@ const KnownFailure kKnownFailures[] = {
     {"shadowmap", nullptr, "sweep/angular-resolution-grazing-light.json", kShadowmapAcne},
     {"shadowmap", nullptr, "sweep/angular-saturation-grazing-light.json", kShadowmapAcne},
     {"shadowmap", nullptr, "light-very-close-to-a-surface", kShadowmapAcne},
+    {"angular", nullptr, "sweep/angular-light-in-the-plane-of-box-bottoms.json",
+     "angular: a point light exactly in the plane of the ground and of the bottom faces of the "
+     "boxes standing on it leaves stripes of the upper box lit where the lower boxes shadow "
+     "it (0.41% at the automatic R, 3.6% at R 99, 3.2% with exact=0; 0 with the light 0.001 "
+     "above or below the plane): the table misses pairs of the lower boxes, at any R"},
     {"volume", nullptr, "coincident-boxes",
      "volume: a point on one copy's face lies in the other copy's face plane, which bounds "
      "that copy's volume; the plane test rounds either way, and lines of pixels across the "

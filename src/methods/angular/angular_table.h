@@ -66,7 +66,7 @@ struct ThetaQuantization {
 
 /// Sec. 11.2's variable resolution: tan(kappa pi / 2), the largest warped tan. Entries at
 /// theta' = +-pi/2 are 1 + 7 = 8 times finer than at theta' = 0: the same ratio as the
-/// automatic R's cap of 8 entries per scan line.
+/// cap of 8 entries per scan line of eq4_resolution.
 inline const double kHemisphereTan = std::sqrt(7.0);
 
 struct DepthForm;  // an occluding face's depth along a slice's rays, while the table is built
