@@ -30,7 +30,7 @@ ViewTheta view_theta(const Scene& scene, const LightFrame& frame);
 double entry_theta(const Scene& scene, const LightFrame& frame);
 
 /// Entries per pixel at kReferencePixels pixels of receivers.
-inline constexpr double kEntriesPerPixel = 2;
+inline constexpr double kEntriesPerPixel = 3;
 /// A 320 x 240 image's pixels.
 inline constexpr double kReferencePixels = 320 * 240;
 /// Entries per pixel on receivers of any size: one entry spans at most two pixels.

@@ -82,23 +82,24 @@ TEST(ViewTheta, TheEntryOfAGroundSeenStraightDownUnderASunStraightDown) {
   const double step = scene.camera.pixel_grid().step;
   const double side = 2 / (4 * step);  // the ground's side in pixels: about 145
   ASSERT_NEAR(side, 144.85, 0.01);
-  // 20,982 pixels: 3.83 entries per pixel.
-  EXPECT_NEAR(entries_per_pixel(side * side), 2 * std::sqrt(320.0 * 240 / (side * side)), 1e-12);
+  // 20,982 pixels: 5.74 entries per pixel.
+  EXPECT_NEAR(entries_per_pixel(side * side), 3 * std::sqrt(320.0 * 240 / (side * side)), 1e-12);
   const double entry = entry_theta(scene, frame);
   EXPECT_NEAR(entry / (4 * step / entries_per_pixel(side * side)), 1, 1e-9);
-  // The ground's theta range is 2 long: R = 2 / entry, 554 entries for its 145 rows.
+  // The ground's theta range is 2 long: R = 2 / entry, 831 entries for its 145 rows.
   EXPECT_EQ(automatic_resolution(scene, entry, 2), int(2 / entry));
-  EXPECT_EQ(automatic_resolution(scene, entry, 2), 554);
+  EXPECT_EQ(automatic_resolution(scene, entry, 2), 831);
 }
 
-// Entries per pixel: 2 at a 320 x 240 image's pixels, as many times more as the receivers'
+// Entries per pixel: 3 at a 320 x 240 image's pixels, as many times more as the receivers'
 // side in pixels is shorter, and never fewer than one per two pixels.
 TEST(ViewTheta, EntriesPerPixelFollowTheReceiversSide) {
-  EXPECT_DOUBLE_EQ(entries_per_pixel(320 * 240), 2);
-  EXPECT_DOUBLE_EQ(entries_per_pixel(4 * 320 * 240), 1);
-  EXPECT_DOUBLE_EQ(entries_per_pixel(320 * 240 / 100.0), 20);
-  EXPECT_DOUBLE_EQ(entries_per_pixel(16 * 320 * 240), 0.5);
-  EXPECT_DOUBLE_EQ(entries_per_pixel(1920 * 1080), 0.5);
+  EXPECT_DOUBLE_EQ(entries_per_pixel(320 * 240), 3);
+  EXPECT_DOUBLE_EQ(entries_per_pixel(4 * 320 * 240), 1.5);
+  EXPECT_DOUBLE_EQ(entries_per_pixel(320 * 240 / 100.0), 30);
+  EXPECT_DOUBLE_EQ(entries_per_pixel(36 * 320 * 240), 0.5);
+  EXPECT_DOUBLE_EQ(entries_per_pixel(100 * 320 * 240), 0.5);
+  EXPECT_NEAR(entries_per_pixel(1920 * 1080), 0.577, 0.001);
 }
 
 // No receiver the light can light is in view: the automatic R is the number of scan lines.
@@ -133,8 +134,8 @@ TEST(ViewTheta, TheAutomaticResolutionHardlyDependsOnTheImageSize) {
   scene.camera.width /= 2;
   const int half = automatic_resolution(scene, entry_theta(scene, frame), view.hi - view.lo);
   EXPECT_NEAR(double(full) / half, 1, 0.02);
-  EXPECT_GT(full, 180);
-  EXPECT_LT(full, 8 * 180);
+  EXPECT_GT(full, 4 * 180);
+  EXPECT_LT(full, 16 * 180);
 }
 
 }  // namespace
