@@ -137,13 +137,11 @@ const std::vector<SceneEntry>& scene_catalog() {
          {"angular-coarse-torus-self-shadow.json", "angular-eye-inside-box.json",
           "angular-fins-around-a-light-full-turn.json", "angular-grazing-light-far-shadow.json",
           "angular-knot-shadow-under-a-light-on-the-ground.json",
-          "angular-light-axis-along-box-top.json",
-          "angular-light-in-the-plane-of-box-bottoms.json",
-          "angular-light-inside-touching-boxes.json",
-          "angular-low-sun-along-a-torus.json", "angular-open-box-face-steep-to-the-light.json",
-          "angular-prism-on-a-large-ground.json", "angular-resolution-grazing-light.json",
-          "angular-saturation-grazing-light.json", "raytrace-light-in-ceiling-plane.json",
-          "volume-light-inside-box.json"}) {
+          "angular-light-axis-along-box-top.json", "angular-light-in-the-plane-of-box-bottoms.json",
+          "angular-light-inside-touching-boxes.json", "angular-low-sun-along-a-torus.json",
+          "angular-open-box-face-steep-to-the-light.json", "angular-prism-on-a-large-ground.json",
+          "angular-resolution-grazing-light.json", "angular-saturation-grazing-light.json",
+          "raytrace-light-in-ceiling-plane.json", "volume-light-inside-box.json"}) {
       c.push_back({std::string("sweep/") + file, [file] { return sweep(file); }});
     }
 

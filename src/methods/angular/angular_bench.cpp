@@ -8,8 +8,8 @@
 #include <string>
 
 #include "angular_method.h"
-#include "view_theta.h"
 #include "testing/method_testing.h"
+#include "view_theta.h"
 
 namespace shadowkit::angular {
 namespace {

@@ -8,12 +8,12 @@
 #include <utility>
 
 #include "angular_method.h"
-#include "view_theta.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/scene_file.h"
 #include "testing/method_testing.h"
 #include "testing/test_scenes.h"
+#include "view_theta.h"
 
 namespace shadowkit::angular {
 namespace {
@@ -93,8 +93,8 @@ std::pair<double, double> resolution_and_mismatch(const Scene& scene,
                                                   const MethodOptions& options = {}) {
   const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
   AngularMethod method(options);
-  const double pct = testing::compare_with_reference(scene, vsb, "angular", options)[0]
-                         .interior_pct();
+  const double pct =
+      testing::compare_with_reference(scene, vsb, "angular", options)[0].interior_pct();
   testing::method_mask(method, scene, vsb, 0);
   return {testing::counter(method, "theta_resolution"), pct};
 }
@@ -107,23 +107,23 @@ TEST(AngularScenes, TheAutomaticResolutionResolvesTheSweepsReceivers) {
   struct Case {
     const char* name;
     Scene scene;
-    int old_r;              // the R from the vertices, and its mismatch there (percent)
+    int old_r;  // the R from the vertices, and its mismatch there (percent)
     double old_mismatch;
-    int r_least, r_most;    // the automatic R now
-    double mismatch_most;   // and its mismatch
+    int r_least, r_most;   // the automatic R now
+    double mismatch_most;  // and its mismatch
   };
-  for (const Case& c : {
-           // A sheet of 190 interior pixels: one differing pixel is 0.53%.
-           Case{"small sheet", small_sheet(), 31, 0.5, 800, 950, 0},
-           // The face of an open box steep to a high light: 4 times finer in theta per pixel
-           // than the view's average.
-           Case{"open box", sweep("angular-open-box-face-steep-to-the-light.json"), 283, 0.2,
-                2600, 2900, 0.05},
-           // A ground far below the light, the prism's vertices near it.
-           Case{"prism", sweep("angular-prism-on-a-large-ground.json"), 160, 0.6, 1700, 1900, 0},
-           // Fins around a light: the table goes all around it, the view sees a sliver.
-           Case{"fins", sweep("angular-fins-around-a-light-full-turn.json"), 1920, 1.1,
-                kMostAutomaticEntries, kMostAutomaticEntries, 0}}) {
+  for (const Case& c :
+       {// A sheet of 190 interior pixels: one differing pixel is 0.53%.
+        Case{"small sheet", small_sheet(), 31, 0.5, 800, 950, 0},
+        // The face of an open box steep to a high light: 4 times finer in theta per pixel
+        // than the view's average.
+        Case{"open box", sweep("angular-open-box-face-steep-to-the-light.json"), 283, 0.2, 2600,
+             2900, 0.05},
+        // A ground far below the light, the prism's vertices near it.
+        Case{"prism", sweep("angular-prism-on-a-large-ground.json"), 160, 0.6, 1700, 1900, 0},
+        // Fins around a light: the table goes all around it, the view sees a sliver.
+        Case{"fins", sweep("angular-fins-around-a-light-full-turn.json"), 1920, 1.1,
+             kMostAutomaticEntries, kMostAutomaticEntries, 0}}) {
     const auto [r, mismatch] = resolution_and_mismatch(c.scene);
     EXPECT_GE(r, c.r_least) << c.name;
     EXPECT_LE(r, c.r_most) << c.name;

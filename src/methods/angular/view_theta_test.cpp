@@ -104,8 +104,8 @@ TEST(ViewTheta, EntriesPerPixelFollowTheReceiversSide) {
 
 // No receiver the light can light is in view: the automatic R is the number of scan lines.
 TEST(ViewTheta, WithoutAReceiverTheAutomaticResolutionIsTheScanLines) {
-  for (const Vec3 sun : {Vec3{1, 0, 0},              // in the ground's plane
-                         Vec3{0, 1, 0},              // from below
+  for (const Vec3 sun : {Vec3{1, 0, 0},             // in the ground's plane
+                         Vec3{0, 1, 0},             // from below
                          Vec3{0.998, -0.06, 0}}) {  // grazing: sine 0.06 < kGrazingSine
     const Scene scene = ground_seen_from_above(normalize(sun));
     const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center());
