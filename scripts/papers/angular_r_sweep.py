@@ -4,8 +4,9 @@
 the exact assists (angular.exact=1, the default) and without them (exact=0, the discretized
 method as published); R from eq. 4 as written (resolution=eq4) against the automatic R; and,
 with the light inside the room, one table over the turn against Sec. 11.2's two hemispheres
-(angular.light_inside); and each of these settings on every built-in, example and sweep
-scene.
+(angular.light_inside); the RE-loops paper's own pairing against the far-sheet walk
+(angular.pairing), with the R sweep redone for each; and each of these settings on every
+built-in, example and sweep scene.
 
     python3 scripts/papers/angular_r_sweep.py [--repeats N] [--out FILE]
 
@@ -33,6 +34,9 @@ SWEEP_SCENES = ["table", "coil", "holed", "cubes:500", "examples/default.json"]
 # 1080-row image, and beyond.
 RESOLUTIONS = ["99", "299", "599", "1080", "2160", "4320"]
 ROOM_SCENES = ["room", "examples/room.json"]
+PAIRINGS = ["walk", "paper"]
+PAIRING_SCENES = ["coil", "holed", "hole-like", "table", "cubes:500", "examples/house.json",
+                  "examples/subdivision.json"]
 
 
 def run(args):
@@ -78,14 +82,15 @@ def bench(scene, settings, repeats):
     return total
 
 
-def r_sweep():
+def r_sweep(pairing):
     head = "| R |" + "".join(f" `{s}` exact=1 | exact=0 |" for s in SWEEP_SCENES)
     lines = [head, "|---|" + "---:|---:|" * len(SWEEP_SCENES)]
     for r in RESOLUTIONS + ["0", "eq4"]:
         cells, label = [], {"0": "automatic (0)", "eq4": "`eq4`"}.get(r, r)
         for scene in SWEEP_SCENES:
             for exact in ("1", "0"):
-                pct, resolution = compare(scene, {"resolution": r, "exact": exact})
+                pct, resolution = compare(scene, {"resolution": r, "exact": exact,
+                                                  "pairing": pairing})
                 shown = f"{pct:.4f}" if r in RESOLUTIONS else f"{pct:.4f} (R {resolution})"
                 cells.append(f" {shown} |")
         lines.append(f"| {label} |" + "".join(cells))
@@ -112,10 +117,28 @@ def light_inside(repeats):
     return lines
 
 
+def pairings(repeats):
+    """Each pairing at the automatic R: the table's pairs, the paper's own count of ridge-edge
+    pairs and of the ones it walked, build and shade times, and the mismatch."""
+    lines = ["| scene | pairing | R | table pairs | RE pairs | walked | objects paper/walk | "
+             "build ms | shade ms | mismatch % |", "|---|---|---:|---:|---:|---:|---|---:|---:|---:|"]
+    for scene in PAIRING_SCENES:
+        for pairing in PAIRINGS:
+            b = bench(scene, {"pairing": pairing}, repeats)
+            pct, resolution = compare(scene, {"pairing": pairing})
+            paper = pairing == "paper"
+            counts = (f"{b['re_pairs']:.0f} | {b['pairing_fallbacks']:.0f} | "
+                      f"{b['paper_objects']:.0f}/{b['walked_objects']:.0f}") if paper else "– | – | –"
+            lines.append(f"| `{scene}` | {pairing} | {resolution} | {b['table_pairs']:.0f} | "
+                         f"{counts} | {b['build_ms']:.2f} | {b['shade_ms']:.2f} | {pct:.4f} |")
+    return lines
+
+
 # Every built-in, example and sweep scene: the list the svbsp page measures too.
 MODES = {"default": {}, "`exact=0`": {"exact": 0}, "`resolution=eq4`": {"resolution": "eq4"},
          "`light_inside=hemispheres`": {"light_inside": "hemispheres"},
-         "all three": {"exact": 0, "resolution": "eq4", "light_inside": "hemispheres"}}
+         "all three": {"exact": 0, "resolution": "eq4", "light_inside": "hemispheres"},
+         "`pairing=paper`": {"pairing": "paper"}}
 
 
 def modes_everywhere():
@@ -139,7 +162,12 @@ def main():
     parser.add_argument("--out", default=str(PAGE))
     args = parser.parse_args()
     body = ["Interior mismatch (%) against raytrace, worst light, each scene at its own image "
-            "size; for the automatic R and eq4, each light's R:", ""] + r_sweep()
+            "size; for the automatic R and eq4, each light's R:", ""] + r_sweep("walk")
+    body += ["", "The same with the RE-loops paper's pairing (`pairing=paper`):", ""]
+    body += r_sweep("paper")
+    body += ["", "Paper pairing against the walk at the automatic R, summed over the lights "
+             f"(times: medians of {args.repeats} runs; RE pairs, walked and objects are paper "
+             "pairing's counters):", ""] + pairings(args.repeats)
     body += ["", "The light inside the room, summed over its lights (times: medians of "
              f"{args.repeats} runs):", ""] + light_inside(args.repeats)
     body += ["", "Each setting on every built-in, example and sweep scene, worst light, at the "

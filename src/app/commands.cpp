@@ -133,12 +133,12 @@ int run_render(const RenderOptions& options, const Context& ctx) {
   const std::vector<MethodRun> runs =
       run_method(scene, pass.surfaces, options.method, settings_for(options, options.method), {},
                  ctx, OnFailure::stop);
-  std::vector<const ShadowMask*> masks;
   for (const MethodRun& run : runs) {
     write_png(options.mask_prefix + ".L" + std::to_string(run.light) + ".png", run.mask);
-    masks.push_back(&run.mask);
   }
-  if (!options.image.empty()) write_png(options.image, shade_image(scene, pass.surfaces, masks));
+  if (!options.image.empty()) {
+    write_png(options.image, shade_image(scene, pass.surfaces, masks_of(runs)));
+  }
   return 0;
 }
 

@@ -15,6 +15,12 @@ double now_ms() {
   return std::chrono::duration<double, std::milli>(clock::now().time_since_epoch()).count();
 }
 
+std::vector<const ShadowMask*> masks_of(const std::vector<MethodRun>& runs) {
+  std::vector<const ShadowMask*> masks;
+  for (const MethodRun& run : runs) masks.push_back(&run.mask);
+  return masks;
+}
+
 double median(std::vector<double> samples) {
   if (samples.empty()) return 0;
   const std::size_t mid = samples.size() / 2;

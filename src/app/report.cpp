@@ -63,9 +63,7 @@ void write_report(const fs::path& dir, const Scene& scene, const CameraPass& pas
     }
     // The shaded image takes every light's mask.
     if (!all_ran(m)) continue;
-    std::vector<const ShadowMask*> masks;
-    for (const MethodRun& run : m.runs) masks.push_back(&run.mask);
-    write_png(dir / (m.name + ".png"), shade_image(scene, pass.surfaces, masks));
+    write_png(dir / (m.name + ".png"), shade_image(scene, pass.surfaces, masks_of(m.runs)));
     shaded += figure(m.name + ".png", m.name);
   }
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {

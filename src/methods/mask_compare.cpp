@@ -58,4 +58,12 @@ Image<Rgb8> difference_image(const ShadowMask& reference, const ShadowMask& mask
   return out;
 }
 
+Image<Rgb8> grey_image(const ShadowMask& mask) {
+  Image<Rgb8> image(mask.width, mask.height);
+  for (std::size_t i = 0; i < mask.size(); ++i) {
+    image.pixels[i] = {mask.pixels[i], mask.pixels[i], mask.pixels[i]};
+  }
+  return image;
+}
+
 }  // namespace shadowkit

@@ -27,7 +27,8 @@ std::vector<SettingInfo> method_settings(std::string_view method) {
     return {{"resolution", "0", {}, "0 (automatic), eq4, or entries up to 1e6"},
             {"saturated", "1", flag, ""},
             {"exact", "1", flag, ""},
-            {"light_inside", "turn", {"turn", "hemispheres"}, ""}};
+            {"light_inside", "turn", {"turn", "hemispheres"}, ""},
+            {"pairing", "walk", {"walk", "paper"}, ""}};
   }
   if (method == "svbsp") {  // "": 1, or 0 with paper=1
     return {{"paper", "0", flag, ""},         {"contour_planes", "0", flag, ""},

@@ -38,6 +38,9 @@ enum class OnFailure {
 /// message, "out of memory", or "internal error: ...".
 std::string failure_reason(const std::exception& e);
 
+/// Each run's mask, in the runs' order: one per light for shade_image.
+std::vector<const ShadowMask*> masks_of(const std::vector<MethodRun>& runs);
+
 /// \brief How often to run each stage when timing.
 struct Repetitions {
   int warmup = 0;

@@ -77,9 +77,9 @@ class FrameRenderer {
   const SceneView& scene_view() const { return scene_view_; }
   const Scene& scene() const { return scene_; }
 
-  /// Renders \p request; nullopt when \p abandoned() turned true before the frame was done
-  /// (checked between stages: nobody is left to show it). InputError when the method refuses
-  /// the scene or the view (its message says why).
+  /// Renders \p request; nullopt when \p abandoned() is true once the renderer is free to
+  /// begin it (nobody is left to show it; a frame begun is finished). InputError when the
+  /// method refuses the scene or the view (its message says why).
   std::optional<Frame> render(
       const FrameRequest& request, const std::function<bool()>& abandoned = [] { return false; });
 

@@ -31,4 +31,7 @@ MaskComparison compare_masks(const ShadowMask& reference, const ShadowMask& mask
 /// shadow where the reference is lit red, lit where the reference is in shadow blue.
 Image<Rgb8> difference_image(const ShadowMask& reference, const ShadowMask& mask);
 
+/// \p mask as a grey image: each pixel's value in all three channels.
+Image<Rgb8> grey_image(const ShadowMask& mask);
+
 }  // namespace shadowkit

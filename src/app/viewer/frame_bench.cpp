@@ -15,11 +15,6 @@ struct DefaultFrame {
   CameraPass pass = run_camera_pass(scene, {}, {});
   std::vector<MethodRun> runs =
       run_method(scene, pass.surfaces, "raytrace", {}, {}, {}, OnFailure::stop);
-  std::vector<const ShadowMask*> masks() const {
-    std::vector<const ShadowMask*> out;
-    for (const MethodRun& run : runs) out.push_back(&run.mask);
-    return out;
-  }
 };
 
 const DefaultFrame& default_frame() {
@@ -30,14 +25,14 @@ const DefaultFrame& default_frame() {
 void BM_ShadedImage(benchmark::State& state) {
   const DefaultFrame& f = default_frame();
   for (auto _ : state) {
-    benchmark::DoNotOptimize(shade_image(f.scene, f.pass.surfaces, f.masks()).pixels.data());
+    benchmark::DoNotOptimize(shade_image(f.scene, f.pass.surfaces, masks_of(f.runs)).pixels.data());
   }
 }
 BENCHMARK(BM_ShadedImage)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_EncodePng(benchmark::State& state) {
   const DefaultFrame& f = default_frame();
-  const Image<Rgb8> image = shade_image(f.scene, f.pass.surfaces, f.masks());
+  const Image<Rgb8> image = shade_image(f.scene, f.pass.surfaces, masks_of(f.runs));
   const PngSpeed speed = state.range(0) ? PngSpeed::fast : PngSpeed::small;
   std::size_t bytes = 0;
   for (auto _ : state) bytes = encode_png(image, speed).size();

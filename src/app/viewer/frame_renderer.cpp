@@ -25,20 +25,6 @@ class StageClock {
   double last_ = now_ms();
 };
 
-Image<Rgb8> grey_image(const ShadowMask& mask) {
-  Image<Rgb8> image(mask.width, mask.height);
-  for (std::size_t i = 0; i < mask.size(); ++i) {
-    image.pixels[i] = {mask.pixels[i], mask.pixels[i], mask.pixels[i]};
-  }
-  return image;
-}
-
-std::vector<const ShadowMask*> masks_of(const std::vector<MethodRun>& runs) {
-  std::vector<const ShadowMask*> masks;
-  for (const MethodRun& run : runs) masks.push_back(&run.mask);
-  return masks;
-}
-
 const char* view_name(FrameView view) {
   switch (view) {
     case FrameView::shaded:
@@ -124,7 +110,6 @@ std::optional<Frame> FrameRenderer::render(const FrameRequest& request,
       run_prepared(method, scene_, surfaces, {}, ctx_, OnFailure::stop);
   for (const MethodRun& run : runs) info["lights"].push_back(light_info(run));
   info["method_ms"] = clock.lap();
-  if (abandoned()) return std::nullopt;
 
   // raytrace's own masks are the reference when the method is raytrace as it always is.
   std::vector<MethodRun> raytrace_runs;

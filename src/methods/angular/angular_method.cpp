@@ -55,13 +55,23 @@ bool hemispheres(const MethodOptions& options) {
   return value == "hemispheres";
 }
 
+// angular.pairing: the far-sheet walk, or the RE-loops paper's branch pairs (Sec. 3.2).
+bool paper_pairing(const MethodOptions& options) {
+  const std::string value = options.text("pairing", "walk");
+  if (value != "walk" && value != "paper") {
+    throw InputError("option 'angular.pairing'", "expected walk or paper");
+  }
+  return value == "paper";
+}
+
 }  // namespace
 
 AngularMethod::AngularMethod(const MethodOptions& options) {
-  options.expect_only("angular", {"resolution", "saturated", "exact", "light_inside"});
+  options.expect_only("angular", {"resolution", "saturated", "exact", "light_inside", "pairing"});
   parse_resolution(options, table_options_);
   table_options_.saturated = flag(options, "saturated", true);
   table_options_.hemispheres = hemispheres(options);
+  table_options_.paper_pairing = paper_pairing(options);
   exact_ = flag(options, "exact", true);
 }
 
@@ -211,14 +221,22 @@ void AngularMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfac
 
 MethodCounters AngularMethod::counters() const {
   const RidgeEdgeStats& loops = table_.loop_stats();
-  return {{"ridge_edges", loops.ridge_edges},
-          {"re_loops", loops.loops},
-          {"open_re_loops", loops.open_loops},
-          {"theta_resolution", double(table_.theta().resolution)},
-          {"table_pairs", double(table_.pair_count())},
-          {"saturated_pairs", double(table_.saturated_count())},
-          {"table_bytes", double(table_.memory_bytes())},
-          {"lookup_calls", lookup_calls_}};
+  MethodCounters out{{"ridge_edges", loops.ridge_edges},
+                     {"re_loops", loops.loops},
+                     {"open_re_loops", loops.open_loops},
+                     {"theta_resolution", double(table_.theta().resolution)},
+                     {"table_pairs", double(table_.pair_count())},
+                     {"saturated_pairs", double(table_.saturated_count())},
+                     {"table_bytes", double(table_.memory_bytes())},
+                     {"lookup_calls", lookup_calls_}};
+  if (table_options_.paper_pairing) {
+    const PairingCounts& p = table_.pairing();
+    out.insert(out.end(), {{"paper_objects", p.paper_objects},
+                           {"walked_objects", p.walked_objects},
+                           {"re_pairs", p.re_pairs},
+                           {"pairing_fallbacks", p.fallbacks}});
+  }
+  return out;
 }
 
 std::unique_ptr<ShadowMethod> make_method(const MethodOptions& options) {

@@ -14,6 +14,7 @@
 
 #include "loop_slicer.h"
 #include "parallel_each.h"
+#include "re_loop_pairing.h"
 #include "view_theta.h"
 
 namespace shadowkit::angular {
@@ -44,7 +45,19 @@ struct ObjectLoops {
 struct LoopWork {
   double phi = 0;
   std::uint32_t object = 0, loop = 0;
+  bool whole_object = false;  ///< all the object's loops, paired as the RE-loops paper does
 };
+
+// The objects whose loops paper pairing takes (RE-loops paper, Sec. 3.2): per object, 1 or 0.
+std::vector<char> paper_paired(const std::vector<ObjectLoops>& objects,
+                               const std::vector<FarSheets>& sheets, bool paper) {
+  std::vector<char> out(objects.size(), 0);
+  for (std::size_t o = 0; paper && o < objects.size(); ++o) {
+    out[o] = paper_pairing_applies(sheets[o], objects[o].loops, objects[o].wraps,
+                                   !objects[o].axis_faces.empty());
+  }
+  return out;
+}
 
 // Writes the pairs of \p sorted (by phi_begin) that \p keep takes to the front of \p out:
 // the narrow ones, each with its reach, then the wide ones (longer than a sixteenth of the
@@ -482,7 +495,13 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   // starts where an RE rises through the slice, on the loop's side of smaller phi (its far
   // sheet lies towards larger phi). The walks from the light's axis come first.
   std::vector<LoopWork> work;
+  const std::vector<char> paper = paper_paired(objects, sheets, options.paper_pairing);
   for (std::uint32_t o = 0; o < objects.size(); ++o) {
+    if (paper[o] && !objects[o].loops.empty()) {
+      const auto least = std::ranges::min_element(objects[o].loop_phi);
+      work.push_back({*least, o, 0, true});
+      continue;
+    }
     for (std::uint32_t l = 0; l < objects[o].loops.size(); ++l) {
       work.push_back({objects[o].loop_phi[l], o, l});
     }
@@ -510,6 +529,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   lists.resize(kChunks);
   for (std::vector<EntryPair>& list : lists) list.clear();
   tbb::enumerable_thread_specific<SliceScratch> scratch;
+  tbb::enumerable_thread_specific<PairingStats> pairing;
   tbb::parallel_for(std::size_t(0), kChunks, [&](std::size_t c) {
     SliceScratch& local = scratch.local();
     for (std::size_t i = c * per_chunk; i < std::min(work.size(), (c + 1) * per_chunk); ++i) {
@@ -517,13 +537,23 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
       const ObjectLoops& loops = objects[o];
       const SlicedMesh m{scene.objects[o].mesh, sheets[o], loops.local, loops.theta,
                          loops.hidden_id};
-      if (l < loops.loops.size()) {
+      if (work[i].whole_object) {
+        pair_re_loops(m, loops.ridges, loops.loops, table.theta_, slices, local, lists[c],
+                      pairing.local());
+      } else if (l < loops.loops.size()) {
         slice_loop(m, loops.ridges, loops.loops[l], table.theta_, slices, local, lists[c]);
       } else {
         slice_from_axis(m, ~l, slices, local, lists[c]);
       }
     }
   });
+  if (options.paper_pairing) {
+    for (const char p : paper) (p ? table.pairing_.paper_objects : table.pairing_.walked_objects)++;
+    pairing.combine_each([&](const PairingStats& s) {
+      table.pairing_.re_pairs += double(s.re_pairs);
+      table.pairing_.fallbacks += double(s.fallbacks);
+    });
+  }
   table.entries_.pairs = std::move(storage.unsorted);
   table.fill_entries(lists);
   // Step 1.7: sort each entry by phi; Sec. 10: saturate.

@@ -81,6 +81,17 @@ struct AngularTableOptions {
   /// Sec. 11.2: a light inside the scene gets two hemisphere halves of variable resolution
   /// (ThetaQuantization::hemispheres), not one uniform table over the turn.
   bool hemispheres = false;
+  /// RE-loops paper, Secs. 3.2-3.3 as written: branch pairs from local peaks, not the walk of
+  /// the far sheets (which still pairs the objects the paper's scheme does not cover).
+  bool paper_pairing = false;
+};
+
+/// \brief How the pairs of a table were made, with paper pairing.
+struct PairingCounts {
+  double paper_objects = 0;   ///< objects paired by the paper's scheme
+  double walked_objects = 0;  ///< objects it does not cover (open, thin, around the light)
+  double re_pairs = 0;        ///< begin-end pairs of ridge edges it made
+  double fallbacks = 0;       ///< of those, the begins walked instead
 };
 
 /// \brief A pair and the entry it belongs to, while the table is built (24 bytes: no reach).
@@ -192,6 +203,8 @@ class AngularTable {
   std::size_t pair_count() const { return entries_.pairs.size(); }
   /// The ridge edges and RE loops the table was built from.
   const RidgeEdgeStats& loop_stats() const { return loop_stats_; }
+  /// With paper pairing: what it paired and where it fell back to the walk.
+  const PairingCounts& pairing() const { return pairing_; }
   /// Pairs dropped by saturation (Sec. 10).
   std::size_t saturated_count() const { return saturated_; }
   /// The occluding faces of the pairs saturation dropped from entry \p k (none for k = -1).
@@ -254,6 +267,7 @@ class AngularTable {
   std::vector<std::uint32_t> between_;        ///< per gap, the hidden faces wholly within it
   std::size_t saturated_ = 0;
   RidgeEdgeStats loop_stats_;
+  PairingCounts pairing_;
 };
 
 }  // namespace shadowkit::angular

@@ -12,6 +12,7 @@
 #include "angular_lookup.h"
 #include "angular_method.h"
 #include "loop_slicer.h"
+#include "loops_in_frame_testing.h"
 #include "occluders.h"
 #include "scan_line_run.h"
 #include "shadowkit/methods/raytrace.h"
@@ -185,23 +186,6 @@ TEST(Pairing, AHoleEndsTheSpanAtItsOwnLoop) {
   double covered = 0;
   for (const AngularPair& p : pairs) covered += p.phi_end - p.phi_begin;
   EXPECT_NEAR(covered, 2 * (phi_at(scene, {2, 2, 0}) - phi_at(scene, {1, 1.5, 0})), 1e-3);
-}
-
-// A prism over the U-shaped (non-convex) outline \p u in the xy plane, z in [-1, 1].
-PolygonSoup prism(const std::vector<Vec3>& u) {
-  PolygonSoup s;
-  const std::uint32_t n = std::uint32_t(u.size());
-  for (const Vec3& p : u) s.positions.push_back({p.x, p.y, 1});
-  for (const Vec3& p : u) s.positions.push_back({p.x, p.y, -1});
-  std::vector<std::uint32_t> front, back;
-  for (std::uint32_t i = 0; i < n; ++i) front.push_back(i), back.push_back(2 * n - 1 - i);
-  s.add_face(front);
-  s.add_face(back);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const std::uint32_t j = (i + 1) % n;
-    s.add_face({i, n + i, n + j, j});
-  }
-  return s;
 }
 
 // Figs. 26 / 27: a U-shaped solid (a hole-like notch between two arms, whose tops are equal

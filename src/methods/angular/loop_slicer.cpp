@@ -35,10 +35,6 @@ struct EdgeSides {
   }
 };
 
-Crossing edge_crossing(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t e) {
-  return EdgeSides(m, s, m.mesh.edges[e]).crossing(s, e);
-}
-
 // Where ridge edge \p re, whose ends \p sides holds, goes up through slice \p s into the
 // half-plane at its theta: a walk's start. False when it does not (the half-plane at
 // theta + pi is another entry's).
@@ -142,11 +138,11 @@ bool along_path(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f,
   return true;
 }
 
-// Walks the far sheet from \p at (on face f's edge, or on the light's X axis) across the
-// slice: one pair per face, each hidden edge crossed shared by two pairs (inserted in
-// duplicate), until the RE crossing where the shadow ends. While the walk crosses the convex
-// faces of the previous entry's walk from the same start, their exit edges still cross the
-// slice and are the only other crossings: they are taken from \p scratch's path.
+}  // namespace
+
+// While the walk crosses the convex faces of the previous entry's walk from the same start,
+// their exit edges still cross the slice and are the only other crossings: they are taken
+// from \p scratch's path.
 void walk(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, const Crossing& start,
           SliceScratch& scratch, std::vector<EntryPair>& out) {
   std::vector<WalkStep>& path = scratch.path;
@@ -166,6 +162,8 @@ void walk(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t f, const Cross
     at = next;
   }
 }
+
+namespace {
 
 // The walks from \p re at entries \p k, k + 1, ... up to \p last that repeat the path of
 // the walk before them step for step: each of its faces convex and left by the same edge,
@@ -237,6 +235,19 @@ void slice_ridge_edge(const SlicedMesh& m, const RidgeEdge& re, double lo, doubl
 }
 
 }  // namespace
+
+Crossing edge_crossing(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t e) {
+  return EdgeSides(m, s, m.mesh.edges[e]).crossing(s, e);
+}
+
+bool crosses(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t e) {
+  return EdgeSides(m, s, m.mesh.edges[e]).crossed();
+}
+
+bool ridge_start(const SlicedMesh& m, const RidgeEdge& re, const ThetaSlice& s, Crossing& at) {
+  const MeshEdge& edge = m.mesh.edges[re.edge];
+  return walk_start(re, edge, EdgeSides(m, s, edge), s, at);
+}
 
 ThetaSlice ThetaSlice::at(double theta, std::pair<double, double> sin_cos, bool point_light,
                           std::uint32_t entry) {

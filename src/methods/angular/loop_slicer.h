@@ -90,6 +90,24 @@ void slice_loop(const SlicedMesh& mesh, std::span<const RidgeEdge> ridges,
                 std::span<const ThetaSlice> slices, SliceScratch& scratch,
                 std::vector<EntryPair>& out);
 
+/// Where slice \p s crosses mesh edge \p e (bit-identical for both faces of the edge).
+Crossing edge_crossing(const SlicedMesh& mesh, const ThetaSlice& s, std::uint32_t e);
+
+/// Whether slice \p s crosses mesh edge \p e (its ends on either side; an end on the slice
+/// counts as above it).
+bool crosses(const SlicedMesh& mesh, const ThetaSlice& s, std::uint32_t e);
+
+/// Where ridge edge \p re goes up through slice \p s into the half-plane at its theta: a
+/// begin of shadow (the direction constraint); false when it does not.
+bool ridge_start(const SlicedMesh& mesh, const RidgeEdge& re, const ThetaSlice& s, Crossing& at);
+
+/// Walks the far sheet from \p start (on face \p f's edge, or on the light's X axis) across
+/// slice \p s: one pair per face, each hidden edge crossed shared by two pairs (inserted in
+/// duplicate, Sec. 5), until the RE crossing where the shadow ends. \p scratch's path is the
+/// previous entry's walk from the same start, or empty.
+void walk(const SlicedMesh& mesh, const ThetaSlice& s, std::uint32_t f, const Crossing& start,
+          SliceScratch& scratch, std::vector<EntryPair>& out);
+
 /// \brief A point light's X axis pierces occluding face \p f at X < 0 (light inside the
 /// scene, Sec. 11.2): in every entry a far-sheet walk starts on the axis (phi = -inf) in \p f.
 void slice_from_axis(const SlicedMesh& mesh, std::uint32_t f, std::span<const ThetaSlice> slices,

@@ -7,29 +7,12 @@
 #include <limits>
 #include <string>
 
+#include "loops_in_frame_testing.h"
 #include "occluders.h"
 #include "shadowkit/scene/scene_file.h"
 
 namespace shadowkit::angular {
 namespace {
-
-// One object's RE loops in a light's frame, as AngularTable::build prepares them.
-struct LoopsInFrame {
-  std::vector<Vec3> local;
-  std::vector<double> theta;
-  std::vector<std::uint32_t> hidden_id;
-  std::vector<RidgeEdge> ridges;
-  std::vector<RidgeEdgeLoop> loops;
-
-  LoopsInFrame(const Mesh& mesh, const FarSheets& sheets, const LightFrame& frame)
-      : ridges(find_ridge_edges(mesh, sheets)), loops(chain_ridge_edge_loops(ridges)) {
-    for (const Vec3& v : mesh.vertices) {
-      local.push_back(frame.local(v));
-      theta.push_back(frame.angular_local(local.back()).theta);
-    }
-    for (std::uint32_t f = 0; f < mesh.face_count(); ++f) hidden_id.push_back(f);
-  }
-};
 
 // The pairs of \p out in entry \p k, in their order.
 std::vector<EntryPair> in_entry(const std::vector<EntryPair>& out, std::uint32_t k) {
@@ -51,17 +34,9 @@ void expect_entries_as_sliced_alone(const std::string& spec) {
       const Mesh& mesh = scene.objects[o].mesh;
       const LoopsInFrame in_frame(mesh, sheets[o], frame);
       if (in_frame.loops.empty()) continue;
-      double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-      for (const RidgeEdge& re : in_frame.ridges) {
-        lo = std::min({lo, in_frame.theta[re.from], in_frame.theta[re.to]});
-        hi = std::max({hi, in_frame.theta[re.from], in_frame.theta[re.to]});
-      }
       constexpr int kEntries = 600;  // many entries per ridge edge: long runs of one path
-      const ThetaQuantization q{lo, (hi - lo) / kEntries, kEntries, false};
-      std::vector<ThetaSlice> slices;
-      for (int k = 0; k < kEntries; ++k) {
-        slices.push_back(ThetaSlice::at(q.centre(k), frame.point_light(), std::uint32_t(k)));
-      }
+      const ThetaQuantization q = in_frame.quantization(kEntries);
+      const std::vector<ThetaSlice> slices = slices_of(q, frame.point_light());
       const SlicedMesh m{mesh, sheets[o], in_frame.local, in_frame.theta, in_frame.hidden_id};
       SliceScratch scratch;
       for (const RidgeEdgeLoop& loop : in_frame.loops) {

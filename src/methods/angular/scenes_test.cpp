@@ -187,11 +187,39 @@ TEST(AngularScenes, ALitRunCrossesTheEntriesOfItsBlock) {
   EXPECT_LE(worst_interior_mismatch(scene), 0.01);
 }
 
+// RE-loops paper, Sec. 3.2 as written (angular.pairing=paper) on its own objects: the coiled
+// and the holed one pair without falling back to the walk; the hole-like one falls back in
+// the band below its notch floor (re_loop_pairing_test.cpp). All shadow as the walk does.
+TEST(AngularScenes, PaperPairingShadowsThePapersObjectsAsTheWalkDoes) {
+  for (const char* spec : {"coil", "holed", "hole-like", "cubes:27"}) {
+    const Scene scene = reduced(load_scene(spec, {}));
+    const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+    AngularMethod walk({});
+    AngularMethod paper(MethodOptions("angular", {{"pairing", "paper"}}));
+    const ShadowMask a = testing::method_mask(walk, scene, vsb, 0);
+    const ShadowMask b = testing::method_mask(paper, scene, vsb, 0);
+    EXPECT_GT(testing::counter(paper, "paper_objects"), 0) << spec;
+    EXPECT_GT(testing::counter(paper, "re_pairs"), 0) << spec;
+    const double fallbacks = testing::counter(paper, "pairing_fallbacks");
+    if (std::string(spec) == "hole-like") {
+      EXPECT_GT(fallbacks, 0);
+    } else {
+      EXPECT_EQ(fallbacks, 0) << spec;
+    }
+    EXPECT_EQ(testing::counter(paper, "table_pairs"), testing::counter(walk, "table_pairs"))
+        << spec;
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) differ += a.pixels[i] != b.pixels[i];
+    EXPECT_EQ(differ, 0u) << spec;
+  }
+}
+
 TEST(AngularScenes, RejectsAResolutionThatIsNotAWholeNumber) {
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"resolution", "2.5"}})), InputError);
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"bias", "1"}})), InputError);
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"saturated", "2"}})), InputError);
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"resolution", "-1"}})), InputError);
+  EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"pairing", "peaks"}})), InputError);
 }
 
 }  // namespace
