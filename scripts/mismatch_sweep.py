@@ -12,6 +12,12 @@ lights) to the smallest scene that still fails, written next to it as
 NAME.METHOD.L<light>.min.json.
 
     python3 scripts/mismatch_sweep.py --seed 1 --count 500 --out out/sweep --shrink
+
+With --lights N it writes scenes until at least N lights are compared, e.g. the automatic R's
+proof (docs/papers/thakur-cheng-miura.md):
+
+    python3 scripts/mismatch_sweep.py --methods angular --seed 20000 --lights 5000 \\
+        --out out/angular-proof
 """
 
 import argparse
@@ -272,6 +278,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--count", type=int, default=500)
+    parser.add_argument("--lights", type=int, default=0,
+                        help="instead of --count: as many scenes as it takes to compare at "
+                             "least this many lights")
     parser.add_argument("--out", default=os.path.join(ROOT, "out", "sweep"))
     parser.add_argument("--shadowkit", default=os.path.join(ROOT, "build", "shadowkit"))
     parser.add_argument("--methods", default="volume,angular,svbsp")
@@ -288,20 +297,26 @@ def main():
     write_meshes(args.out)
     rng = random.Random(args.seed)
     stats = {m: {"runs": 0, "fail": 0, "worst": 0.0, "worst_at": ""} for m in methods}
+    every = {m: [] for m in methods}  # (pct, scene light) of every light
     errors = []
     start = time.monotonic()
-    for index in range(args.count):
+    lights = 0
+    index = -1
+    while lights < args.lights if args.lights > 0 else index + 1 < args.count:
+        index += 1
         scene = random_scene(rng)
         name = f"s{args.seed}-{index:03d}"
         path = os.path.join(args.out, name + ".json")
         save(scene, path)
         result = compare(args.shadowkit, path, methods, args.set, args.timeout)
+        lights += len(scene["lights"])
         if isinstance(result, str):
             errors.append(name)
             print(f"ERROR {name}: {result}", flush=True)
             continue
         for (m, l), (pct, _) in result.items():
             stats[m]["runs"] += 1
+            every[m].append((pct, f"{name} L{l}"))
             if pct > stats[m]["worst"]:
                 stats[m]["worst"], stats[m]["worst_at"] = pct, f"{name} L{l}"
         for m, l, pct, interior in failures_of(result):
@@ -316,13 +331,16 @@ def main():
                 print(f"  shrunk to {len(small['objects'])} objects, {len(small['lights'])} "
                       f"lights: {name}.{m}.L{l}.min.json L{light}", flush=True)
 
-    print(f"\n{args.count} scenes (seed {args.seed}), {len(errors)} errors, "
+    print(f"\n{index + 1} scenes, {lights} lights (seed {args.seed}), {len(errors)} errors, "
           f"{time.monotonic() - start:.0f} s")
     print(f"{'method':8} {'threshold %':>11} {'lights':>7} {'fail':>5} {'worst %':>9}  worst at")
     for m in methods:
         st = stats[m]
         print(f"{m:8} {THRESHOLDS[m]:11} {st['runs']:7} {st['fail']:5} {st['worst']:9.4f}  "
               f"{st['worst_at']}")
+    for m in methods:
+        worst = sorted(every[m], reverse=True)[:5]
+        print(f"{m} worst lights: " + ", ".join(f"{at} {pct:.4f}%" for pct, at in worst))
     return 1 if errors or any(st["fail"] for st in stats.values()) else 0
 
 

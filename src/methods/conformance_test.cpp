@@ -135,12 +135,13 @@ const std::vector<SceneEntry>& scene_catalog() {
     // The smallest failing scenes of scripts/mismatch_sweep.py.
     for (const char* file :
          {"angular-coarse-torus-self-shadow.json", "angular-eye-inside-box.json",
-          "angular-grazing-light-far-shadow.json",
+          "angular-fins-around-a-light-full-turn.json", "angular-grazing-light-far-shadow.json",
           "angular-knot-shadow-under-a-light-on-the-ground.json",
-          "angular-light-axis-along-box-top.json", "angular-light-inside-touching-boxes.json",
-          "angular-low-sun-along-a-torus.json", "angular-resolution-grazing-light.json",
-          "angular-saturation-grazing-light.json", "raytrace-light-in-ceiling-plane.json",
-          "volume-light-inside-box.json"}) {
+          "angular-light-axis-along-box-top.json", "angular-light-in-the-plane-of-box-bottoms.json",
+          "angular-light-inside-touching-boxes.json", "angular-low-sun-along-a-torus.json",
+          "angular-open-box-face-steep-to-the-light.json", "angular-prism-on-a-large-ground.json",
+          "angular-resolution-grazing-light.json", "angular-saturation-grazing-light.json",
+          "raytrace-light-in-ceiling-plane.json", "volume-light-inside-box.json"}) {
       c.push_back({std::string("sweep/") + file, [file] { return sweep(file); }});
     }
 
@@ -405,13 +406,22 @@ const SceneTolerances kTolerances[] = {
     // -- examples/sweep/
     {"sweep/angular-coarse-torus-self-shadow.json", 0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-eye-inside-box.json",           0,      kExact, kExact, kAngular, kVoxelBand},
+    // Two fins around a point light: shadowmap's cube map differs on 1.7% of the interior.
+    {"sweep/angular-fins-around-a-light-full-turn.json",
+                                                    2.0,    kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-grazing-light-far-shadow.json", 0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-knot-shadow-under-a-light-on-the-ground.json",
                                                     0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-light-axis-along-box-top.json", 0,      kExact, kExact, kAngular, kVoxelBand},
+    {"sweep/angular-light-in-the-plane-of-box-bottoms.json",
+                                                    0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-light-inside-touching-boxes.json",
                                                     0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-low-sun-along-a-torus.json",    0,      kExact, kExact, kAngular, kVoxelBand},
+    // The open box's face steep to a high light: shadowmap's acne there, 4.1%; voxel 1.8%.
+    {"sweep/angular-open-box-face-steep-to-the-light.json",
+                                                    4.5,    kExact, kExact, kAngular, kVoxelWideBand},
+    {"sweep/angular-prism-on-a-large-ground.json",  0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-resolution-grazing-light.json", 0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-saturation-grazing-light.json", 0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/raytrace-light-in-ceiling-plane.json",  0,      kExact, kExact, kAngular, kVoxelBand},
@@ -452,6 +462,11 @@ const struct {
     // The light sees the inside of the open box, the back of its faces: they cast nothing on
     // the ground, and are in shadow where the contract has them lit (2.1%).
     {"subdivision.json", 2.5},
+    // Two fins, open non-manifold meshes, lit from their back around the light (1.9%).
+    {"sweep/angular-fins-around-a-light-full-turn.json", 2.0},
+    // A point light in the plane of the ground and of the boxes' bottom faces (5.2%, not
+    // examined).
+    {"sweep/angular-light-in-the-plane-of-box-bottoms.json", 5.5},
     // A light inside a closed box: every wall is turned from it, so nothing casts and the
     // ground around the box is lit (14%, 95%, 80%).
     {"sweep/angular-light-inside-touching-boxes.json", 15},
@@ -503,6 +518,11 @@ const KnownFailure kKnownFailures[] = {
     {"shadowmap", nullptr, "sweep/angular-resolution-grazing-light.json", kShadowmapAcne},
     {"shadowmap", nullptr, "sweep/angular-saturation-grazing-light.json", kShadowmapAcne},
     {"shadowmap", nullptr, "light-very-close-to-a-surface", kShadowmapAcne},
+    {"angular", nullptr, "sweep/angular-light-in-the-plane-of-box-bottoms.json",
+     "angular: a point light exactly in the plane of the ground and of the bottom faces of the "
+     "boxes standing on it leaves stripes of the upper box lit where the lower boxes shadow "
+     "it (1.1% at the automatic R, 3.6% at R 99, 3.2% with exact=0; 0 with the light 0.001 "
+     "above or below the plane): the table misses pairs of the lower boxes, at any R"},
     {"volume", nullptr, "coincident-boxes",
      "volume: a point on one copy's face lies in the other copy's face plane, which bounds "
      "that copy's volume; the plane test rounds either way, and lines of pixels across the "

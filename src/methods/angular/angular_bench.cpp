@@ -9,6 +9,7 @@
 
 #include "angular_method.h"
 #include "testing/method_testing.h"
+#include "view_theta.h"
 
 namespace shadowkit::angular {
 namespace {
@@ -41,6 +42,22 @@ BENCHMARK(BM_TableConstruction)
     ->Arg(2000)
     ->Arg(4000)
     ->Arg(8000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+
+// The automatic R's share of the construction: the receivers' integral (entry_theta).
+void BM_EntryTheta(benchmark::State& state) {
+  const Fixture& f = cube_field(int(state.range(0)));
+  const Bounds3& box = f.scene.bounds();
+  const LightFrame frame(f.scene.lights[0], f.scene.camera, (box.lo + box.hi) * 0.5);
+  for (auto _ : state) benchmark::DoNotOptimize(entry_theta(f.scene, frame));
+  state.counters["polygons"] = double(f.scene.face_count());
+}
+BENCHMARK(BM_EntryTheta)
+    ->Arg(2000)
+    ->Arg(8000)
+    ->Arg(30000)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MeasureProcessCPUTime();

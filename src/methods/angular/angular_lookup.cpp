@@ -109,8 +109,14 @@ LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
                             const ScanLineRun& run, const LookupQuery& query, int k) {
   const LookupResult own = lookup(table, run, query);
   const bool point_light = frame.point_light();
+  // The point lies in face i's exact shadow, and so does the run until it leaves it: on a
+  // grazed face a pair's end, cut at its entry's centre, may lie pixels away from the edge.
+  const auto exact = [&](std::uint32_t i, int lookups) -> LookupResult {
+    const std::optional<double> end = exact_shadow_end(table, frame, run, query, i);
+    return {true, end ? *end : query.column + 1, lookups, i};
+  };
   if (own.shadowed && table.blocks(own.hidden, query.local, point_light, query.depth_tolerance)) {
-    return own;
+    return exact(own.hidden, 1);
   }
   const ThetaQuantization& q = table.theta();
   const double centre = q.centre(k);
@@ -120,7 +126,10 @@ LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
   LookupQuery across = query;
   across.entry = q.entry(other);
   const LookupResult beside = lookup(table, run, across);
-  if (own.shadowed && beside.shadowed) return {true, own.next_x, 2, own.hidden};
+  if (beside.shadowed &&
+      table.blocks(beside.hidden, query.local, point_light, query.depth_tolerance)) {
+    return exact(beside.hidden, 2);
+  }
   if (!own.shadowed && !beside.shadowed) {
     // Both lit: that holds while both answers do and the point stays on this side of the
     // entry's centre.
@@ -129,7 +138,6 @@ LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
                 {own.next_x, beside.next_x, run.crossing(frame.theta_plane(centre), query.column)}),
             2};
   }
-  const double next_x = query.column + 1;
   const auto blocks = [&](std::uint32_t i) {
     return table.hidden(i).face != query.face &&
            table.blocks(i, query.local, point_light, query.depth_tolerance) &&
@@ -138,13 +146,17 @@ LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
   };
   for (const int near : {q.entry(k), q.entry(other)}) {
     for (const AngularPair& pair : table.entry(near)) {
-      if (blocks(pair.hidden)) return {true, next_x, 2, pair.hidden};
+      if (blocks(pair.hidden)) return exact(pair.hidden, 2);
     }
     for (const std::uint32_t i : table.covered(near)) {
-      if (blocks(i)) return {true, next_x, 2, i};
+      if (blocks(i)) return exact(i, 2);
     }
   }
-  return {false, next_x, 2};
+  // A face thinner than the gap between the two slices crosses neither.
+  for (const std::uint32_t i : table.between(std::min(k, other))) {
+    if (blocks(i)) return exact(i, 2);
+  }
+  return {false, query.column + 1, 2};
 }
 
 }  // namespace shadowkit::angular

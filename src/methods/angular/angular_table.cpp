@@ -468,7 +468,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   // and corners (the depth of Sec. 5); eq. 4's inputs from the view.
   Occluders occluders;
   ViewTheta view;
-  double view_scale = 0;  // eq. 4's scale: a scan line's theta, or (eq4) Z_f in scan lines
+  double view_scale = 0;  // eq. 4's scale: an entry's theta, or (eq4) Z_f in scan lines
   tbb::parallel_invoke(
       [&] {
         tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
@@ -479,7 +479,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
       [&] {
         view = view_theta(scene, frame);
         if (options.resolution > 0) return;
-        view_scale = options.eq4 ? farthest_depth(scene, frame) : scan_line_theta(scene, frame);
+        view_scale = options.eq4 ? farthest_depth(scene, frame) : entry_theta(scene, frame);
       });
   table.hidden_ = std::move(occluders.hidden);
   table.corner_start_ = std::move(occluders.corner_start);
@@ -508,6 +508,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     for (const std::uint32_t f : objects[o].axis_faces) work.push_back({-kInf, o, ~f});
   }
   const EntryRays rays(table.theta_, frame.point_light());
+  table.fill_between(rays, frame.point_light());
   std::vector<ThetaSlice> slices(table.theta_.resolution);
   tbb::parallel_invoke(
       [&] {
@@ -654,6 +655,41 @@ std::vector<AngularPair> AngularTable::compact(const std::vector<std::uint32_t>&
   std::swap(entries_.pairs, pairs);
   entries_.start = std::move(start);
   return pairs;
+}
+
+void AngularTable::fill_between(const EntryRays& rays, bool point_light) {
+  const int r = theta_.resolution;
+  const std::size_t slots = std::size_t(theta_.full_turn ? r : r + 1);
+  std::vector<int> slot(hidden_.size(), -1);
+  // How far past the centre of unwrapped entry k corner v lies: a sine's sign for a point
+  // light (within half a turn of it), theta's difference for a directional one.
+  const auto past = [&](Vec3 v, int k) {
+    const auto [u, w] = rays.centre(theta_.entry(k));
+    return point_light ? v.y * w - v.z * u : v.y - u;
+  };
+  parallel_each(hidden_.size(), [&](std::size_t i) {
+    const std::span<const Vec3> c = corners(std::uint32_t(i));
+    if (c.empty() || (point_light && c[0].y == 0 && c[0].z == 0)) return;
+    // The gap of the first corner (one arctangent per face), then every corner strictly
+    // within it: the face then lies within it too, a wedge of less than half a turn.
+    const double theta = point_light ? std::atan2(c[0].y, c[0].z) : c[0].y;
+    const int g = int(std::clamp(std::floor(theta_.position(theta) - 0.5), -1.0, double(r - 1)));
+    const bool below = theta_.full_turn || g >= 0, above = theta_.full_turn || g + 1 < r;
+    for (const Vec3& v : c) {
+      if ((below && !(past(v, g) > 0)) || (above && !(past(v, g + 1) < 0))) return;
+    }
+    slot[i] = gap_slot(g);
+  });
+  between_start_.assign(slots + 1, 0);
+  for (const int s : slot) {
+    if (s >= 0) ++between_start_[std::size_t(s) + 1];
+  }
+  for (std::size_t s = 0; s < slots; ++s) between_start_[s + 1] += between_start_[s];
+  between_.resize(between_start_.back());
+  std::vector<std::uint32_t> next(between_start_.begin(), between_start_.end() - 1);
+  for (std::uint32_t i = 0; i < slot.size(); ++i) {
+    if (slot[i] >= 0) between_[next[std::size_t(slot[i])]++] = i;
+  }
 }
 
 void AngularTable::fill_blocks() {

@@ -66,11 +66,12 @@ struct ThetaQuantization {
 
 /// Sec. 11.2's variable resolution: tan(kappa pi / 2), the largest warped tan. Entries at
 /// theta' = +-pi/2 are 1 + 7 = 8 times finer than at theta' = 0: the same ratio as the
-/// automatic R's cap of 8 entries per scan line.
+/// cap of 8 entries per scan line of eq4_resolution.
 inline const double kHemisphereTan = std::sqrt(7.0);
 
 struct DepthForm;  // an occluding face's depth along a slice's rays, while the table is built
 class Saturation;  // Sec. 10's test within one entry, while the table is built
+class EntryRays;   // the entries' centre and bound directions, while the table is built
 
 /// \brief What the table is built from and how.
 struct AngularTableOptions {
@@ -214,8 +215,18 @@ class AngularTable {
     if (k < 0) return {};
     return {covered_.data() + covered_start_[k], covered_.data() + covered_start_[k + 1]};
   }
+  /// \brief The occluding faces whose theta lies wholly between the centres of unwrapped
+  /// entries \p g and g + 1, so that no pair of the table holds them: the exact test near a
+  /// shadow's edge on a grazed face (lookup_grazing), between the two slices around a point,
+  /// takes them as candidates too. g = -1 and g = R - 1 are the gaps below the first centre
+  /// and above the last (the same gap when the table goes all around the light).
+  std::span<const std::uint32_t> between(int g) const {
+    const int slot = gap_slot(g);
+    return {between_.data() + between_start_[slot], between_.data() + between_start_[slot + 1]};
+  }
   std::size_t memory_bytes() const {
     return entries_.memory_bytes() + blocks_.memory_bytes() +
+           (between_start_.capacity() + between_.capacity()) * sizeof(std::uint32_t) +
            hidden_.capacity() * sizeof(HiddenFace) +
            corner_start_.capacity() * sizeof(std::uint32_t) + corners_.capacity() * sizeof(Vec3) +
            (covered_start_.capacity() + covered_.capacity()) * sizeof(std::uint32_t);
@@ -237,6 +248,12 @@ class AngularTable {
                                    std::vector<AngularPair> storage);
   // The blocks from the kept pairs of the entries.
   void fill_blocks();
+  // The occluding faces between consecutive entries' centres (between()).
+  void fill_between(const EntryRays& rays, bool point_light);
+  int gap_slot(int g) const {
+    const int r = theta_.resolution;
+    return theta_.full_turn ? ((g % r) + r) % r : std::clamp(g, -1, r - 1) + 1;
+  }
 
   ThetaQuantization theta_;
   PairLists entries_;
@@ -246,6 +263,8 @@ class AngularTable {
   std::vector<Vec3> corners_;                 ///< hidden faces' corners, light frame
   std::vector<std::uint32_t> covered_start_;  ///< R + 1 offsets into covered_
   std::vector<std::uint32_t> covered_;        ///< per entry, saturated pairs' hidden faces
+  std::vector<std::uint32_t> between_start_;  ///< per gap between centres, into between_
+  std::vector<std::uint32_t> between_;        ///< per gap, the hidden faces wholly within it
   std::size_t saturated_ = 0;
   RidgeEdgeStats loop_stats_;
   PairingCounts pairing_;

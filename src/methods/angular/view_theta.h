@@ -19,15 +19,39 @@ struct ViewTheta {
 /// The theta range of the scene's bounding box clipped to the view frustum.
 ViewTheta view_theta(const Scene& scene, const LightFrame& frame);
 
-/// Eq. 4's unit: the theta of one scan line at three quarters of the scene vertices in view
-/// (a quartile of their per-vertex steps); 0 when no vertex is in view.
-double scan_line_theta(const Scene& scene, const LightFrame& frame);
+/// \brief Eq. 4's unit where shadows fall: the theta of one entry of the automatic R.
+/// On every face whose seen side the light faces (contract condition 1: the others are in
+/// shadow whatever the table says), cut to the view, the theta of a pixel is the norm of
+/// theta's gradient across the image there. Its harmonic mean over those faces' screen area
+/// (occlusion ignored; large faces integrated in pieces) is the theta of an entry that spans
+/// one pixel on average over their pixels; the entry is entries_per_pixel(that area) times
+/// finer. Points the light grazes (sine below kGrazingSine) are left out: the exact re-check
+/// answers there. 0 when no such face is in view.
+double entry_theta(const Scene& scene, const LightFrame& frame);
 
-/// \brief Eq. 4 generalized: R such that one entry is no coarser than one scan line (Sec. 3:
-/// "at the limiting range there is a unique theta value for each scan line"), \p scan_line
-/// as scan_line_theta gives it, over \p theta_range, at most 8 per scan line of the image;
-/// the number of scan lines when no vertex is in view.
-int automatic_resolution(const Scene& scene, double scan_line, double theta_range);
+/// Entries per pixel at kReferencePixels pixels of receivers.
+inline constexpr double kEntriesPerPixel = 3;
+/// A 320 x 240 image's pixels.
+inline constexpr double kReferencePixels = 320 * 240;
+/// Entries per pixel on receivers of any size: one entry spans at most two pixels.
+inline constexpr double kLeastEntriesPerPixel = 0.5;
+/// The automatic R's bound.
+inline constexpr int kMostAutomaticEntries = 32768;
+
+/// \brief Entries per pixel of the automatic R on receivers of \p pixels screen pixels:
+/// kEntriesPerPixel * sqrt(kReferencePixels / pixels), at least kLeastEntriesPerPixel. A pair
+/// cut at its entry's centre moves a shadow's edge by up to half an entry, so the pixels that
+/// differ from the exact shadow lie in bands along the shadows' edges, of a width in pixels
+/// proportional to the entry's theta over a pixel's. Their share of the receivers' pixels is
+/// the edges' length in pixels over the area in pixels, which for the same view grows as one
+/// over the square root of the area: an entry's theta that keeps the share is then the same
+/// at any image size, and the same on a view's small receivers as on a large one.
+double entries_per_pixel(double pixels);
+
+/// \brief Eq. 4 generalized: R such that an entry spans \p entry (entry_theta) over
+/// \p theta_range, at most kMostAutomaticEntries; the number of scan lines when no receiver
+/// is in view.
+int automatic_resolution(const Scene& scene, double entry, double theta_range);
 
 /// Eq. 4's Z_f as written: the depth -Z of the vertex in view farthest from the light,
 /// counted in scan lines at that vertex (the paper's coordinates are the screen's); 0 when

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/scene_file.h"
@@ -65,20 +66,76 @@ TEST(ViewTheta, AnEyeInsideTheSceneBoxKeepsWhatLiesNearIt) {
   EXPECT_LE(testing::worst_interior_mismatch(scene, "angular"), 0.2);
 }
 
-// Eq. 4: about one entry per scan line where the scene is seen, so R follows the image
-// height and not the scene's extent beyond the view.
-TEST(ViewTheta, AutomaticResolutionFollowsTheScanLines) {
-  Scene scene = load_scene("cubes:125", {});
+// A 2 x 2 ground seen straight down from 4 above, 240 x 240 pixels, under a sun straight
+// down: one pixel moves 4 steps on the ground, all of it across theta (the light frame's
+// theta axis is the image's up axis), so the theta of a pixel is 4 steps everywhere.
+Scene ground_seen_from_above(Vec3 sun) {
+  Camera camera = testing::camera({0, 4, 0}, {0, 0, 0}, 240, 240);
+  camera.up = {0, 0, -1};
+  return testing::make_scene(camera, {testing::directional_light(sun)},
+                             {testing::horizontal_quad(-1, 1, -1, 1, 0)});
+}
+
+TEST(ViewTheta, TheEntryOfAGroundSeenStraightDownUnderASunStraightDown) {
+  const Scene scene = ground_seen_from_above({0, -1, 0});
+  const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center());
+  const double step = scene.camera.pixel_grid().step;
+  const double side = 2 / (4 * step);  // the ground's side in pixels: about 145
+  ASSERT_NEAR(side, 144.85, 0.01);
+  // 20,982 pixels: 5.74 entries per pixel.
+  EXPECT_NEAR(entries_per_pixel(side * side), 3 * std::sqrt(320.0 * 240 / (side * side)), 1e-12);
+  const double entry = entry_theta(scene, frame);
+  EXPECT_NEAR(entry / (4 * step / entries_per_pixel(side * side)), 1, 1e-9);
+  // The ground's theta range is 2 long: R = 2 / entry, 831 entries for its 145 rows.
+  EXPECT_EQ(automatic_resolution(scene, entry, 2), int(2 / entry));
+  EXPECT_EQ(automatic_resolution(scene, entry, 2), 831);
+}
+
+// Entries per pixel: 3 at a 320 x 240 image's pixels, as many times more as the receivers'
+// side in pixels is shorter, and never fewer than one per two pixels.
+TEST(ViewTheta, EntriesPerPixelFollowTheReceiversSide) {
+  EXPECT_DOUBLE_EQ(entries_per_pixel(320 * 240), 3);
+  EXPECT_DOUBLE_EQ(entries_per_pixel(4 * 320 * 240), 1.5);
+  EXPECT_DOUBLE_EQ(entries_per_pixel(320 * 240 / 100.0), 30);
+  EXPECT_DOUBLE_EQ(entries_per_pixel(36 * 320 * 240), 0.5);
+  EXPECT_DOUBLE_EQ(entries_per_pixel(100 * 320 * 240), 0.5);
+  EXPECT_NEAR(entries_per_pixel(1920 * 1080), 0.577, 0.001);
+}
+
+// No receiver the light can light is in view: the automatic R is the number of scan lines.
+TEST(ViewTheta, WithoutAReceiverTheAutomaticResolutionIsTheScanLines) {
+  for (const Vec3 sun : {Vec3{1, 0, 0},             // in the ground's plane
+                         Vec3{0, 1, 0},             // from below
+                         Vec3{0.998, -0.06, 0}}) {  // grazing: sine 0.06 < kGrazingSine
+    const Scene scene = ground_seen_from_above(normalize(sun));
+    const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center());
+    EXPECT_EQ(entry_theta(scene, frame), 0) << sun.x;
+    EXPECT_EQ(automatic_resolution(scene, 0, 2), 240);
+  }
+  // A sun just steeper than kGrazingSine does count.
+  const Scene steeper = ground_seen_from_above(normalize(Vec3{0.99, -0.08, 0}));
+  EXPECT_GT(entry_theta(steeper, LightFrame(steeper.lights[0], steeper.camera, {})), 0);
+  // The ground behind the eye.
+  Scene away = ground_seen_from_above({0, -1, 0});
+  away.camera.look_at = {0, 8, 0};
+  away.camera.up = {0, 0, 1};
+  EXPECT_EQ(entry_theta(away, LightFrame(away.lights[0], away.camera, {})), 0);
+}
+
+// An entry's theta keeps the bands along the shadows' edges the same share of the pixels at
+// any image size: R hardly changes with it (within the view's pixel rounding).
+TEST(ViewTheta, TheAutomaticResolutionHardlyDependsOnTheImageSize) {
+  Scene scene = testing::resized(load_scene("cubes:125", {}), 320, 180);
   const LightFrame frame(scene.lights[0], scene.camera, scene.bounds().center());
   const ViewTheta view = view_theta(scene, frame);
   ASSERT_TRUE(view.bounded);
-  const int full = automatic_resolution(scene, scan_line_theta(scene, frame), view.hi - view.lo);
-  scene.camera.height /= 4;
-  scene.camera.width /= 4;
-  const int quarter = automatic_resolution(scene, scan_line_theta(scene, frame), view.hi - view.lo);
-  EXPECT_NEAR(double(full) / quarter, 4, 0.05);
-  EXPECT_GT(full, 1080 / 2);
-  EXPECT_LT(full, 4 * 1080);
+  const int full = automatic_resolution(scene, entry_theta(scene, frame), view.hi - view.lo);
+  scene.camera.height /= 2;
+  scene.camera.width /= 2;
+  const int half = automatic_resolution(scene, entry_theta(scene, frame), view.hi - view.lo);
+  EXPECT_NEAR(double(full) / half, 1, 0.02);
+  EXPECT_GT(full, 4 * 180);
+  EXPECT_LT(full, 16 * 180);
 }
 
 }  // namespace
