@@ -24,11 +24,14 @@ constexpr int kTilePixels = kTile * kTile;
 // batch after batch.
 class TileFrame {
  public:
-  TileFrame(int width, int height)
+  // \p batches: how many batches will draw. One needs no tile kept between them: each
+  // tile is drawn and handed on in one thread's own buffers, which stay in its cache.
+  TileFrame(int width, int height, std::size_t batches)
       : width_(width),
         height_(height),
         tiles_x_((width + kTile - 1) / kTile),
         tiles_y_((height + kTile - 1) / kTile) {
+    if (batches < 2) return;
     const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
     // Kept per thread between frames: a fresh 25 MB at 1920x1080 costs its page faults.
     thread_local std::vector<double> keys;
@@ -40,15 +43,6 @@ class TileFrame {
   }
 
   int tile_count() const { return tiles_x_ * tiles_y_; }
-  RasterTile tile(int t) const {
-    const int x0 = (t % tiles_x_) * kTile, y0 = (t / tiles_x_) * kTile;
-    return {x0,
-            y0,
-            std::min(kTile, width_ - x0),
-            std::min(kTile, height_ - y0),
-            key_ + std::size_t(t) * kTilePixels,
-            face_ + std::size_t(t) * kTilePixels};
-  }
 
   // Whether what is drawn already hides every pixel \p c can draw.
   bool hides(const ClusterInView& c) const {
@@ -72,13 +66,24 @@ class TileFrame {
             const std::function<void(const RasterTile&)>& fn) {
     const TileBins bins(tris, width_, height_);
     tbb::parallel_for(0, tile_count(), [&](int t) {
-      const RasterTile r = tile(t);
-      if (first)
-        depth_[t].reset(r.x0, r.y0, r.width, r.height, key_ + std::size_t(t) * kTilePixels,
-                        face_ + std::size_t(t) * kTilePixels);
+      struct Scratch {
+        double key[kTilePixels];
+        std::uint32_t face[kTilePixels];
+        TileDepth depth;
+      };
+      thread_local Scratch scratch;
+      const bool kept = key_ != nullptr;
+      const std::size_t slot = std::size_t(t) * kTilePixels;
+      const int x0 = (t % tiles_x_) * kTile, y0 = (t / tiles_x_) * kTile;
+      double* key = kept ? key_ + slot : scratch.key;
+      std::uint32_t* face = kept ? face_ + slot : scratch.face;
+      const RasterTile r{x0,  y0,  std::min(kTile, width_ - x0), std::min(kTile, height_ - y0),
+                         key, face};
+      TileDepth& depth = kept ? depth_[t] : scratch.depth;
+      if (first) depth.reset(r.x0, r.y0, r.width, r.height, key, face);
       if (bins.start[t + 1] > bins.start[t]) {
-        depth_[t].draw(tris,
-                       {bins.items.data() + bins.start[t], bins.items.data() + bins.start[t + 1]});
+        depth.draw(tris,
+                   {bins.items.data() + bins.start[t], bins.items.data() + bins.start[t + 1]});
       }
       if (last) fn(r);
     });
@@ -87,8 +92,8 @@ class TileFrame {
 
  private:
   int width_, height_, tiles_x_, tiles_y_;
-  double* key_;
-  std::uint32_t* face_;
+  double* key_ = nullptr;  ///< tile after tile, when kept between batches
+  std::uint32_t* face_ = nullptr;
   std::vector<TileDepth> depth_;
   bool started_ = false;  ///< whether the tiles have been reset
 };
@@ -158,13 +163,14 @@ void ScanConverter::rasterize_tiles(const RasterProjection& view, const Context&
                                     const std::function<void(const RasterTile&)>& fn) const {
   const std::vector<ClusterInView> order = raster::clusters_in_view(scene_, view);
   std::vector<std::size_t> batch_start{0};
+  if (order.size() < kCulledClusters) batch_start.push_back(order.size());
   for (std::size_t size = std::max(kFirstBatch, order.size() / 64);
        batch_start.back() < order.size(); size += size / 4) {
     batch_start.push_back(std::min(order.size(), batch_start.back() + size));
   }
   if (batch_start.size() == 1) batch_start.push_back(0);  // nothing in view: one empty batch
 
-  TileFrame frame(view.width, view.height);
+  TileFrame frame(view.width, view.height, batch_start.size() - 1);
   const HiddenSides sides(scene_, view);
   for (std::size_t b = 0; b + 1 < batch_start.size(); ++b) {
     const std::span<const ClusterInView> batch(order.data() + batch_start[b],

@@ -64,24 +64,29 @@ bool TileDepth::hidden(const BlockRange& r, double nearest) const {
   return true;
 }
 
-// Takes the farthest key of the blocks of \p r drawn into since; background counts as -inf,
-// farther than anything.
-void TileDepth::refresh(const BlockRange& r) {
+// As hidden(), taking the farthest key of each stale block on the way: only up to the first
+// block that shows, since a large triangle would otherwise scan most of the tile again.
+bool TileDepth::hidden_refreshing(const BlockRange& r, double nearest) {
   for (int by = r.by0; by <= r.by1; ++by) {
     for (int bx = r.bx0; bx <= r.bx1; ++bx) {
       const int b = by * kBlocks + bx;
-      if (!(stale_ >> b & 1)) continue;
-      stale_ &= ~(std::uint64_t(1) << b);
-      double far = INFINITY;
-      for (int y = by * kBlock; y < std::min(h_, (by + 1) * kBlock); ++y) {
-        const double* row = key_ + y * w_;
-        for (int x = bx * kBlock; x < std::min(w_, (bx + 1) * kBlock); ++x) {
-          far = std::min(far, row[x]);
-        }
-      }
-      far_[b] = far;
+      if (stale_ >> b & 1) refresh(b);
+      if (!(nearest < far_[b])) return false;
     }
   }
+  return true;
+}
+
+// Takes the farthest key of block \p b; background counts as -inf, farther than anything.
+void TileDepth::refresh(int b) {
+  stale_ &= ~(std::uint64_t(1) << b);
+  const int bx = b % kBlocks, by = b / kBlocks;
+  double far = INFINITY;
+  for (int y = by * kBlock; y < std::min(h_, (by + 1) * kBlock); ++y) {
+    const double* row = key_ + y * w_;
+    for (int x = bx * kBlock; x < std::min(w_, (bx + 1) * kBlock); ++x) far = std::min(far, row[x]);
+  }
+  far_[b] = far;
 }
 
 template <bool kFaces>
@@ -102,8 +107,7 @@ void TileDepth::draw_triangles(const ScreenTriangles& tris, std::span<const std:
     const int ya = std::max(y0_, t.min_y), yb = std::min(ye, t.max_y);
     const int xa0 = std::max(x0_, t.min_x), xb0 = std::min(xe, t.max_x);
     const BlockRange r = blocks(xa0, xb0, ya, yb);
-    refresh(r);
-    if (hidden(r, nearest)) continue;
+    if (hidden_refreshing(r, nearest)) continue;
     for (int by = r.by0; by <= r.by1; ++by) {
       for (int bx = r.bx0; bx <= r.bx1; ++bx) stale_ |= std::uint64_t(1) << (by * kBlocks + bx);
     }
@@ -115,7 +119,10 @@ void TileDepth::draw_triangles(const ScreenTriangles& tris, std::span<const std:
       draw_span<kFaces>(t, py, xa, xb, key_ + row, kFaces ? face_ + row : nullptr);
     }
   }
-  refresh({0, (w_ - 1) / kBlock, 0, (h_ - 1) / kBlock});
+  // hidden() reads every block as it is now.
+  for (int b = 0; stale_ != 0; ++b) {
+    if (stale_ >> b & 1) refresh(b);
+  }
 }
 
 void TileDepth::draw(const ScreenTriangles& tris, std::span<const std::uint32_t> bin) {

@@ -28,9 +28,10 @@ struct RasterTile {
   const std::uint32_t* face = nullptr;
 };
 
-/// \brief Rasterizes a scene's triangles: near-plane and guard-band clipping, no back-face
-/// culling, top-left fill rule on 1/256-pixel fixed point (a pixel centre on an edge shared
-/// by two triangles is drawn exactly once), tiles in parallel with oneTBB.
+/// \brief Rasterizes a scene's triangles: near-plane and guard-band clipping, top-left fill
+/// rule on 1/256-pixel fixed point (a pixel centre on an edge shared by two triangles is drawn
+/// exactly once), tiles in parallel with oneTBB. Back faces are culled only where a closed
+/// solid's near side hides them (OutwardSolids); open meshes show both sides.
 class ScanConverter {
  public:
   /// Depth is interpolated from each face's exact plane, so all triangles of a polygon agree.
@@ -38,8 +39,11 @@ class ScanConverter {
 
   /// Tile edge in pixels.
   static constexpr int kTileSize = 64;
-  /// Clusters in the first of the batches that double (rasterize_tiles), at least.
+  /// Clusters in the first of the batches that grow (rasterize_tiles), at least.
   static constexpr std::size_t kFirstBatch = 64;
+  /// Below this many clusters in view, one batch: keeping every tile between batches costs
+  /// more than culling the few hidden clusters saves.
+  static constexpr std::size_t kCulledClusters = 2048;
 
   /// Nearest face per pixel. Ties in depth go to the lower triangle index.
   DepthFaceBuffer rasterize(const RasterProjection& view, const Context& ctx) const;

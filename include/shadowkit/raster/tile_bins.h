@@ -49,7 +49,8 @@ class TileDepth {
   };
   BlockRange blocks(int xa, int xb, int ya, int yb) const;
   bool hidden(const BlockRange& r, double nearest) const;
-  void refresh(const BlockRange& r);
+  bool hidden_refreshing(const BlockRange& r, double nearest);
+  void refresh(int block);
   template <bool kFaces>
   void draw_triangles(const ScreenTriangles& tris, std::span<const std::uint32_t> bin);
 
