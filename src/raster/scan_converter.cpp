@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <mutex>
 
 #include "shadowkit/core/error.h"
 #include "shadowkit/raster/cluster_view.h"
@@ -22,6 +24,38 @@ constexpr int kTilePixels = kTile * kTile;
 
 // Every tile of the raster, each in its own kTile x kTile slot of the buffers, drawn into
 // batch after batch.
+// Every tile's keys and faces, kept for the next frame: a fresh 25 MB at 1920x1080 costs its
+// page faults. A pool, not one per thread: a thread that waits in a parallel loop may take
+// up another frame meanwhile.
+struct FrameBuffers {
+  std::vector<double> keys;
+  std::vector<std::uint32_t> faces;
+};
+
+class FrameBufferPool {
+ public:
+  std::unique_ptr<FrameBuffers> take() {
+    std::lock_guard lock(mutex_);
+    if (free_.empty()) return std::make_unique<FrameBuffers>();
+    std::unique_ptr<FrameBuffers> b = std::move(free_.back());
+    free_.pop_back();
+    return b;
+  }
+  void give(std::unique_ptr<FrameBuffers> b) {
+    std::lock_guard lock(mutex_);
+    free_.push_back(std::move(b));
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<FrameBuffers>> free_;
+};
+
+FrameBufferPool& pool() {
+  static FrameBufferPool frames;
+  return frames;
+}
+
 class TileFrame {
  public:
   // \p batches: how many batches will draw. One needs no tile kept between them: each
@@ -33,14 +67,17 @@ class TileFrame {
         tiles_y_((height + kTile - 1) / kTile) {
     if (batches < 2) return;
     const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
-    // Kept per thread between frames: a fresh 25 MB at 1920x1080 costs its page faults.
-    thread_local std::vector<double> keys;
-    thread_local std::vector<std::uint32_t> faces;
-    keys.resize(tiles * kTilePixels);
-    faces.resize(tiles * kTilePixels);
-    key_ = keys.data(), face_ = faces.data();
+    buffers_ = pool().take();
+    buffers_->keys.resize(tiles * kTilePixels);
+    buffers_->faces.resize(tiles * kTilePixels);
+    key_ = buffers_->keys.data(), face_ = buffers_->faces.data();
     depth_.resize(tiles);
   }
+  ~TileFrame() {
+    if (buffers_) pool().give(std::move(buffers_));
+  }
+  TileFrame(const TileFrame&) = delete;
+  TileFrame& operator=(const TileFrame&) = delete;
 
   int tile_count() const { return tiles_x_ * tiles_y_; }
 
@@ -92,6 +129,7 @@ class TileFrame {
 
  private:
   int width_, height_, tiles_x_, tiles_y_;
+  std::unique_ptr<FrameBuffers> buffers_;
   double* key_ = nullptr;  ///< tile after tile, when kept between batches
   std::uint32_t* face_ = nullptr;
   std::vector<TileDepth> depth_;
