@@ -22,8 +22,6 @@ using raster::TileDepth;
 constexpr int kTile = ScanConverter::kTileSize;
 constexpr int kTilePixels = kTile * kTile;
 
-// Every tile of the raster, each in its own kTile x kTile slot of the buffers, drawn into
-// batch after batch.
 // Every tile's keys and faces, kept for the next frame: a fresh 25 MB at 1920x1080 costs its
 // page faults. A pool, not one per thread: a thread that waits in a parallel loop may take
 // up another frame meanwhile.
@@ -56,6 +54,8 @@ FrameBufferPool& pool() {
   return frames;
 }
 
+// Every tile of the raster, drawn into batch after batch: with several batches each in its
+// own kTile x kTile slot of the pool's buffers.
 class TileFrame {
  public:
   // \p batches: how many batches will draw. One needs no tile kept between them: each
