@@ -53,7 +53,7 @@ void Scene::finalize() {
     }
     for (std::uint32_t v : mesh.face_vertices) bounds_.add(mesh.vertices[v]);
   }
-  triangles_.clusters = cluster_triangles(triangles_);
+  triangles_.clusters = cluster_triangles(triangles_, bounds_);
   outward_solids_ = OutwardSolids(*this);
 }
 

@@ -36,14 +36,12 @@ Vec3 centroid(const TriangleList& list, std::uint32_t t) {
 
 }  // namespace
 
-TriangleClusters cluster_triangles(const TriangleList& list) {
+TriangleClusters cluster_triangles(const TriangleList& list, const Bounds3& bounds) {
   const std::size_t n = list.triangles.size();
-  Bounds3 centres;
-  for (std::uint32_t t = 0; t < n; ++t) centres.add(centroid(list, t));
   // Ties in the code keep triangle order, so the clusters do not depend on the sort.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> keyed(n);
   tbb::parallel_for(std::size_t(0), n, [&](std::size_t t) {
-    keyed[t] = {morton_code(centroid(list, std::uint32_t(t)), centres), std::uint32_t(t)};
+    keyed[t] = {morton_code(centroid(list, std::uint32_t(t)), bounds), std::uint32_t(t)};
   });
   tbb::parallel_sort(keyed.begin(), keyed.end());
 

@@ -109,8 +109,8 @@ struct TriangleList {
   TriangleClusters clusters;
 };
 
-/// Groups \p list's triangles into clusters (TriangleClusters).
-TriangleClusters cluster_triangles(const TriangleList& list);
+/// Groups \p list's triangles into clusters (TriangleClusters); \p bounds holds them all.
+TriangleClusters cluster_triangles(const TriangleList& list, const Bounds3& bounds);
 
 /// \brief Where a scene's working coordinates sit in its world (the input's coordinates):
 /// world = origin + scale * working.
