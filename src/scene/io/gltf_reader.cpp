@@ -17,6 +17,7 @@
 #include "readers.h"
 #include "shadowkit/scene/limits.h"
 #include "skipped_items.h"
+#include "text_cursor.h"
 
 namespace shadowkit::mesh_io {
 namespace {
@@ -373,7 +374,7 @@ class GltfMeshes {
       for (std::size_t i = 0; i < corners.size(); ++i) {
         const double index = indices.at(i);
         if (!(index >= 0 && index < static_cast<double>(positions.count()))) {
-          src_.fail(indices.key(), "index " + std::to_string(static_cast<long long>(index)) +
+          src_.fail(indices.key(), "index " + format_number(index) +
                                        " is out of range (POSITION has " +
                                        std::to_string(positions.count()) + " elements)");
         }
