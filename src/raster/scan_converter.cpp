@@ -19,6 +19,7 @@ namespace {
 using raster::ClusterInView;
 using raster::TileBins;
 using raster::TileDepth;
+using TileOutput = ScanConverter::TileOutput;
 constexpr int kTile = ScanConverter::kTileSize;
 constexpr int kTilePixels = kTile * kTile;
 
@@ -60,18 +61,20 @@ class TileFrame {
  public:
   // \p batches: how many batches will draw. One needs no tile kept between them: each
   // tile is drawn and handed on in one thread's own buffers, which stay in its cache.
-  TileFrame(int width, int height, std::size_t batches)
+  TileFrame(int width, int height, std::size_t batches, TileOutput output)
       : width_(width),
         height_(height),
         tiles_x_((width + kTile - 1) / kTile),
-        tiles_y_((height + kTile - 1) / kTile) {
+        tiles_y_((height + kTile - 1) / kTile),
+        output_(output) {
     if (batches < 2) return;
     const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
     buffers_ = pool().take();
     buffers_->keys.resize(tiles * kTilePixels);
-    buffers_->faces.resize(tiles * kTilePixels);
-    key_ = buffers_->keys.data(), face_ = buffers_->faces.data();
+    if (output.faces) buffers_->faces.resize(tiles * kTilePixels);
+    key_ = buffers_->keys.data(), face_ = output.faces ? buffers_->faces.data() : nullptr;
     depth_.resize(tiles);
+    reached_.assign(tiles, 0);
   }
   ~TileFrame() {
     if (buffers_) pool().give(std::move(buffers_));
@@ -98,7 +101,7 @@ class TileFrame {
   }
 
   // Draws \p tris into every tile they reach; the first batch starts every tile, and the
-  // last hands every tile to \p fn while it is in cache.
+  // last hands every tile (or every tile some batch reached) to \p fn while it is in cache.
   void draw(const raster::ScreenTriangles& tris, bool first, bool last,
             const std::function<void(const RasterTile&)>& fn) {
     const TileBins bins(tris, width_, height_);
@@ -110,10 +113,12 @@ class TileFrame {
       };
       thread_local Scratch scratch;
       const bool kept = key_ != nullptr;
+      const bool reached = bins.start[t + 1] > bins.start[t] || (kept && reached_[t]);
+      if (!reached && !output_.empty_tiles && (!kept || last)) return;
       const std::size_t slot = std::size_t(t) * kTilePixels;
       const int x0 = (t % tiles_x_) * kTile, y0 = (t / tiles_x_) * kTile;
       double* key = kept ? key_ + slot : scratch.key;
-      std::uint32_t* face = kept ? face_ + slot : scratch.face;
+      std::uint32_t* face = !output_.faces ? nullptr : kept ? face_ + slot : scratch.face;
       const RasterTile r{x0,  y0,  std::min(kTile, width_ - x0), std::min(kTile, height_ - y0),
                          key, face};
       TileDepth& depth = kept ? depth_[t] : scratch.depth;
@@ -121,6 +126,7 @@ class TileFrame {
       if (bins.start[t + 1] > bins.start[t]) {
         depth.draw(tris,
                    {bins.items.data() + bins.start[t], bins.items.data() + bins.start[t + 1]});
+        if (kept) reached_[t] = 1;
       }
       if (last) fn(r);
     });
@@ -133,6 +139,8 @@ class TileFrame {
   double* key_ = nullptr;  ///< tile after tile, when kept between batches
   std::uint32_t* face_ = nullptr;
   std::vector<TileDepth> depth_;
+  std::vector<char> reached_;  ///< per kept tile, whether a batch drew triangles into it
+  TileOutput output_;
   bool started_ = false;  ///< whether the tiles have been reset
 };
 
@@ -199,6 +207,16 @@ std::vector<std::uint32_t> unhidden_triangles(const Scene& scene, const HiddenSi
 // all the triangles, whatever order they are drawn in.
 void ScanConverter::rasterize_tiles(const RasterProjection& view, const Context& /*ctx*/,
                                     const std::function<void(const RasterTile&)>& fn) const {
+  draw_clusters(view, {.faces = true, .empty_tiles = true}, fn);
+}
+
+void ScanConverter::rasterize_depth_tiles(const RasterProjection& view, const Context& /*ctx*/,
+                                          const std::function<void(const RasterTile&)>& fn) const {
+  draw_clusters(view, {.faces = false, .empty_tiles = false}, fn);
+}
+
+void ScanConverter::draw_clusters(const RasterProjection& view, TileOutput output,
+                                  const std::function<void(const RasterTile&)>& fn) const {
   const std::vector<ClusterInView> order = raster::clusters_in_view(scene_, view);
   std::vector<std::size_t> batch_start{0};
   if (order.size() < kCulledClusters) batch_start.push_back(order.size());
@@ -208,7 +226,7 @@ void ScanConverter::rasterize_tiles(const RasterProjection& view, const Context&
   }
   if (batch_start.size() == 1) batch_start.push_back(0);  // nothing in view: one empty batch
 
-  TileFrame frame(view.width, view.height, batch_start.size() - 1);
+  TileFrame frame(view.width, view.height, batch_start.size() - 1, output);
   const HiddenSides sides(scene_, view);
   for (std::size_t b = 0; b + 1 < batch_start.size(); ++b) {
     const std::span<const ClusterInView> batch(order.data() + batch_start[b],

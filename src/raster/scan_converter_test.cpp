@@ -6,7 +6,9 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <random>
+#include <string>
 
 #include "shadowkit/core/image.h"
 #include "shadowkit/raster/triangle_setup.h"
@@ -163,8 +165,8 @@ DepthFaceBuffer in_triangle_order(const Scene& scene, const RasterProjection& vi
 }
 
 // \p boxes random boxes seen at a low angle, several deep on most pixels, and two coincident
-// squares: the lower face id wins on them, as the first in triangle order does.
-void expect_drawn_as_in_triangle_order(int boxes, unsigned seed) {
+// squares.
+Scene random_boxes(int boxes, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-10, 10), size(0.2, 1.5);
   std::vector<PolygonSoup> objects;
@@ -174,8 +176,13 @@ void expect_drawn_as_in_triangle_order(int boxes, unsigned seed) {
   }
   objects.push_back(testing::horizontal_quad(-30, 30, -30, 30, 0));
   objects.push_back(testing::horizontal_quad(-30, 30, -30, 30, 0));
-  const Scene scene =
-      testing::make_scene(testing::camera({0, 4, 25}, {0, 2, 0}, 200, 150, 50), {}, objects);
+  return testing::make_scene(testing::camera({0, 4, 25}, {0, 2, 0}, 200, 150, 50), {}, objects);
+}
+
+// random_boxes: the lower face id wins on the coincident squares, as the first in triangle
+// order does.
+void expect_drawn_as_in_triangle_order(int boxes, unsigned seed) {
+  const Scene scene = random_boxes(boxes, seed);
   const RasterProjection view = RasterProjection::from_camera(scene.camera, 1e-3);
   const DepthFaceBuffer tiles = ScanConverter(scene).rasterize(view, {});
   // The far side of each box from the eye is not drawn: its near side hides it. Drawn, it
@@ -204,6 +211,40 @@ void expect_drawn_as_in_triangle_order(int boxes, unsigned seed) {
 
 TEST(ScanConverter, HiddenTrianglesDroppedWholeChangeNoPixel) {
   expect_drawn_as_in_triangle_order(300, 7);
+}
+
+// A light's depth tiles hold the keys of the full pass, in the tiles that some triangle
+// reaches, and only those, with one batch and with several.
+TEST(ScanConverter, DepthTilesAreTheReachedTilesOfTheFullPass) {
+  for (const int boxes : {3, 300, 4000}) {
+    SCOPED_TRACE(std::to_string(boxes) + " boxes");
+    const Scene scene = random_boxes(boxes, 5);
+    const RasterProjection view = RasterProjection::from_camera(scene.camera, 1e-3);
+    const DepthFaceBuffer full = ScanConverter(scene).rasterize(view, {});
+    std::vector<double> key(full.depth_key.size(), -INFINITY);
+    std::vector<int> handed(full.depth_key.size(), 0);
+    std::mutex mutex;
+    ScanConverter(scene).rasterize_depth_tiles(view, {}, [&](const RasterTile& tile) {
+      EXPECT_EQ(tile.face, nullptr);
+      std::lock_guard lock(mutex);
+      for (int y = 0; y < tile.height; ++y) {
+        for (int x = 0; x < tile.width; ++x) {
+          const std::size_t i = std::size_t(tile.y0 + y) * view.width + tile.x0 + x;
+          key[i] = tile.depth_key[y * tile.width + x];
+          ++handed[i];
+        }
+      }
+    });
+    std::size_t drawn = 0, left_out = 0;
+    for (std::size_t i = 0; i < key.size(); ++i) {
+      ASSERT_EQ(float(key[i]), full.depth_key[i]) << "pixel " << i;
+      ASSERT_LE(handed[i], 1) << "pixel " << i;
+      drawn += full.face[i] != kNoFace;
+      left_out += handed[i] == 0;
+    }
+    EXPECT_GT(drawn, key.size() / 10);
+    if (boxes == 3) EXPECT_GE(left_out, 64u * 64);  // a tile of sky at least
+  }
 }
 
 // Enough clusters in view for batches culled against the ones before them.

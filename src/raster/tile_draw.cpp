@@ -133,11 +133,4 @@ void TileDepth::draw(const ScreenTriangles& tris, std::span<const std::uint32_t>
   }
 }
 
-void draw_tile(const ScreenTriangles& tris, std::span<const std::uint32_t> bin, int x0, int y0,
-               int w, int h, double* keys, std::uint32_t* faces) {
-  thread_local TileDepth tile;
-  tile.reset(x0, y0, w, h, keys, faces);
-  tile.draw(tris, bin);
-}
-
 }  // namespace shadowkit::raster

@@ -53,8 +53,21 @@ class ScanConverter {
   /// not start parallel work itself: the tile's buffer is the worker thread's own.
   void rasterize_tiles(const RasterProjection& view, const Context& ctx,
                        const std::function<void(const RasterTile&)>& fn) const;
+  /// As rasterize_tiles, for a light's depth map: keys only (RasterTile::face is null), and
+  /// only the tiles that some triangle reaches; the others hold nothing.
+  void rasterize_depth_tiles(const RasterProjection& view, const Context& ctx,
+                             const std::function<void(const RasterTile&)>& fn) const;
+
+  /// What the drawing of the clusters hands on.
+  struct TileOutput {
+    bool faces;        ///< the nearest face per pixel, beside its key
+    bool empty_tiles;  ///< tiles no triangle reaches, too
+  };
 
  private:
+  void draw_clusters(const RasterProjection& view, TileOutput output,
+                     const std::function<void(const RasterTile&)>& fn) const;
+
   const Scene& scene_;
 };
 

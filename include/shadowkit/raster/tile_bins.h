@@ -61,9 +61,4 @@ class TileDepth {
   std::uint64_t stale_ = 0;  ///< blocks drawn into since their farthest key was taken
 };
 
-/// Draws the triangles \p bin (ids into \p tris) over the pixels [x0, x0 + w) x [y0, y0 + h)
-/// of one tile from nothing: TileDepth::reset and TileDepth::draw.
-void draw_tile(const ScreenTriangles& tris, std::span<const std::uint32_t> bin, int x0, int y0,
-               int w, int h, double* keys, std::uint32_t* faces);
-
 }  // namespace shadowkit::raster

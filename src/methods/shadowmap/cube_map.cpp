@@ -1,7 +1,5 @@
 #include "cube_map.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
@@ -30,8 +28,7 @@ RasterProjection CubeMap::face_view(int face, Vec3 eye, int resolution, double n
                                        near);
 }
 
-void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution,
-                     const Context& /*ctx*/) {
+void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution, const Context& ctx) {
   light_position_ = light_position;
   const double near = near_plane_for(scene.bounds(), light_position);
   std::array<RasterProjection, kFaces> views;
@@ -39,16 +36,7 @@ void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution,
     views[f] = face_view(f, light_position, resolution, near);
     frames_[f] = AxisFrame(views[f]);
   }
-  // Each face is drawn with the triangles that can reach it only.
-  const FaceCulling culling(scene, views);
-  std::array<raster::ScreenTriangles, kFaces> triangles;
-  tbb::parallel_for(0, kFaces, [&](int f) {
-    triangles[f] = raster::setup_triangles(scene, views[f],
-                                           [&](std::uint32_t t) { return culling.reaches(t, f); });
-  });
-  std::array<DepthMap::Drawing, kFaces> drawings;
-  for (int f = 0; f < kFaces; ++f) drawings[f] = {&faces_[f], views[f], &triangles[f]};
-  DepthMap::draw(drawings);
+  for (int f = 0; f < kFaces; ++f) faces_[f].render(scene, views[f], ctx);
 }
 
 std::size_t CubeMap::texel_count() const {

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "axis_frame.h"
 #include "depth_map.h"
-#include "face_culling.h"
 #include "shadowkit/core/context.h"
 #include "shadowkit/core/vec.h"
 #include "shadowkit/raster/projection.h"

@@ -5,13 +5,13 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <span>
+#include <memory>
 #include <vector>
 
 #include "shadowkit/core/context.h"
 #include "shadowkit/core/vec.h"
 #include "shadowkit/raster/projection.h"
-#include "shadowkit/raster/triangle_setup.h"
+#include "shadowkit/raster/scan_converter.h"
 #include "shadowkit/scene/scene.h"
 
 namespace shadowkit::shadowmap {
@@ -37,18 +37,8 @@ class DepthMap {
   static constexpr int kTile = 64;
   static constexpr std::size_t kTileTexels = std::size_t(kTile) * kTile;
 
-  /// \brief A map to draw and the triangles set up for its view (as raster::setup_triangles
-  /// sets them up; their order does not matter, the nearest depth wins).
-  struct Drawing {
-    DepthMap* map;
-    RasterProjection view;
-    const raster::ScreenTriangles* triangles;
-  };
-
-  /// Renders \p scene through \p view with the scan converter's triangle setup.
+  /// Renders \p scene through \p view with the scan converter (its depth tiles).
   void render(const Scene& scene, const RasterProjection& view, const Context& ctx);
-  /// Draws every map of \p drawings, all their tiles in one parallel pass.
-  static void draw(std::span<Drawing> drawings);
 
   const RasterProjection& view() const { return view_; }
   int width() const { return view_.width; }
@@ -146,15 +136,20 @@ class DepthMap {
     return int(s);
   }
 
-  void allocate(const RasterProjection& view, std::span<const std::uint32_t> bin_start);
-  std::size_t draw_tile(int tile, const raster::ScreenTriangles& triangles,
-                        std::span<const std::uint32_t> bin);
+  void allocate(const RasterProjection& view);
+  std::size_t store(const RasterTile& tile, std::uint32_t slot);
+  template <bool kOrthographic>
+  static int store_row(const double* key, int n, float* depth);
 
   RasterProjection view_;
   double texel_side_ = 0;
   int tiles_x_ = 0;
   std::vector<std::uint32_t> slot_;  ///< storage tile per map tile; slot 0 is all +infinity
-  std::vector<float> texels_;        ///< kTileTexels per slot; only grows, to be reused
+  /// kTileTexels per slot, room for a slot per map tile: left uninitialized, so only the
+  /// slots drawn take memory. Only grows, to be reused.
+  std::unique_ptr<float[]> texels_;
+  std::size_t capacity_ = 0;  ///< slots texels_ has room for
+  std::size_t slots_ = 0;     ///< slots in use
   std::size_t covered_ = 0;
 };
 

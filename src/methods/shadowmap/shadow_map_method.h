@@ -12,8 +12,8 @@
 namespace shadowkit::shadowmap {
 
 /// \brief Shadow maps: build() renders the scene's depth from the light with the shared
-/// scan converter's triangle setup and fill rule (each cube face with only the triangles that
-/// reach it), shade() transforms each visible point into the light's view and compares its
+/// scan converter (depth only, its clusters culled per cube face and by what nearer ones
+/// hide), shade() transforms each visible point into the light's view and compares its
 /// depth with the stored one, in screen tiles.
 ///
 /// Options (`--set shadowmap.KEY=VALUE`):

@@ -311,8 +311,8 @@ int differing_texels(const DepthMap& map, const std::vector<float>& expected) {
   return differ;
 }
 
-// Each face is drawn with only the triangles its pyramid reaches, set up by the method itself:
-// the maps must still be the scan converter's. 100 texels leave partial tiles; at 1024 the
+// Each face is drawn with only the clusters its pyramid reaches, depth only: the maps must
+// still be the scan converter's. 100 texels leave partial tiles; at 1024 the
 // far ground of the third scene lies past the guard band and is clipped there.
 TEST(ShadowMap, CubeFacesHoldTheScanConvertersDepths) {
   const struct {
