@@ -127,6 +127,7 @@ class TileFrame {
         depth.draw(tris,
                    {bins.items.data() + bins.start[t], bins.items.data() + bins.start[t + 1]});
         if (kept) reached_[t] = 1;
+        if (!last) depth.settle();  // for hides(), between batches
       }
       if (last) fn(r);
     });

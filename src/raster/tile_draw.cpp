@@ -119,7 +119,9 @@ void TileDepth::draw_triangles(const ScreenTriangles& tris, std::span<const std:
       draw_span<kFaces>(t, py, xa, xb, key_ + row, kFaces ? face_ + row : nullptr);
     }
   }
-  // hidden() reads every block as it is now.
+}
+
+void TileDepth::settle() {
   for (int b = 0; stale_ != 0; ++b) {
     if (stale_ >> b & 1) refresh(b);
   }

@@ -38,9 +38,11 @@ class TileDepth {
   /// drawing all batches in triangle order gives. Between equally near triangles the lower
   /// face id wins.
   void draw(const ScreenTriangles& tris, std::span<const std::uint32_t> bin);
+  /// Takes the farthest key of every block drawn into since, for hidden().
+  void settle();
   /// Whether nothing with keys at most \p nearest can show in pixels [xa, xb] x [ya, yb]
   /// (inside the tile): every block there has its farthest key beyond it. Reads the blocks
-  /// as the last draw() left them, so threads may ask while no one draws.
+  /// as the last settle() left them, so threads may ask while no one draws.
   bool hidden(int xa, int xb, int ya, int yb, double nearest) const;
 
  private:

@@ -54,16 +54,13 @@ std::size_t DepthMap::store(const RasterTile& tile, std::uint32_t slot) {
   return drawn;
 }
 
-// One row of store(): a loop without branches, which the compiler vectorizes.
+// One row of store(), in loops without branches, which the compiler vectorizes. A key of
+// -inf (nothing drawn) gives +inf either way: -(-inf), and 1 / 0.
 template <bool kOrthographic>
 int DepthMap::store_row(const double* key, int n, float* depth) {
-  int drawn = 0;
-  for (int x = 0; x < n; ++x) {
-    const float d = float(kOrthographic ? -key[x] : 1.0 / key[x]);
-    depth[x] = key[x] == -INFINITY ? kEmpty : d;
-    drawn += key[x] != -INFINITY;
-  }
-  return drawn;
+  for (int x = 0; x < n; ++x)
+    depth[x] = float(kOrthographic ? -key[x] : 1.0 / std::max(key[x], 0.0));
+  return int(std::count_if(key, key + n, [](double k) { return k != -INFINITY; }));
 }
 
 std::size_t DepthMap::memory_bytes() const {

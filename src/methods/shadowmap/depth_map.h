@@ -78,23 +78,25 @@ class DepthMap {
   /// orthographic map).
   double texel_size(double zv) const { return view_.orthographic ? texel_side_ : texel_side_ * zv; }
 
-  /// |(n.x, n.y)| for a receiver's normal \p n in view space: the part of depth_slope() that
-  /// depends on the receiver alone.
-  static double lateral(Vec3 n) { return std::hypot(n.x, n.y); }
+  /// What the depth slope of a receiver's plane depends on beside the point: for the plane
+  /// with normal \p n in view space (unit) at signed distance \p eye_distance from the view's
+  /// eye. On the plane n · v = c (c = -eye_distance), zv = c / (n · d) along the ray v = zv d,
+  /// d = (u, w, 1) with (u, w) the screen position: moving a lateral distance s at depth zv
+  /// changes (u, w) by s / zv and zv by s (n.x, n.y) / (n · d), a slope of
+  /// |(n.x, n.y)| zv / |c|. Orthographic: d = (0, 0, 1), a slope of |(n.x, n.y)| / |n.z|.
+  double slope_factor(Vec3 n, double eye_distance) const {
+    return std::hypot(n.x, n.y) / std::abs(view_.orthographic ? n.z : eye_distance);
+  }
 
   /// How fast the view depth zv of the receiver's plane changes per unit of lateral distance
-  /// near \p s, given the plane's normal \p n in view space (lateral(n) = \p lateral_n),
-  /// capped at kMaxSlope. For an orthographic map it is tan(angle between normal and light
-  /// direction); for a perspective face it is |(n.x, n.y)| / |n · (v / v.z)|, which is the same
-  /// tangent on the face's axis and the exact zv gradient off it.
-  double depth_slope(Vec3 n, double lateral_n, const Sample& s) const {
-    // On the plane n · x = c (view space), zv = c / (n · d) along the ray x = zv d,
-    // d = (u, w, 1) with (u, w) the screen position: moving a lateral distance s at depth zv
-    // changes (u, w) by s / zv and zv by s (n.x, n.y) / (n · d). Orthographic: d = (0, 0, 1).
-    if (!view_.orthographic && !(s.v.z > 0)) return kMaxSlope;
-    const Vec3 d = view_.orthographic ? Vec3{0, 0, 1} : Vec3{s.u, s.w, 1};
-    const double along = std::abs(dot(n, d));
-    return lateral_n >= kMaxSlope * along ? kMaxSlope : lateral_n / along;
+  /// at a point of view depth \p zv, capped at kMaxSlope, from its \p slope_factor. For an
+  /// orthographic map it is tan(angle between normal and light direction); for a perspective
+  /// face it is the same tangent on the face's axis and the exact zv gradient off it.
+  double depth_slope(double slope_factor, double zv) const {
+    if (view_.orthographic) return std::min(kMaxSlope, slope_factor);
+    if (!(zv > 0)) return kMaxSlope;
+    // min(kMaxSlope, NaN) is kMaxSlope: a plane through the eye is seen edge-on.
+    return std::min(kMaxSlope, slope_factor * zv);
   }
 
   /// The stored depth of the texel of \p s.

@@ -114,8 +114,7 @@ struct ShadowMapMethod::Receiver {
   bool faces_light = false;
   double eye_distance = 0;
   const DepthMap* map = nullptr;
-  Vec3 n;  ///< the plane's normal in the map's view
-  double lateral = 0;
+  double slope_factor = 0;  ///< DepthMap::slope_factor of the plane in the map's view
 };
 
 // A point's depth test, ready to be made: where the point falls in which map, and its bias.
@@ -200,17 +199,19 @@ inline std::optional<ShadowMapMethod::DepthTest> ShadowMapMethod::depth_test_at(
   const DepthMap& map = locate(p, v);
   if (&map != receiver.map) {
     receiver.map = &map;
-    receiver.n = view_normal(map.view(), receiver.plane->normal);
-    receiver.lateral = DepthMap::lateral(receiver.n);
+    receiver.slope_factor = slope_factor(map, *receiver.plane);
   }
-  return depth_test(map, receiver.n, receiver.lateral, v);
+  return depth_test(map, receiver.slope_factor, v);
 }
 
 bool ShadowMapMethod::passes_depth_test(const Plane& plane, Vec3 p) const {
   Vec3 v;
   const DepthMap& map = locate(p, v);
-  const Vec3 n = view_normal(map.view(), plane.normal);
-  return passes(depth_test(map, n, DepthMap::lateral(n), v));
+  return passes(depth_test(map, slope_factor(map, plane), v));
+}
+
+double ShadowMapMethod::slope_factor(const DepthMap& map, const Plane& plane) {
+  return map.slope_factor(view_normal(map.view(), plane.normal), plane.distance(map.view().eye));
 }
 
 inline const DepthMap& ShadowMapMethod::locate(Vec3 p, Vec3& v) const {
@@ -220,14 +221,15 @@ inline const DepthMap& ShadowMapMethod::locate(Vec3 p, Vec3& v) const {
   return ortho_;
 }
 
-inline ShadowMapMethod::DepthTest ShadowMapMethod::depth_test(const DepthMap& map, Vec3 n,
-                                                              double lateral, Vec3 v) const {
+inline ShadowMapMethod::DepthTest ShadowMapMethod::depth_test(const DepthMap& map,
+                                                              double slope_factor, Vec3 v) const {
   const DepthMap::Sample s = map.sample(v);
   // The map sampled each surface at texel centres, so a plane's stored depth differs from
   // its depth at p by up to its slope times half a texel, and float storage adds rounding:
   // without a bias surfaces shadow themselves, the self-shadowing problem Williams 1978
   // describes ("acne").
-  const double bias = bias_ + slope_bias_ * map.texel_size(s.v.z) * map.depth_slope(n, lateral, s);
+  const double bias =
+      bias_ + slope_bias_ * map.texel_size(s.v.z) * map.depth_slope(slope_factor, s.v.z);
   return {&map, s, bias};
 }
 

@@ -69,9 +69,10 @@ class ShadowMapMethod final : public ShadowMethod {
                                          Receiver& receiver) const;
   /// The map of the last build() that holds world point \p p, and \p p in its view.
   const shadowmap::DepthMap& locate(Vec3 p, Vec3& v) const;
-  /// The depth test of the point \p v (in \p map's view) on a receiver whose normal there is
-  /// \p n (DepthMap::lateral(n) = \p lateral).
-  DepthTest depth_test(const shadowmap::DepthMap& map, Vec3 n, double lateral, Vec3 v) const;
+  /// The depth test of the point \p v (in \p map's view) on a receiver whose plane has
+  /// DepthMap::slope_factor \p slope_factor in that view.
+  DepthTest depth_test(const shadowmap::DepthMap& map, double slope_factor, Vec3 v) const;
+  static double slope_factor(const shadowmap::DepthMap& map, const Plane& plane);
   bool passes(const DepthTest& test) const;
 
   int resolution_ = 2048;
