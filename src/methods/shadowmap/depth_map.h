@@ -99,6 +99,13 @@ class DepthMap {
     return std::min(kMaxSlope, slope_factor * zv);
   }
 
+  /// The linear depth a texel stores for the scan converter's depth \p key
+  /// (RasterProjection::depth_key), +infinity for -infinity (nothing drawn).
+  template <bool kOrthographic>
+  static float linear_depth(double key) {
+    return kOrthographic ? float(-key) : 1.0f / std::max(float(key), 0.0f);
+  }
+
   /// The stored depth of the texel of \p s.
   const float& stored(const Sample& s) const {
     int x = 0, y = 0;

@@ -282,7 +282,7 @@ TEST(ShadowMap, CubeMapEdgesAndCornersLookUpCorrectly) {
 }
 
 // The scan converter's depth of every texel of \p view, converted as the map stores it: what
-// a map drawn with its own triangle setup and depth-only tiles must hold, bit for bit.
+// a map drawn with depth-only tiles must hold, bit for bit.
 std::vector<float> scan_converter_depths(const Scene& scene, const RasterProjection& view) {
   std::vector<float> depth(std::size_t(view.width) * view.height, INFINITY);
   ScanConverter(scene).rasterize_tiles(view, quiet(), [&](const RasterTile& tile) {
@@ -292,7 +292,8 @@ std::vector<float> scan_converter_depths(const Scene& scene, const RasterProject
         if (tile.face[k] == kNoFace) continue;
         const double key = tile.depth_key[k];
         depth[std::size_t(tile.y0 + y) * view.width + tile.x0 + x] =
-            float(view.orthographic ? -key : 1.0 / key);
+            view.orthographic ? DepthMap::linear_depth<true>(key)
+                              : DepthMap::linear_depth<false>(key);
       }
     }
   });
