@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -150,27 +151,37 @@ class TileFrame {
 class HiddenSides {
  public:
   HiddenSides(const Scene& scene, const RasterProjection& view)
-      : scene_(scene), view_(view), past_near_(scene.outward_solids().size()) {
-    tbb::parallel_for(std::size_t(0), past_near_.size(), [&](std::size_t s) {
-      const Bounds3& box = scene.outward_solids().bounds(s);
-      bool past = true;
-      for (int k = 0; k < 8; ++k) past = past && view.to_view(box.corner(k)).z > view.near;
-      past_near_[s] = past;
-    });
-  }
+      : scene_(scene), view_(view), past_near_(scene.outward_solids().size(), kUnknown) {}
 
   bool hidden(std::uint32_t face) const {
     const OutwardSolids& solids = scene_.outward_solids();
     const std::int32_t s = solids.solid_of(face);
-    if (s < 0 || !past_near_[std::size_t(s)]) return false;
+    if (s < 0 || !past_near(std::size_t(s))) return false;
     return view_.orthographic ? solids.far_side_along(scene_, face, view_.forward)
                               : solids.far_side_from(scene_, face, view_.eye);
   }
 
  private:
+  enum : std::uint8_t { kUnknown, kPast, kCut };
+  // Taken when a face of the solid is first met: a cube map's face meets a few of a scene's
+  // solids, and most views meet few of them that are not hidden whole. Threads that meet
+  // the solid at once find the same answer.
+  bool past_near(std::size_t s) const {
+    std::atomic_ref<std::uint8_t> state(past_near_[s]);
+    std::uint8_t known = state.load(std::memory_order_relaxed);
+    if (known == kUnknown) {
+      const Bounds3& box = scene_.outward_solids().bounds(s);
+      bool past = true;
+      for (int k = 0; k < 8 && past; ++k) past = view_.to_view(box.corner(k)).z > view_.near;
+      known = past ? kPast : kCut;
+      state.store(known, std::memory_order_relaxed);
+    }
+    return known == kPast;
+  }
+
   const Scene& scene_;
   const RasterProjection& view_;
-  std::vector<std::uint8_t> past_near_;
+  mutable std::vector<std::uint8_t> past_near_;
 };
 
 // The triangles of the clusters \p batch that neither what \p frame has drawn nor their own
