@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -239,6 +240,32 @@ Scene box_scene(bool with_occluder) {
   return scene;
 }
 
+// Object 0: \p n boxes, their faces turned out, scattered over [-10, 10]^3; a point light.
+Scene boxes_scene(int n, Vec3 light) {
+  Scene scene;
+  scene.camera = small_camera({0, 0, 30}, {0, 0, 0});
+  scene.lights = {Light::point(light)};
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> at(-10, 10), side(0.3, 0.8);
+  std::vector<Vec3> v;
+  std::vector<std::vector<std::uint32_t>> faces;
+  for (int b = 0; b < n; ++b) {
+    const Vec3 lo{at(rng), at(rng), at(rng)};
+    const Vec3 hi = lo + Vec3{side(rng), side(rng), side(rng)};
+    const auto first = std::uint32_t(v.size());
+    for (int k = 0; k < 8; ++k)
+      v.push_back({k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z});
+    for (std::vector<std::uint32_t> f : std::vector<std::vector<std::uint32_t>>{
+             {0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}}) {
+      for (std::uint32_t& i : f) i += first;
+      faces.push_back(f);
+    }
+  }
+  add_object(scene, "boxes", v, faces);
+  scene.finalize();
+  return scene;
+}
+
 // Whether each point, on a face of object 0 whose plane holds it, passes the depth test.
 std::vector<bool> depth_tests(const Scene& scene, ShadowMapMethod& method,
                               const std::vector<Vec3>& pts) {
@@ -330,6 +357,9 @@ TEST(ShadowMap, CubeFacesHoldTheScanConvertersDepths) {
       // corners behind the near planes of the side faces.
       {"light inside the scene's bounds", square_scene(Light::point({0.3, 0.5, 0.2}), kTopCamera),
        6},
+      // 36,000 triangles, 2,250 clusters, all in the +X face: drawn in batches, each culled
+      // against the ones before it (ScanConverter::kCulledClusters).
+      {"a light beside thousands of boxes", boxes_scene(3000, {-30, 0, 0}), 1},
   };
   for (const auto& c : cases) {
     for (const int resolution : {100, 1024}) {
