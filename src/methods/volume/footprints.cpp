@@ -11,48 +11,39 @@
 namespace shadowkit::volume {
 namespace {
 
-constexpr int kGrid = 512;       // cells across a face
+// A face's grid has about this many cells per footprint on it, within [kMinCells, kMaxCells]
+// cells across: footprints that overlap must each cover many cells for their union to hide
+// what lies behind the seams between them.
+constexpr double kCellsPerFootprint = 64;
+constexpr int kMinCells = 512, kMaxCells = 2048;
 constexpr double kSlack = 1e-6;  // of a cell: rounding of the projections
 
 struct Point2 {
   double x, y;
 };
 
-// Where points lie as seen from the light: a face of the grid, cell coordinates on it, and
-// the distance along the light's way. A directional light has one face across its
-// direction, over the box \p span; a point light the six faces of a cube around it (a set
-// of points whose directions share a face projects centrally onto it, so the hull of their
-// projections is the projection of their hull).
+// Where points lie as seen from the light: a face, coordinates on its plane, and the distance
+// along the light's way. A directional light has one face across its direction; a point
+// light the six faces of a cube around it (a set of points whose directions share a face
+// projects centrally onto it, so the hull of their projections is the projection of their
+// hull).
 class LightView {
  public:
-  LightView(const Light& light, const Bounds3& span) : light_(light) {
+  explicit LightView(const Light& light) : light_(light) {
     if (light.type == Light::Type::point) return;
     const Vec3 d = light.direction;
     u_ = normalize(cross(d, std::abs(d.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}));
     v_ = normalize(cross(d, u_));
-    double u_lo = INFINITY, u_hi = -INFINITY, v_lo = INFINITY, v_hi = -INFINITY;
-    if (span.empty()) return;
-    for (int c = 0; c < 8; ++c) {
-      const Vec3 corner = span.corner(c);
-      u_lo = std::min(u_lo, dot(corner, u_)), u_hi = std::max(u_hi, dot(corner, u_));
-      v_lo = std::min(v_lo, dot(corner, v_)), v_hi = std::max(v_hi, dot(corner, v_));
-    }
-    origin_ = {u_lo, v_lo};
-    const double extent = std::max(u_hi - u_lo, v_hi - v_lo);
-    scale_ = extent > 0 ? kGrid / extent : 0;
   }
 
   int face_count() const { return light_.type == Light::Type::point ? 6 : 1; }
 
-  /// The face all of \p points project onto and their projections, or nothing when they
-  /// do not share one (or the grid is degenerate).
+  /// The face all of \p points project onto and their coordinates on its plane, or nothing
+  /// when they do not share one.
   std::optional<int> project(std::span<const Vec3> points, std::vector<Point2>& out) const {
     out.clear();
     if (light_.type == Light::Type::directional) {
-      if (scale_ == 0) return std::nullopt;
-      for (const Vec3& p : points) {
-        out.push_back({(dot(p, u_) - origin_.x) * scale_, (dot(p, v_) - origin_.y) * scale_});
-      }
+      for (const Vec3& p : points) out.push_back({dot(p, u_), dot(p, v_)});
       return 0;
     }
     std::optional<int> face;
@@ -64,8 +55,7 @@ class LightView {
       if ((face && *face != f) || !(std::abs(d[axis]) > 0)) return std::nullopt;
       face = f;
       const double w = std::abs(d[axis]);
-      out.push_back(
-          {(d[(axis + 1) % 3] / w + 1) * kGrid / 2, (d[(axis + 2) % 3] / w + 1) * kGrid / 2});
+      out.push_back({d[(axis + 1) % 3] / w, d[(axis + 2) % 3] / w});
     }
     return face;
   }
@@ -93,8 +83,6 @@ class LightView {
   }
   const Light& light_;
   Vec3 u_, v_;
-  Point2 origin_{};
-  double scale_ = 0;
 };
 
 // The columns [left, right] of a convex polygon along the line at height \p y; empty
@@ -111,72 +99,116 @@ std::pair<double, double> columns_at(const std::vector<Point2>& hull, double y) 
   return {left, right};
 }
 
-// Per face, per cell: the nearest far reach of the footprints covering it wholly.
-class FootprintGrid {
- public:
-  explicit FootprintGrid(int faces) : cells_(std::size_t(faces)) {}
+// \p x as a float no smaller: a far reach rounded up never makes a footprint reach nearer.
+float rounded_up(double x) {
+  const float f = float(x);
+  return double(f) < x ? std::nextafter(f, INFINITY) : f;
+}
 
-  // Adds the convex footprint \p hull reaching as far as \p far to the cells it covers
-  // wholly: a cell's rows y and y + 1 cross it within the cell's columns.
-  void add(int face, const std::vector<Point2>& hull, double far) {
+// One face's cells: the nearest far reach of the footprints covering each wholly. The cells
+// span the square around where the footprints fall on the face's plane.
+class FaceGrid {
+ public:
+  FaceGrid() = default;
+  // \p lo, \p hi: the corners of every footprint on the face lie between them.
+  FaceGrid(Point2 lo, Point2 hi, std::size_t footprints) : origin_(lo) {
+    const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
+    if (!(extent > 0) || !std::isfinite(extent)) return;
+    side_ =
+        std::clamp(int(std::sqrt(kCellsPerFootprint * double(footprints))), kMinCells, kMaxCells);
+    scale_ = side_ / extent;
+    cells_.assign(std::size_t(side_) * side_, INFINITY);
+  }
+
+  // Adds the convex footprint \p hull (plane coordinates) reaching as far as \p far to the
+  // cells it covers wholly: a cell's rows y and y + 1 cross it within the cell's columns.
+  void add(std::vector<Point2>& hull, double far) {
+    if (cells_.empty()) return;
+    to_cells(hull);
+    const float reach = rounded_up(far);
     double y_lo = INFINITY, y_hi = -INFINITY;
     for (const Point2& p : hull) y_lo = std::min(y_lo, p.y), y_hi = std::max(y_hi, p.y);
-    std::vector<double>& cells = face_cells(face);
     for (int y = std::max(0, int(std::ceil(y_lo + kSlack)));
-         y + 1 <= std::min(double(kGrid), y_hi - kSlack); ++y) {
+         y + 1 <= std::min(double(side_), y_hi - kSlack); ++y) {
       const auto [l0, r0] = columns_at(hull, y);
       const auto [l1, r1] = columns_at(hull, y + 1);
       const int x0 = std::max(0, int(std::ceil(std::max(l0, l1) + kSlack)));
-      const int x1 = std::min(kGrid, int(std::floor(std::min(r0, r1) - kSlack)));
+      const int x1 = std::min(side_, int(std::floor(std::min(r0, r1) - kSlack)));
       for (int x = x0; x < x1; ++x) {
-        double& c = cells[std::size_t(y) * kGrid + std::size_t(x)];
-        c = std::min(c, far);
+        float& c = cells_[std::size_t(y) * side_ + std::size_t(x)];
+        c = std::min(c, reach);
       }
     }
   }
 
-  // Whether every cell that the rectangle of \p points touches holds footprints whose far
-  // reach is nearer than \p near.
-  bool covers(int face, const std::vector<Point2>& points, double near) const {
-    const std::vector<double>& cells = cells_[std::size_t(face)];
-    if (cells.empty()) return false;
+  // Whether every cell that the rectangle of \p points (plane coordinates) touches holds
+  // footprints whose far reach is nearer than \p near.
+  bool covers(std::vector<Point2>& points, double near) const {
+    if (cells_.empty()) return false;
+    to_cells(points);
     double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
     for (const Point2& p : points) {
       x_lo = std::min(x_lo, p.x), x_hi = std::max(x_hi, p.x);
       y_lo = std::min(y_lo, p.y), y_hi = std::max(y_hi, p.y);
     }
-    const int x0 = int(std::floor(x_lo - kSlack)), x1 = int(std::floor(x_hi + kSlack));
-    const int y0 = int(std::floor(y_lo - kSlack)), y1 = int(std::floor(y_hi + kSlack));
-    if (x0 < 0 || y0 < 0 || x1 >= kGrid || y1 >= kGrid) return false;
+    // Compared before conversion: a rectangle far off the grid would overflow an int.
+    if (!(x_lo - kSlack >= 0 && y_lo - kSlack >= 0 && x_hi + kSlack < side_ &&
+          y_hi + kSlack < side_)) {
+      return false;
+    }
+    const int x0 = int(x_lo - kSlack), x1 = int(x_hi + kSlack);
+    const int y0 = int(y_lo - kSlack), y1 = int(y_hi + kSlack);
     for (int y = y0; y <= y1; ++y) {
       for (int x = x0; x <= x1; ++x) {
-        if (!(cells[std::size_t(y) * kGrid + std::size_t(x)] < near)) return false;
+        if (!(cells_[std::size_t(y) * side_ + std::size_t(x)] < near)) return false;
       }
     }
     return true;
   }
 
  private:
-  std::vector<double>& face_cells(int face) {
-    std::vector<double>& cells = cells_[std::size_t(face)];
-    if (cells.empty()) cells.assign(std::size_t(kGrid) * kGrid, INFINITY);
-    return cells;
+  void to_cells(std::vector<Point2>& points) const {
+    for (Point2& p : points) p = {(p.x - origin_.x) * scale_, (p.y - origin_.y) * scale_};
   }
 
-  std::vector<std::vector<double>> cells_;
+  Point2 origin_{};
+  double scale_ = 0;
+  int side_ = 0;
+  std::vector<float> cells_;
 };
+
+// Per face of \p view, a grid around the footprints of the convex sub-objects of \p parts
+// that fall on it.
+std::vector<FaceGrid> footprint_grids(const SubObjects& parts, const LightView& view) {
+  const std::size_t faces = std::size_t(view.face_count());
+  std::vector<Point2> lo(faces, {INFINITY, INFINITY}), hi(faces, {-INFINITY, -INFINITY});
+  std::vector<std::size_t> footprints(faces, 0);
+  std::vector<Point2> points;
+  for (std::uint32_t k = 0; k < parts.size(); ++k) {
+    if (!parts.convex[k]) continue;
+    const std::optional<int> face = view.project(parts.corners(k), points);
+    if (!face) continue;
+    const std::size_t f = std::size_t(*face);
+    ++footprints[f];
+    for (const Point2& p : points) {
+      lo[f] = {std::min(lo[f].x, p.x), std::min(lo[f].y, p.y)};
+      hi[f] = {std::max(hi[f].x, p.x), std::max(hi[f].y, p.y)};
+    }
+  }
+  std::vector<FaceGrid> grids(faces);
+  for (std::size_t f = 0; f < faces; ++f) {
+    if (footprints[f] > 0) grids[f] = FaceGrid(lo[f], hi[f], footprints[f]);
+  }
+  return grids;
+}
 
 }  // namespace
 
 std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& light,
                                        const Bounds3& scene_bounds) {
   std::vector<char> shadowed(parts.size(), 0);
-  // A directional light's grid spans the footprints only: nothing beyond them is covered.
-  Bounds3 occluders;
-  for (std::uint32_t k = 0; k < parts.size(); ++k) {
-    if (parts.convex[k]) occluders.add(parts.bounds[k]);
-  }
-  const LightView view(light, occluders);
+  const LightView view(light);
+  std::vector<FaceGrid> grids = footprint_grids(parts, view);
   // Hazard: distances carry rounding of about 1e-16 of the scene's size; a sub-object
   // touching a footprint's far side stays.
   const double tolerance = 1e-9 * (scene_bounds.diagonal() + length(scene_bounds.center()) +
@@ -188,20 +220,19 @@ std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& lig
   std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
     return near[a] < near[b] || (near[a] == near[b] && a < b);
   });
-  FootprintGrid grid(view.face_count());
   std::vector<Point2> points, hull;
   for (const std::uint32_t k : order) {
     std::array<Vec3, 8> corners;
     for (int c = 0; c < 8; ++c) corners[std::size_t(c)] = parts.bounds[k].corner(c);
     if (const auto face = view.project(corners, points);
-        face && grid.covers(*face, points, near[k] - tolerance)) {
+        face && grids[std::size_t(*face)].covers(points, near[k] - tolerance)) {
       shadowed[k] = 1;
       continue;
     }
     if (!parts.convex[k]) continue;  // only a convex hull of its corners is its footprint
     if (const auto face = view.project(parts.corners(k), points)) {
       hull.resize(convex_hull(std::span(points), hull));
-      if (hull.size() >= 3) grid.add(*face, hull, view.far(parts.corners(k)));
+      if (hull.size() >= 3) grids[std::size_t(*face)].add(hull, view.far(parts.corners(k)));
     }
   }
   return shadowed;

@@ -35,6 +35,21 @@ TEST(Footprints, MarkBoxesWhollyBehindANearerConvexBox) {
   }
 }
 
+TEST(Footprints, MarkABoxBehindTheSeamOfTwoNearerBoxes) {
+  // Two boxes overlapping by 0.06 along x, far from a point light; a small box below the seam
+  // lies in the shadow of their union, not of either. The grid spans the footprints, so
+  // cells fit within the overlap (across the whole cube face, one cell would be 0.14 wide).
+  std::vector<PolygonSoup> objects{testing::box({-1, 4, -1}, {0.1, 6, 1}),
+                                   testing::box({0.04, 4, -1}, {1, 6, 1}),
+                                   testing::box({-0.13, 1, -0.25}, {0.27, 1.5, 0.25})};
+  for (const Light& light :
+       {testing::point_light({0, 40, 0}), testing::directional_light({0, -1, 0})}) {
+    const Scene scene =
+        testing::make_scene(testing::camera({0, 7, 12}, {0, 2, 0}, 160, 120), {light}, objects);
+    EXPECT_EQ(shadowed(scene), (std::vector<char>{0, 0, 1})) << int(light.type);
+  }
+}
+
 TEST(Footprints, KeepABoxTouchingTheFarSide) {
   // 1e-3 below the big box's bottom face, the small box lies beyond its far reach; touching
   // it, where rounding could put it on either side, it is kept.
