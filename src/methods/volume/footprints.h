@@ -18,7 +18,7 @@ namespace shadowkit::volume {
 /// The footprints are kept in grids seen from the light (one plane for a directional light,
 /// the six faces of a cube for a point light), each cell holding the nearest far reach of
 /// the footprints that cover it wholly; a box is tested against every cell it touches. A
-/// face's grid spans only where the footprints fall on it, with about 64 cells per
+/// face's grid spans only where the footprints fall on it, with about 16 cells per
 /// footprint (512 to 2048 across): a box behind the seam of two overlapping footprints is
 /// found hidden only where cells fit between their outlines. Both sides are rounded toward
 /// keeping a sub-object.
