@@ -15,6 +15,7 @@
 #include "scan_line_run.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/angular.h"
+#include "shadowkit/scene/footprints.h"
 
 namespace shadowkit::angular {
 
@@ -75,12 +76,21 @@ AngularMethod::AngularMethod(const MethodOptions& options) {
   exact_ = flag(options, "exact", true);
 }
 
+void AngularMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
+  parts_ = SubObjects::of(scene);
+}
+
 void AngularMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
+  SHADOWKIT_CHECK(parts_.of_face.size() == scene.face_count());  // prepare() came first
   light_ = scene.lights[light];
   const Bounds3& box = scene.bounds();
   frame_.emplace(light_, scene.camera, (box.lo + box.hi) * 0.5);
-  // Sec. 7, step 1: the RE loops of every object sliced entry by entry.
-  const std::vector<FarSheets> sheets = occluding_sheets(scene, light_);
+  // Sec. 7, step 1: the RE loops of every object sliced entry by entry; but of the parts
+  // wholly in the shadow of nearer ones (Crow's footprints), which add no shadow.
+  const std::vector<char> shadowed = shadowed_sub_objects(parts_, light_, box);
+  shadowed_sub_objects_ = double(std::count(shadowed.begin(), shadowed.end(), 1));
+  std::vector<FarSheets> sheets = occluding_sheets(scene, light_);
+  leave_out_shadowed(scene, parts_, shadowed, sheets);
   table_.recycle(table_buffers_);
   table_ = AngularTable::build(scene, *frame_, sheets, table_options_, &table_buffers_);
   boundaries_ = ThetaBoundaries(*frame_, table_.theta());
@@ -228,7 +238,8 @@ MethodCounters AngularMethod::counters() const {
                      {"table_pairs", double(table_.pair_count())},
                      {"saturated_pairs", double(table_.saturated_count())},
                      {"table_bytes", double(table_.memory_bytes())},
-                     {"lookup_calls", lookup_calls_}};
+                     {"lookup_calls", lookup_calls_},
+                     {"shadowed_sub_objects", shadowed_sub_objects_}};
   if (table_options_.paper_pairing) {
     const PairingCounts& p = table_.pairing();
     out.insert(out.end(), {{"paper_objects", p.paper_objects},

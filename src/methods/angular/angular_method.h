@@ -8,6 +8,7 @@
 #include "ridge_edges.h"
 #include "scan_line_run.h"
 #include "shadowkit/methods/shadow_method.h"
+#include "shadowkit/scene/sub_objects.h"
 
 namespace shadowkit::angular {
 
@@ -19,6 +20,7 @@ class AngularMethod final : public ShadowMethod {
  public:
   explicit AngularMethod(const MethodOptions& options);
   std::string_view name() const override { return "angular"; }
+  void prepare(const Scene& scene, const Context& ctx) override;
   void build(const Scene& scene, std::size_t light, const Context& ctx) override;
   void shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
              const Context& ctx) override;
@@ -55,6 +57,7 @@ class AngularMethod final : public ShadowMethod {
                         int row) const;
 
   AngularTableOptions table_options_;
+  SubObjects parts_;
   Light light_;
   std::optional<LightFrame> frame_;
   AngularTable table_;
@@ -66,6 +69,7 @@ class AngularMethod final : public ShadowMethod {
   bool exact_ = true;
   bool block_runs_ = false;  ///< runs may be answered across a block of entries
   double lookup_calls_ = 0;
+  double shadowed_sub_objects_ = 0;
 };
 
 }  // namespace shadowkit::angular

@@ -44,4 +44,14 @@ std::vector<FarSheets> occluding_sheets(const Scene& scene, const Light& light) 
   return sheets;
 }
 
+void leave_out_shadowed(const Scene& scene, const SubObjects& parts,
+                        const std::vector<char>& shadowed, std::vector<FarSheets>& sheets) {
+  for (std::size_t o = 0; o < scene.objects.size(); ++o) {
+    const std::uint32_t first = scene.objects[o].first_face;
+    for (std::uint32_t f = 0; f < sheets[o].side.size(); ++f) {
+      if (shadowed[parts.of_face[first + f]]) sheets[o].side[f] = 0;
+    }
+  }
+}
+
 }  // namespace shadowkit::angular

@@ -4,6 +4,7 @@
 
 #include "ridge_edges.h"
 #include "shadowkit/scene/scene.h"
+#include "shadowkit/scene/sub_objects.h"
 
 namespace shadowkit::angular {
 
@@ -17,5 +18,12 @@ namespace shadowkit::angular {
 /// and for every open, non-manifold or inconsistently oriented mesh, the mesh is a two-sided
 /// thin solid.
 std::vector<FarSheets> occluding_sheets(const Scene& scene, const Light& light);
+
+/// Takes the faces of the sub-objects \p shadowed marks (shadowed_sub_objects: wholly in
+/// the shadow of nearer ones) out of \p sheets (per object, as occluding_sheets gives them):
+/// every ray from the light to them meets a nearer sub-object first, whose own loops cast
+/// that shadow. Their side becomes 0, which occludes nothing.
+void leave_out_shadowed(const Scene& scene, const SubObjects& parts,
+                        const std::vector<char>& shadowed, std::vector<FarSheets>& sheets);
 
 }  // namespace shadowkit::angular

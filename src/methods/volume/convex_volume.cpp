@@ -6,7 +6,7 @@
 #include <cstring>
 #include <limits>
 
-#include "convex_hull.h"
+#include "shadowkit/core/convex_hull.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "sub_objects.h"
+#include "shadowkit/scene/sub_objects.h"
 #include "testing/method_testing.h"
 #include "testing/test_scenes.h"
 #include "volume_method.h"

@@ -9,7 +9,7 @@
 #include "depth_keys.h"
 #include "shadowkit/methods/shadow_method.h"
 #include "shadowkit/raster/tile_bins.h"
-#include "sub_objects.h"
+#include "shadowkit/scene/sub_objects.h"
 
 namespace shadowkit::volume {
 

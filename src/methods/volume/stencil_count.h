@@ -7,7 +7,7 @@
 #include "shadow_polygon.h"
 #include "shadowkit/methods/shadow_method.h"
 #include "shadowkit/raster/screen_polygon.h"
-#include "sub_objects.h"
+#include "shadowkit/scene/sub_objects.h"
 #include "volume_culling.h"
 
 namespace shadowkit::volume {

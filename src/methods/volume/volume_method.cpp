@@ -8,9 +8,9 @@
 
 #include "contour_edges.h"
 #include "eye_count.h"
-#include "footprints.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/volume.h"
+#include "shadowkit/scene/footprints.h"
 #include "stencil_count.h"
 
 namespace shadowkit::volume {

@@ -4,8 +4,8 @@
 
 #include "shadow_polygon.h"
 #include "shadowkit/methods/shadow_method.h"
+#include "shadowkit/scene/sub_objects.h"
 #include "stencil_count.h"
-#include "sub_objects.h"
 #include "volume_culling.h"
 
 namespace shadowkit::volume {

@@ -1,4 +1,4 @@
-#include "sub_objects.h"
+#include "shadowkit/scene/sub_objects.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <numeric>
 #include <tuple>
 
-namespace shadowkit::volume {
+namespace shadowkit {
 namespace {
 
 constexpr std::uint32_t kUnnumbered = std::numeric_limits<std::uint32_t>::max();
@@ -114,4 +114,4 @@ SubObjects SubObjects::of(const Scene& scene) {
   return s;
 }
 
-}  // namespace shadowkit::volume
+}  // namespace shadowkit

@@ -1,4 +1,4 @@
-#include "footprints.h"
+#include "shadowkit/scene/footprints.h"
 
 #include <algorithm>
 #include <array>
@@ -6,9 +6,9 @@
 #include <numeric>
 #include <optional>
 
-#include "convex_hull.h"
+#include "shadowkit/core/convex_hull.h"
 
-namespace shadowkit::volume {
+namespace shadowkit {
 namespace {
 
 // A face's grid has about this many cells per footprint on it, within [kMinCells, kMaxCells]
@@ -238,4 +238,4 @@ std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& lig
   return shadowed;
 }
 
-}  // namespace shadowkit::volume
+}  // namespace shadowkit

@@ -3,9 +3,9 @@
 #include <vector>
 
 #include "shadowkit/scene/scene.h"
-#include "sub_objects.h"
+#include "shadowkit/scene/sub_objects.h"
 
-namespace shadowkit::volume {
+namespace shadowkit {
 
 /// Which sub-objects of \p parts lie wholly in the shadow of nearer ones (Crow
 /// Sec. VI: "whenever an object's bounding box lies wholly within the footprint of an object
@@ -25,4 +25,4 @@ namespace shadowkit::volume {
 std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& light,
                                        const Bounds3& scene_bounds);
 
-}  // namespace shadowkit::volume
+}  // namespace shadowkit

@@ -1,12 +1,10 @@
-#include "footprints.h"
+#include "shadowkit/scene/footprints.h"
 
 #include <gtest/gtest.h>
 
-#include "testing/method_testing.h"
 #include "testing/test_scenes.h"
-#include "volume_method.h"
 
-namespace shadowkit::volume {
+namespace shadowkit {
 namespace {
 
 // A 2 x 2 x 2 box at the origin's column over a ground, and small boxes below it at \p
@@ -66,25 +64,5 @@ TEST(Footprints, NeedAFootprintOnOneCubeFaceOfAPointLight) {
   EXPECT_EQ(shadowed(scene), (std::vector<char>{0, 0, 0}));
 }
 
-TEST(Footprints, DropCastersWithoutChangingThePicture) {
-  // A 5 x 5 x 5 block of cubes with gaps of 0.1: the cubes beyond the first layers the
-  // light meets are dropped.
-  std::vector<PolygonSoup> objects{testing::horizontal_quad(-10, 10, -10, 10, 0)};
-  for (int i = 0; i < 125; ++i) {
-    const Vec3 lo = Vec3{i % 5 - 2.5, 1.0 + i / 5 % 5, i / 25 - 2.5} * 1.1;
-    objects.push_back(testing::box(lo, lo + Vec3{1, 1, 1}));
-  }
-  for (const Light& light :
-       {testing::point_light({3, 14, 5}), testing::directional_light({-0.3, -1, -0.2})}) {
-    const Scene scene =
-        testing::make_scene(testing::camera({9, 9, 14}, {0, 3, 0}, 200, 150), {light}, objects);
-    VolumeMethod m({});
-    const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
-    testing::method_mask(m, scene, vsb, 0);
-    EXPECT_GT(testing::counter(m, "shadowed_sub_objects"), 30) << int(light.type);
-    EXPECT_LE(testing::worst_interior_mismatch(scene, "volume"), 0.05) << int(light.type);
-  }
-}
-
 }  // namespace
-}  // namespace shadowkit::volume
+}  // namespace shadowkit

@@ -4,7 +4,7 @@
 #include <span>
 #include <vector>
 
-namespace shadowkit::volume {
+namespace shadowkit {
 
 /// The convex hull of \p p (Andrew's monotone chain) into the first corners of \p hull,
 /// turning the way of a positive cross product (ScreenPolygon's orientation in screen
@@ -31,4 +31,4 @@ std::size_t convex_hull(std::span<Point> p, std::vector<Point>& hull) {
   return n > 1 ? n - 1 : n;  // the last corner repeats the first
 }
 
-}  // namespace shadowkit::volume
+}  // namespace shadowkit

@@ -7,7 +7,7 @@
 
 #include "shadowkit/scene/scene.h"
 
-namespace shadowkit::volume {
+namespace shadowkit {
 
 /// \brief The scene's faces grouped into sub-objects: the edge-connected parts of each
 /// object's mesh. No edge joins two sub-objects, so the shadow polygons of a sub-object's
@@ -42,4 +42,4 @@ struct SubObjects {
   std::vector<Vec3> corners_;
 };
 
-}  // namespace shadowkit::volume
+}  // namespace shadowkit
