@@ -1,10 +1,13 @@
 #include "shadowkit/scene/footprints.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
 #include <optional>
+#include <utility>
 
 #include "shadowkit/core/convex_hull.h"
 
@@ -141,16 +144,12 @@ class FaceGrid {
     }
   }
 
-  // Whether every cell that the rectangle of \p points (plane coordinates) touches holds
+  // Whether every cell that the rectangle [lo, hi] (plane coordinates) touches holds
   // footprints whose far reach is nearer than \p near.
-  bool covers(std::vector<Point2>& points, double near) const {
+  bool covers(Point2 lo, Point2 hi, double near) const {
     if (cells_.empty()) return false;
-    to_cells(points);
-    double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
-    for (const Point2& p : points) {
-      x_lo = std::min(x_lo, p.x), x_hi = std::max(x_hi, p.x);
-      y_lo = std::min(y_lo, p.y), y_hi = std::max(y_hi, p.y);
-    }
+    const double x_lo = (lo.x - origin_.x) * scale_, x_hi = (hi.x - origin_.x) * scale_;
+    const double y_lo = (lo.y - origin_.y) * scale_, y_hi = (hi.y - origin_.y) * scale_;
     // Compared before conversion: a rectangle far off the grid would overflow an int.
     if (!(x_lo - kSlack >= 0 && y_lo - kSlack >= 0 && x_hi + kSlack < side_ &&
           y_hi + kSlack < side_)) {
@@ -177,20 +176,53 @@ class FaceGrid {
   std::vector<float> cells_;
 };
 
-// Per face of \p view, a grid around the footprints of the convex sub-objects of \p parts
-// that fall on it.
-std::vector<FaceGrid> footprint_grids(const SubObjects& parts, const LightView& view) {
+// What the footprint test needs of one sub-object as the light sees it, found for all of
+// them at once.
+struct SubObjectView {
+  double near = 0;            ///< how near the light its box reaches
+  int box_face = -1;          ///< the face its box projects onto, -1 if none
+  Point2 box_lo{}, box_hi{};  ///< the rectangle of its box's projection
+  int hull_face = -1;         ///< a convex sub-object's: the face of its footprint
+  std::vector<Point2> hull;   ///< its footprint (plane coordinates)
+  double far = 0;             ///< how far from the light its footprint reaches
+};
+
+SubObjectView view_of(const SubObjects& parts, std::uint32_t k, const LightView& view,
+                      std::vector<Point2>& points) {
+  SubObjectView out;
+  out.near = view.near(parts.bounds[k]);
+  std::array<Vec3, 8> corners;
+  for (int c = 0; c < 8; ++c) corners[std::size_t(c)] = parts.bounds[k].corner(c);
+  if (const std::optional<int> face = view.project(corners, points)) {
+    out.box_face = *face;
+    out.box_lo = out.box_hi = points[0];
+    for (const Point2& p : points) {
+      out.box_lo = {std::min(out.box_lo.x, p.x), std::min(out.box_lo.y, p.y)};
+      out.box_hi = {std::max(out.box_hi.x, p.x), std::max(out.box_hi.y, p.y)};
+    }
+  }
+  if (!parts.convex[k]) return out;  // only a convex hull of its corners is its footprint
+  if (const std::optional<int> face = view.project(parts.corners(k), points)) {
+    out.hull.resize(convex_hull(std::span(points), out.hull));
+    if (out.hull.size() >= 3) {
+      out.hull_face = *face;
+      out.far = view.far(parts.corners(k));
+    }
+  }
+  return out;
+}
+
+// Per face of \p view, a grid around the footprints in \p views that fall on it.
+std::vector<FaceGrid> footprint_grids(const std::vector<SubObjectView>& views,
+                                      const LightView& view) {
   const std::size_t faces = std::size_t(view.face_count());
   std::vector<Point2> lo(faces, {INFINITY, INFINITY}), hi(faces, {-INFINITY, -INFINITY});
   std::vector<std::size_t> footprints(faces, 0);
-  std::vector<Point2> points;
-  for (std::uint32_t k = 0; k < parts.size(); ++k) {
-    if (!parts.convex[k]) continue;
-    const std::optional<int> face = view.project(parts.corners(k), points);
-    if (!face) continue;
-    const std::size_t f = std::size_t(*face);
+  for (const SubObjectView& v : views) {
+    if (v.hull_face < 0) continue;
+    const std::size_t f = std::size_t(v.hull_face);
     ++footprints[f];
-    for (const Point2& p : points) {
+    for (const Point2& p : v.hull) {
       lo[f] = {std::min(lo[f].x, p.x), std::min(lo[f].y, p.y)};
       hi[f] = {std::max(hi[f].x, p.x), std::max(hi[f].y, p.y)};
     }
@@ -206,33 +238,37 @@ std::vector<FaceGrid> footprint_grids(const SubObjects& parts, const LightView& 
 
 std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& light,
                                        const Bounds3& scene_bounds) {
-  std::vector<char> shadowed(parts.size(), 0);
   const LightView view(light);
-  std::vector<FaceGrid> grids = footprint_grids(parts, view);
+  std::vector<SubObjectView> views(parts.size());
+  tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, std::uint32_t(parts.size()), 256),
+                    [&](const auto& r) {
+                      std::vector<Point2> points;
+                      for (std::uint32_t k = r.begin(); k != r.end(); ++k) {
+                        views[k] = view_of(parts, k, view, points);
+                      }
+                    });
+  std::vector<FaceGrid> grids = footprint_grids(views, view);
   // Hazard: distances carry rounding of about 1e-16 of the scene's size; a sub-object
   // touching a footprint's far side stays.
   const double tolerance = 1e-9 * (scene_bounds.diagonal() + length(scene_bounds.center()) +
                                    (light.type == Light::Type::point ? length(light.position) : 0));
-  std::vector<double> near(parts.size());
-  for (std::size_t k = 0; k < parts.size(); ++k) near[k] = view.near(parts.bounds[k]);
-  std::vector<std::uint32_t> order(parts.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return near[a] < near[b] || (near[a] == near[b] && a < b);
-  });
-  std::vector<Point2> points, hull;
-  for (const std::uint32_t k : order) {
-    std::array<Vec3, 8> corners;
-    for (int c = 0; c < 8; ++c) corners[std::size_t(c)] = parts.bounds[k].corner(c);
-    if (const auto face = view.project(corners, points);
-        face && grids[std::size_t(*face)].covers(points, near[k] - tolerance)) {
-      shadowed[k] = 1;
-      continue;
-    }
-    if (!parts.convex[k]) continue;  // only a convex hull of its corners is its footprint
-    if (const auto face = view.project(parts.corners(k), points)) {
-      hull.resize(convex_hull(std::span(points), hull));
-      if (hull.size() >= 3) grids[std::size_t(*face)].add(hull, view.far(parts.corners(k)));
+  std::vector<std::pair<double, std::uint32_t>> order(parts.size());
+  for (std::uint32_t k = 0; k < parts.size(); ++k) order[k] = {views[k].near, k};
+  tbb::parallel_sort(order.begin(), order.end());
+  // In that order in memory: the loop below, which cannot run in parallel, then reads them
+  // one after another.
+  std::vector<SubObjectView> nearest_first(parts.size());
+  tbb::parallel_for(std::size_t(0), order.size(),
+                    [&](std::size_t i) { nearest_first[i] = std::move(views[order[i].second]); });
+  // Nearest the light first: a sub-object is tested against the footprints of nearer ones.
+  std::vector<char> shadowed(parts.size(), 0);
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    SubObjectView& v = nearest_first[i];
+    if (v.box_face >= 0 &&
+        grids[std::size_t(v.box_face)].covers(v.box_lo, v.box_hi, v.near - tolerance)) {
+      shadowed[order[i].second] = 1;
+    } else if (v.hull_face >= 0) {
+      grids[std::size_t(v.hull_face)].add(v.hull, v.far);
     }
   }
   return shadowed;
