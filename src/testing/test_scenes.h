@@ -87,4 +87,15 @@ inline Scene square_over_plane(const Camera& cam, Light light) {
                     {horizontal_quad(-10, 10, -10, 10, 0), horizontal_quad(-1, 1, -1, 1, 1)});
 }
 
+/// A 5 x 5 x 5 block of unit cubes with gaps of 0.1 over a ground: seen from \p light, the
+/// cubes beyond its first layers lie wholly in the shadow of nearer ones (Crow's footprints).
+inline Scene cube_block(Light light) {
+  std::vector<PolygonSoup> objects{horizontal_quad(-10, 10, -10, 10, 0)};
+  for (int i = 0; i < 125; ++i) {
+    const Vec3 lo = Vec3{i % 5 - 2.5, 1.0 + i / 5 % 5, i / 25 - 2.5} * 1.1;
+    objects.push_back(box(lo, lo + Vec3{1, 1, 1}));
+  }
+  return make_scene(camera({9, 9, 14}, {0, 3, 0}, 200, 150), {light}, objects);
+}
+
 }  // namespace shadowkit::testing

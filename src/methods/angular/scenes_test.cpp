@@ -164,17 +164,11 @@ TEST(AngularScenes, TheSaturatedTableGivesTheSameMask) {
 }
 
 // Crow's footprints: the cubes wholly in the shadow of nearer ones leave no RE loops in the
-// table, and the mask stays exact. A 5 x 5 x 5 block of cubes with gaps of 0.1 over a ground.
+// table, and the mask stays exact.
 TEST(AngularScenes, PartsInTheShadowOfNearerOnesLeaveNoLoops) {
-  std::vector<PolygonSoup> objects{testing::horizontal_quad(-10, 10, -10, 10, 0)};
-  for (int i = 0; i < 125; ++i) {
-    const Vec3 lo = Vec3{i % 5 - 2.5, 1.0 + i / 5 % 5, i / 25 - 2.5} * 1.1;
-    objects.push_back(testing::box(lo, lo + Vec3{1, 1, 1}));
-  }
   for (const Light& light :
        {testing::point_light({3, 14, 5}), testing::directional_light({-0.3, -1, -0.2})}) {
-    const Scene scene =
-        testing::make_scene(testing::camera({9, 9, 14}, {0, 3, 0}, 200, 150), {light}, objects);
+    const Scene scene = testing::cube_block(light);
     AngularMethod angular({});
     testing::method_mask(angular, scene, render_visible_surfaces(scene, {}), 0);
     const double shadowed = testing::counter(angular, "shadowed_sub_objects");

@@ -119,17 +119,9 @@ TEST(ShadowFrustum, DegenerateLightsAndScales) {
 
 // Crow's footprints (shadowed_sub_objects) drop casters without changing the picture.
 TEST(Culling, FootprintsDropCastersWithoutChangingThePicture) {
-  // A 5 x 5 x 5 block of cubes with gaps of 0.1: the cubes beyond the first layers the
-  // light meets are dropped.
-  std::vector<PolygonSoup> objects{testing::horizontal_quad(-10, 10, -10, 10, 0)};
-  for (int i = 0; i < 125; ++i) {
-    const Vec3 lo = Vec3{i % 5 - 2.5, 1.0 + i / 5 % 5, i / 25 - 2.5} * 1.1;
-    objects.push_back(testing::box(lo, lo + Vec3{1, 1, 1}));
-  }
   for (const Light& light :
        {testing::point_light({3, 14, 5}), testing::directional_light({-0.3, -1, -0.2})}) {
-    const Scene scene =
-        testing::make_scene(testing::camera({9, 9, 14}, {0, 3, 0}, 200, 150), {light}, objects);
+    const Scene scene = testing::cube_block(light);
     VolumeMethod m({});
     const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
     testing::method_mask(m, scene, vsb, 0);
