@@ -27,6 +27,13 @@ struct SubObjects {
 
   static SubObjects of(const Scene& scene);
   std::size_t size() const { return bounds.size(); }
+  std::size_t memory_bytes() const {
+    return of_face.capacity() * sizeof(std::uint32_t) + bounds.capacity() * sizeof(Bounds3) +
+           convex.capacity() +
+           (face_start_.capacity() + face_ids_.capacity() + corner_start_.capacity()) *
+               sizeof(std::uint32_t) +
+           corners_.capacity() * sizeof(Vec3);
+  }
   /// The global face ids of sub-object \p k.
   std::span<const std::uint32_t> faces(std::size_t k) const {
     return {face_ids_.data() + face_start_[k], face_start_[k + 1] - face_start_[k]};

@@ -26,7 +26,7 @@ class AngularMethod final : public ShadowMethod {
              const Context& ctx) override;
   /// The table and the build's buffers, kept for the next build.
   std::size_t memory_bytes() const override {
-    return table_.memory_bytes() + table_buffers_.memory_bytes();
+    return table_.memory_bytes() + table_buffers_.memory_bytes() + parts_.memory_bytes();
   }
   MethodCounters counters() const override;
 

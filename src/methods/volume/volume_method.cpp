@@ -305,8 +305,7 @@ std::size_t VolumeMethod::memory_bytes() const {
   return items_.capacity() * sizeof(const raster::ScreenPolygon*) +
          screen_.capacity() * sizeof(raster::ScreenPolygon) +
          polygons_.capacity() * sizeof(ShadowPolygon) + frusta_.capacity() * sizeof(ShadowFrustum) +
-         parts_.of_face.capacity() * sizeof(std::uint32_t) +
-         parts_.bounds.capacity() * sizeof(Bounds3);
+         parts_.memory_bytes();
 }
 
 MethodCounters VolumeMethod::counters() const {
