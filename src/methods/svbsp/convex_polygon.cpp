@@ -59,6 +59,12 @@ std::size_t heap_bytes(const ConvexPolygon& p) {
   return spilled(p.vertices) + spilled(p.edge_in_tree);
 }
 
+Vec3 centroid(const ConvexPolygon& p) {
+  Vec3 sum;
+  for (const Vec3& v : p.vertices) sum += v;
+  return sum / double(p.vertices.size());
+}
+
 double area(const ConvexPolygon& p) {
   Vec3 sum;
   for (std::size_t i = 1; i + 1 < p.vertices.size(); ++i) {

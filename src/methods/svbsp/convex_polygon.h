@@ -34,6 +34,9 @@ inline ConvexPolygon make_polygon(std::initializer_list<Vec3> vertices, std::uin
 /// The bytes \p p takes beyond sizeof(ConvexPolygon): its corners past the inline ones.
 std::size_t heap_bytes(const ConvexPolygon& p);
 
+/// The mean of \p p's corners: a point inside it.
+Vec3 centroid(const ConvexPolygon& p);
+
 /// Area of a convex (or any simple planar) polygon.
 double area(const ConvexPolygon& p);
 

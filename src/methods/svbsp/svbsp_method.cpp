@@ -22,13 +22,14 @@ bool switch_setting(const MethodOptions& options, const std::string& key, bool f
 
 SvbspMethod::SvbspMethod(const MethodOptions& options) {
   options.expect_only("svbsp", {"paper", "contour_planes", "far_side", "skip_edges_in_tree",
-                                "merge_siblings", "whole_pieces", "shadowed_only"});
+                                "merge_siblings", "whole_pieces", "shadowed_only", "balance"});
   // paper=1: Figs. 3 and 4 as written, one-sided; each §6 refinement off unless set.
   const bool paper = switch_setting(options, "paper", false);
   generator_.two_sided = !paper;
   generator_.skip_edges_in_tree = switch_setting(options, "skip_edges_in_tree", !paper);
   generator_.merge_siblings = switch_setting(options, "merge_siblings", !paper);
   generator_.whole_pieces = switch_setting(options, "whole_pieces", !paper);
+  generator_.balance = switch_setting(options, "balance", !paper);
   far_side_ = switch_setting(options, "far_side", !paper);
   contour_planes_ = switch_setting(options, "contour_planes", false);
   shadowed_only_ = switch_setting(options, "shadowed_only", false);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "shadowkit/core/error.h"
+
 namespace shadowkit::svbsp {
 
 bool make_shadow_plane(const Light& light, Vec3 a, Vec3 b, Vec3 inside, ShadowPlane& out) {
@@ -40,9 +42,7 @@ std::int32_t SvbspTree::chain(std::span<const ShadowPlane> planes) {
 // The shadow volume of a lit fragment as a chain of its shadow planes (buildSVBSPtree of
 // Fig. 4 for a convex polygon).
 std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p) {
-  Vec3 centroid;
-  for (const Vec3& v : p.vertices) centroid += v;
-  centroid = centroid / double(p.vertices.size());
+  const Vec3 inside = centroid(p);
   const std::size_t n = p.vertices.size();
   absl::InlinedVector<ShadowPlane, ConvexPolygon::kInlineCorners> planes;
   bool undefined = false;
@@ -50,7 +50,7 @@ std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p) {
     // §6: an edge in a plane that already bounds this cell needs no plane of its own.
     if (skip_edges_in_tree_ && p.edge_in_tree[i]) continue;
     ShadowPlane s;
-    if (make_shadow_plane(light_, p.vertices[i], p.vertices[(i + 1) % n], centroid, s)) {
+    if (make_shadow_plane(light_, p.vertices[i], p.vertices[(i + 1) % n], inside, s)) {
       planes.push_back(s);
     } else {
       undefined = true;
@@ -92,6 +92,34 @@ void SvbspTree::enlarge_by_contour(std::vector<Landing> landings,
     slot(landings[i].parent, landings[i].positive) = chain(walls);
     i = end;
   }
+}
+
+void SvbspTree::divide(const LightView& view, std::span<LightView::Coordinates> points,
+                       std::size_t levels) {
+  SHADOWKIT_CHECK(nodes_.empty() && root_ == kOut);
+  root_ = cells(view, points, levels);
+}
+
+std::int32_t SvbspTree::cells(const LightView& view, std::span<LightView::Coordinates> points,
+                              std::size_t levels) {
+  if (levels == 0 || points.size() < 2) return kOut;
+  // The wider coordinate, cut at its median: halves of equal count.
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (const LightView::Coordinates& c : points) {
+    for (std::size_t k = 0; k < 2; ++k)
+      lo[k] = std::min(lo[k], c[k]), hi[k] = std::max(hi[k], c[k]);
+  }
+  const std::size_t axis = hi[1] - lo[1] > hi[0] - lo[0] ? 1 : 0;
+  const auto mid = points.begin() + std::ptrdiff_t(points.size() / 2);
+  std::nth_element(points.begin(), mid, points.end(),
+                   [axis](const auto& a, const auto& b) { return a[axis] < b[axis]; });
+  const std::int32_t index = std::int32_t(nodes_.size());
+  nodes_.push_back({{view.plane(int(axis), (*mid)[axis])}, kOut, kOut});
+  const std::int32_t negative = cells(view, points.first(points.size() / 2), levels - 1);
+  const std::int32_t positive = cells(view, points.subspan(points.size() / 2), levels - 1);
+  nodes_[std::size_t(index)].negative = negative;
+  nodes_[std::size_t(index)].positive = positive;
+  return index;
 }
 
 std::int32_t& SvbspTree::slot(std::int32_t parent, bool positive) {
