@@ -63,6 +63,12 @@ inline PlaneSides classify(const ConvexPolygon& p, const Plane& plane, double ep
   return s;
 }
 
+/// What split_polygon() makes of \p p when it lies on one side of \p plane, in place: edges
+/// with both ends within \p eps of the plane are flagged edge_in_tree (unless every vertex
+/// is: a sliver in the plane bounds nothing). Filtering a polygon that only touches a plane
+/// needs no copy (§6: its edges along the plane add no plane of their own).
+void mark_edges_in_plane(ConvexPolygon& p, const Plane& plane, double eps);
+
 /// splitPolygon of Fig. 4: the parts of \p p on the negative and the positive side of
 /// \p plane. A polygon on one side (or wholly within eps of the plane: positive) is copied
 /// to that side only; the other output is left empty. Where \p mark_edges, edges that end up

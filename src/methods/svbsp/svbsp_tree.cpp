@@ -128,41 +128,34 @@ std::int32_t& SvbspTree::slot(std::int32_t parent, bool positive) {
 
 void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive, const Sinks& sinks) {
   std::int32_t at = slot(parent, positive);
-  ConvexPolygon negative_part, positive_part;
-  // Down the tree, splitting at each node the piece spans (Fig. 4).
+  // Down the tree, splitting at the first node the piece spans (Fig. 4).
   while (at >= 0) {
     const Plane& plane = nodes_[at].shadow_plane.plane;
     const PlaneSides sides = svbsp::classify(p, plane, eps_);
-    if (!sides.touching && !sides.spanning()) {  // wholly on one side: no copy
+    if (!sides.spanning()) {  // on one side (within eps: positive), no copy
+      if (sides.touching) mark_edges_in_plane(p, plane, eps_);
       parent = at;
-      positive = sides.positive;
-      at = sides.positive ? nodes_[at].positive : nodes_[at].negative;
+      positive = !sides.negative;
+      at = positive ? nodes_[at].positive : nodes_[at].negative;
       continue;
     }
+    // Spanning: each side in its own subtree; the tree may grow (and nodes_ move) meanwhile.
+    ConvexPolygon negative_part, positive_part;
     split_polygon(p, plane, eps_, true, negative_part, positive_part);
-    const bool has_neg = !negative_part.vertices.empty();
-    const bool has_pos = !positive_part.vertices.empty();
-    if (has_neg && has_pos) {
-      // Each side in its own subtree; the tree may grow (and nodes_ move) meanwhile.
-      std::vector<Fragment>* out = sinks.out;
-      const std::size_t first = out ? out->size() : 0;
-      const std::int32_t node = at;
-      descend(std::move(negative_part), node, false, sinks);
-      descend(std::move(positive_part), node, true, sinks);
-      // §6: two sibling fragments in the same state are the polygon before the split. The
-      // pieces are exactly its halves (the cut shares its points), so no area changes; the
-      // verdicts and the tree are those of the halves.
-      if (merge_siblings_ && out && out->size() == first + 2 &&
-          (*out)[first].lit == (*out)[first + 1].lit) {
-        (*out)[first].polygon = std::move(p);
-        out->pop_back();
-      }
-      return;
+    std::vector<Fragment>* out = sinks.out;
+    const std::size_t first = out ? out->size() : 0;
+    const std::int32_t node = at;
+    descend(std::move(negative_part), node, false, sinks);
+    descend(std::move(positive_part), node, true, sinks);
+    // §6: two sibling fragments in the same state are the polygon before the split. The
+    // pieces are exactly its halves (the cut shares its points), so no area changes; the
+    // verdicts and the tree are those of the halves.
+    if (merge_siblings_ && out && out->size() == first + 2 &&
+        (*out)[first].lit == (*out)[first + 1].lit) {
+      (*out)[first].polygon = std::move(p);
+      out->pop_back();
     }
-    p = std::move(has_pos ? positive_part : negative_part);
-    parent = at;
-    positive = has_pos;
-    at = has_pos ? nodes_[at].positive : nodes_[at].negative;
+    return;
   }
   const bool lit = at == kOut;
   if (lit && sinks.enlarge) slot(parent, positive) = shadow_volume(p);
