@@ -159,8 +159,8 @@ struct SceneBsp::Draft {
 class SceneBsp::Builder {
  public:
   Builder(const Scene& scene, double eps, std::vector<ConvexPolygon> inputs,
-          const ConvexSolids* solids)
-      : scene_(scene), eps_(eps), pool_(inputs.begin(), inputs.end()) {
+          const ConvexSolids* solids, bool clusters)
+      : scene_(scene), eps_(eps), clusters_(clusters), pool_(inputs.begin(), inputs.end()) {
     if (solids) solids_.resize(solids->size());
     for (std::uint32_t id = 0; id < pool_.size(); ++id) {
       const std::int32_t s = solids ? solids->solid_of(pool_[id].face) : -1;
@@ -246,7 +246,8 @@ class SceneBsp::Builder {
   // of different faces in one plane could overlap, where the first one's volume would
   // hold the second: no cluster. Checked pairwise, so only up to kSample polygons.
   std::optional<std::vector<Plane>> cluster(const Ids& ids) const {
-    if (ids.size() < 2 || ids.size() > kSample || std::any_of(ids.begin(), ids.end(), is_solid)) {
+    if (!clusters_ || ids.size() < 2 || ids.size() > kSample ||
+        std::any_of(ids.begin(), ids.end(), is_solid)) {
       return std::nullopt;
     }
     bool front = false, back = false;
@@ -375,15 +376,16 @@ class SceneBsp::Builder {
 
   const Scene& scene_;
   double eps_;
+  bool clusters_;
   tbb::concurrent_vector<ConvexPolygon> pool_;
   std::vector<Solid> solids_;
   Ids items_;
 };
 
-SceneBsp SceneBsp::build(const Scene& scene, const ConvexSolids* solids) {
+SceneBsp SceneBsp::build(const Scene& scene, const ConvexSolids* solids, bool clusters) {
   SceneBsp bsp;
   bsp.eps_ = kRelativeTolerance * std::max(1.0, scene.bounds().diagonal());
-  Builder builder(scene, bsp.eps_, convex_faces(scene), solids);
+  Builder builder(scene, bsp.eps_, convex_faces(scene), solids, clusters);
   const std::size_t inputs = builder.size();
   const std::unique_ptr<Draft> root = builder.build(builder.items());
   if (root) bsp.root_ = bsp.lay_out(*root, builder, 1);

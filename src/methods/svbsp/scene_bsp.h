@@ -30,12 +30,14 @@ class SceneBsp {
   /// tries a few candidate planes on a sample of its polygons and keeps the one with the
   /// lowest weighted sum of splits and imbalance; a node may split by a plane holding no
   /// polygon. Large subtrees are built in parallel; the tree does not depend on threads.
-  /// A node of at most 128 polygons each lying behind every other's plane (a patch of a
-  /// convex surface, or of a concave one) is a cluster leaf, split no further.
+  /// With \p clusters, a node of at most 128 polygons each lying behind every other's plane
+  /// (a patch of a convex surface, or of a concave one) is a cluster leaf, split no further;
+  /// without, every node holds one plane's polygons, as in §3.
   /// With \p solids, each convex solid is kept whole as one leaf (Schumacker's clusters),
   /// the planes of its faces and of the gaps around it separating it from the rest, unless
   /// no such plane is found and one crosses it: its faces then go on alone.
-  static SceneBsp build(const Scene& scene, const ConvexSolids* solids = nullptr);
+  static SceneBsp build(const Scene& scene, const ConvexSolids* solids = nullptr,
+                        bool clusters = true);
 
   /// Calls \p visit with the pieces of each node, nodes in front-to-back order as seen from
   /// \p light (a directional light sits at infinity against its direction). Pieces of one

@@ -150,6 +150,9 @@ TEST(SceneBsp, AConvexOrConcavePatchIsOneClusterWithoutSplits) {
     EXPECT_EQ(bsp.node_count(), 1u) << inward;
     EXPECT_EQ(bsp.split_count(), 0u) << inward;
     EXPECT_EQ(bsp.piece_count(), 48u) << inward;
+    // Without clusters (paper=1), a node per plane.
+    const SceneBsp planes = SceneBsp::build(ball(inward, Light::point({0, 5, 0})), nullptr, false);
+    EXPECT_GT(planes.node_count(), 8u) << inward;
   }
 }
 

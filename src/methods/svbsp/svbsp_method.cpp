@@ -33,17 +33,18 @@ SvbspMethod::SvbspMethod(const MethodOptions& options) {
   far_side_ = switch_setting(options, "far_side", !paper);
   contour_planes_ = switch_setting(options, "contour_planes", false);
   shadowed_only_ = switch_setting(options, "shadowed_only", false);
+  clusters_ = !paper;
 }
 
 void SvbspMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
   if (!contour_planes_) {
     // Independent: the solids' faces are found while the tree is built.
-    bsp_ = svbsp::SceneBsp::build(scene);
+    bsp_ = svbsp::SceneBsp::build(scene, nullptr, clusters_);
     return;
   }
   // §6, contour edges: the tree keeps each convex solid whole.
   convex_solids_.emplace(scene, scene.outward_solids());
-  bsp_ = svbsp::SceneBsp::build(scene, &*convex_solids_);
+  bsp_ = svbsp::SceneBsp::build(scene, &*convex_solids_, clusters_);
 }
 
 void SvbspMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
