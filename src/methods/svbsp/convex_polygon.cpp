@@ -42,6 +42,14 @@ void clip_side(const ConvexPolygon& p, std::span<const double> d, std::span<cons
   }
 }
 
+// Flags the edges of \p p whose ends are both on the plane (side 0).
+void mark_on_edges(ConvexPolygon& p, std::span<const int> side) {
+  const std::size_t n = p.vertices.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (side[i] == 0 && side[(i + 1) % n] == 0) p.edge_in_tree[i] = 1;
+  }
+}
+
 }  // namespace
 
 ConvexPolygon make_polygon(std::span<const Vec3> vertices, std::uint32_t face) {
@@ -59,12 +67,29 @@ std::size_t heap_bytes(const ConvexPolygon& p) {
   return spilled(p.vertices) + spilled(p.edge_in_tree);
 }
 
+Vec3 centroid(const ConvexPolygon& p) {
+  Vec3 sum;
+  for (const Vec3& v : p.vertices) sum += v;
+  return sum / double(p.vertices.size());
+}
+
 double area(const ConvexPolygon& p) {
   Vec3 sum;
   for (std::size_t i = 1; i + 1 < p.vertices.size(); ++i) {
     sum += cross(p.vertices[i] - p.vertices[0], p.vertices[i + 1] - p.vertices[0]);
   }
   return 0.5 * length(sum);
+}
+
+void mark_edges_in_plane(ConvexPolygon& p, const Plane& plane, double eps) {
+  const std::size_t n = p.vertices.size();
+  absl::InlinedVector<int, 8> side(n);
+  bool off = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    side[i] = side_of(plane.distance(p.vertices[i]), eps);
+    off = off || side[i] != 0;
+  }
+  if (off) mark_on_edges(p, side);
 }
 
 void split_polygon(const ConvexPolygon& p, const Plane& plane, double eps, bool mark_edges,
@@ -84,18 +109,10 @@ void split_polygon(const ConvexPolygon& p, const Plane& plane, double eps, bool 
   positive.vertices.clear();
   // A sliver within eps of the plane has no edge that bounds the cell: mark nothing.
   const bool mark = mark_edges && (any_negative || any_positive);
-  if (!any_negative) {
-    if (any_on)
-      clip_side(p, d, side, 1, mark, positive);
-    else
-      positive = p;
-    return;
-  }
-  if (!any_positive) {
-    if (any_on)
-      clip_side(p, d, side, -1, mark, negative);
-    else
-      negative = p;
+  if (!any_negative || !any_positive) {  // one side: the polygon whole, its edges on the plane
+    ConvexPolygon& out = any_negative ? negative : positive;
+    out = p;
+    if (mark && any_on) mark_on_edges(out, side);
     return;
   }
   clip_side(p, d, side, -1, mark, negative);

@@ -34,6 +34,9 @@ inline ConvexPolygon make_polygon(std::initializer_list<Vec3> vertices, std::uin
 /// The bytes \p p takes beyond sizeof(ConvexPolygon): its corners past the inline ones.
 std::size_t heap_bytes(const ConvexPolygon& p);
 
+/// The mean of \p p's corners: a point inside it.
+Vec3 centroid(const ConvexPolygon& p);
+
 /// Area of a convex (or any simple planar) polygon.
 double area(const ConvexPolygon& p);
 
@@ -59,6 +62,12 @@ inline PlaneSides classify(const ConvexPolygon& p, const Plane& plane, double ep
   }
   return s;
 }
+
+/// What split_polygon() makes of \p p when it lies on one side of \p plane, in place: edges
+/// with both ends within \p eps of the plane are flagged edge_in_tree (unless every vertex
+/// is: a sliver in the plane bounds nothing). Filtering a polygon that only touches a plane
+/// needs no copy (§6: its edges along the plane add no plane of their own).
+void mark_edges_in_plane(ConvexPolygon& p, const Plane& plane, double eps);
 
 /// splitPolygon of Fig. 4: the parts of \p p on the negative and the positive side of
 /// \p plane. A polygon on one side (or wholly within eps of the plane: positive) is copied

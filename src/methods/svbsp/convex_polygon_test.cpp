@@ -75,5 +75,26 @@ TEST(ConvexPolygon, NeighboursAreCutAtBitIdenticalPoints) {
   EXPECT_TRUE(shared);
 }
 
+TEST(ConvexPolygon, MarkingEdgesInAPlaneIsWhatSplittingAPolygonOnOneSideGives) {
+  // The square's edge y = 0 lies in the plane; a plane through one corner holds no edge; a
+  // plane holding the whole square (a sliver) bounds nothing.
+  const std::vector<std::pair<Plane, std::vector<std::uint8_t>>> cases = {
+      {Plane{{0, 1, 0}, 0}, {1, 0, 0, 0}},
+      {Plane{{0, -1, 0}, 0}, {1, 0, 0, 0}},
+      {Plane{normalize(Vec3{1, 1, 0}), 0}, {0, 0, 0, 0}},
+      {Plane{{0, 0, 1}, 0}, {0, 0, 0, 0}}};
+  for (const auto& [plane, flags] : cases) {
+    ConvexPolygon marked = unit_square();
+    mark_edges_in_plane(marked, plane, 1e-12);
+    EXPECT_THAT(marked.edge_in_tree, ::testing::ElementsAreArray(flags));
+    ConvexPolygon neg, pos;
+    split_polygon(unit_square(), plane, 1e-12, true, neg, pos);
+    const ConvexPolygon& side = neg.vertices.empty() ? pos : neg;
+    EXPECT_TRUE((neg.vertices.empty()) != (pos.vertices.empty()));
+    EXPECT_THAT(side.edge_in_tree, ::testing::ElementsAreArray(flags));
+    EXPECT_THAT(side.vertices, ::testing::ElementsAreArray(marked.vertices));
+  }
+}
+
 }  // namespace
 }  // namespace shadowkit::svbsp

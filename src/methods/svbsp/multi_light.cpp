@@ -70,6 +70,7 @@ MultiLightFragments generate_multi_light_shadows(const SceneBsp& bsp, const Scen
     GeneratorSettings settings;
     settings.merge_siblings = merge_siblings;
     ShadowGenerator generator(scene, light, settings);
+    generator.divide(pieces);
     bsp.front_to_back(light, [&](NodePieces node) {
       // Classified before the node's own volumes join the tree, as its pieces are.
       for (const ConvexPolygon& piece : node.pieces) {

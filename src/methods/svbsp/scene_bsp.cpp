@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "convex_solids.h"
+#include "shadowkit/methods/shadow_method.h"
 #include "shadowkit/scene/triangulate.h"
 
 namespace shadowkit::svbsp {
@@ -148,6 +149,7 @@ struct SceneBsp::Draft {
   Plane plane;
   Ids here;  ///< pieces in the plane (or the solid's faces), into the builder's pool
   std::int32_t solid = -1;
+  std::vector<Plane> cluster;  ///< a cluster leaf: each piece's plane, turned (Builder::cluster)
   std::unique_ptr<Draft> front, back;
 };
 
@@ -157,8 +159,8 @@ struct SceneBsp::Draft {
 class SceneBsp::Builder {
  public:
   Builder(const Scene& scene, double eps, std::vector<ConvexPolygon> inputs,
-          const ConvexSolids* solids)
-      : scene_(scene), eps_(eps), pool_(inputs.begin(), inputs.end()) {
+          const ConvexSolids* solids, bool clusters)
+      : scene_(scene), eps_(eps), clusters_(clusters), pool_(inputs.begin(), inputs.end()) {
     if (solids) solids_.resize(solids->size());
     for (std::uint32_t id = 0; id < pool_.size(); ++id) {
       const std::int32_t s = solids ? solids->solid_of(pool_[id].face) : -1;
@@ -184,6 +186,11 @@ class SceneBsp::Builder {
     if (ids.size() == 1 && is_solid(ids[0])) {  // a leaf: the solid whole
       draft->solid = std::int32_t(ids[0] & ~kSolidTag);
       draft->here = faces_of(ids[0]);
+      return draft;
+    }
+    if (std::optional<std::vector<Plane>> planes = cluster(ids)) {  // a leaf: no splits
+      draft->here = std::move(ids);
+      draft->cluster = std::move(*planes);
       return draft;
     }
     auto splitter = choose_splitter(ids);
@@ -230,6 +237,37 @@ class SceneBsp::Builder {
         out.push_back(id);
     }
     return out;
+  }
+
+  // The planes of \p ids' polygons, all turned one way, when each polygon lies behind (or
+  // within eps of) every other's: a patch of a convex surface, or of a concave one turned
+  // over. None can hide another from a light in front of the hidden one's plane, nor from
+  // one behind both planes (SceneBsp::visit), so the patch needs no split. Two polygons
+  // of different faces in one plane could overlap, where the first one's volume would
+  // hold the second: no cluster. Checked pairwise, so only up to kSample polygons.
+  std::optional<std::vector<Plane>> cluster(const Ids& ids) const {
+    if (!clusters_ || ids.size() < 2 || ids.size() > kSample ||
+        std::any_of(ids.begin(), ids.end(), is_solid)) {
+      return std::nullopt;
+    }
+    bool front = false, back = false;
+    for (const std::uint32_t i : ids) {
+      const Plane& plane = scene_.face_plane(pool_[i].face);
+      for (const std::uint32_t j : ids) {
+        if (j == i) continue;
+        const PlaneSides sides = classify(pool_[j], plane, eps_);
+        if (sides.on() && pool_[j].face != pool_[i].face) return std::nullopt;
+        front = front || sides.positive;
+        back = back || sides.negative;
+        if (front && back) return std::nullopt;
+      }
+    }
+    std::vector<Plane> planes;
+    for (const std::uint32_t i : ids) {
+      const Plane& plane = scene_.face_plane(pool_[i].face);
+      planes.push_back(front ? Plane{-plane.normal, -plane.d} : plane);
+    }
+    return planes;
   }
 
   // Up to kSample of \p ids, evenly spread.
@@ -338,15 +376,16 @@ class SceneBsp::Builder {
 
   const Scene& scene_;
   double eps_;
+  bool clusters_;
   tbb::concurrent_vector<ConvexPolygon> pool_;
   std::vector<Solid> solids_;
   Ids items_;
 };
 
-SceneBsp SceneBsp::build(const Scene& scene, const ConvexSolids* solids) {
+SceneBsp SceneBsp::build(const Scene& scene, const ConvexSolids* solids, bool clusters) {
   SceneBsp bsp;
   bsp.eps_ = kRelativeTolerance * std::max(1.0, scene.bounds().diagonal());
-  Builder builder(scene, bsp.eps_, convex_faces(scene), solids);
+  Builder builder(scene, bsp.eps_, convex_faces(scene), solids, clusters);
   const std::size_t inputs = builder.size();
   const std::unique_ptr<Draft> root = builder.build(builder.items());
   if (root) bsp.root_ = bsp.lay_out(*root, builder, 1);
@@ -357,8 +396,10 @@ SceneBsp SceneBsp::build(const Scene& scene, const ConvexSolids* solids) {
 std::int32_t SceneBsp::lay_out(Draft& draft, Builder& builder, std::size_t depth) {
   depth_ = std::max(depth_, depth);
   const std::int32_t index = std::int32_t(nodes_.size());
+  const std::int32_t cluster = draft.cluster.empty() ? -1 : std::int32_t(cluster_planes_.size());
   nodes_.push_back({draft.plane, std::uint32_t(pieces_.size()), std::uint32_t(draft.here.size()),
-                    -1, -1, draft.solid});
+                    -1, -1, draft.solid, cluster});
+  cluster_planes_.insert(cluster_planes_.end(), draft.cluster.begin(), draft.cluster.end());
   for (const std::uint32_t id : draft.here) pieces_.push_back(std::move(builder.polygon(id)));
   solids_ += draft.solid >= 0;
   if (draft.front) nodes_[index].front = lay_out(*draft.front, builder, depth + 1);
@@ -379,9 +420,9 @@ void SceneBsp::visit(std::int32_t node, const Light& light,
     fn({pieces, n.solid});
     return;
   }
+  if (n.cluster >= 0) return visit_cluster(n, light, fn);
   // The light's half-space first: nothing behind the plane can hide what is in front of it.
-  const double side = light.type == Light::Type::point ? n.plane.distance(light.position)
-                                                       : -dot(n.plane.normal, light.direction);
+  const double side = light_side(n.plane, light);
   const std::int32_t near = side >= 0 ? n.front : n.back;
   const std::int32_t far = side >= 0 ? n.back : n.front;
   visit(near, light, fn);
@@ -389,8 +430,24 @@ void SceneBsp::visit(std::int32_t node, const Light& light,
   visit(far, light, fn);
 }
 
+void SceneBsp::visit_cluster(const Node& n, const Light& light,
+                             const std::function<void(NodePieces)>& fn) const {
+  // For a piece to hide another in a cluster, the light must be behind the hidden one's
+  // plane: the pieces whose plane the light is in front of hide nothing of one another and
+  // come first; behind the planes of two, neither hides the other, since the ray would
+  // leave the first plane's back to meet the second behind it.
+  const std::span<const Plane> planes(cluster_planes_.data() + n.cluster, n.count);
+  for (const bool turned_to_light : {true, false}) {
+    for (std::uint32_t k = 0; k < n.count; ++k) {
+      if ((light_side(planes[k], light) > 0) == turned_to_light) {
+        fn({{&pieces_[n.first + k], 1}});
+      }
+    }
+  }
+}
+
 std::size_t SceneBsp::memory_bytes() const {
-  std::size_t bytes = nodes_.capacity() * sizeof(Node);
+  std::size_t bytes = nodes_.capacity() * sizeof(Node) + cluster_planes_.capacity() * sizeof(Plane);
   for (const ConvexPolygon& p : pieces_) {
     bytes += sizeof(p) + heap_bytes(p);
   }

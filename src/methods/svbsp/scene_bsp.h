@@ -30,15 +30,20 @@ class SceneBsp {
   /// tries a few candidate planes on a sample of its polygons and keeps the one with the
   /// lowest weighted sum of splits and imbalance; a node may split by a plane holding no
   /// polygon. Large subtrees are built in parallel; the tree does not depend on threads.
+  /// With \p clusters, a node of at most 128 polygons each lying behind every other's plane
+  /// (a patch of a convex surface, or of a concave one) is a cluster leaf, split no further;
+  /// without, every node holds one plane's polygons, as in §3.
   /// With \p solids, each convex solid is kept whole as one leaf (Schumacker's clusters),
   /// the planes of its faces and of the gaps around it separating it from the rest, unless
   /// no such plane is found and one crosses it: its faces then go on alone.
-  static SceneBsp build(const Scene& scene, const ConvexSolids* solids = nullptr);
+  static SceneBsp build(const Scene& scene, const ConvexSolids* solids = nullptr,
+                        bool clusters = true);
 
   /// Calls \p visit with the pieces of each node, nodes in front-to-back order as seen from
   /// \p light (a directional light sits at infinity against its direction). Pieces of one
   /// node are coplanar and cannot hide one another, or they are the faces of one convex
-  /// solid, which nothing visited later hides.
+  /// solid, which nothing visited later hides. A cluster leaf hands over its pieces one by
+  /// one, those whose front the light sees first.
   void front_to_back(const Light& light, const std::function<void(NodePieces)>& visit) const;
 
   std::size_t node_count() const { return nodes_.size(); }
@@ -62,6 +67,7 @@ class SceneBsp {
     std::uint32_t first = 0, count = 0;  ///< pieces in the plane, into pieces_
     std::int32_t front = -1, back = -1;  ///< children, -1: empty half-space
     std::int32_t solid = -1;             ///< a leaf holding a convex solid's faces
+    std::int32_t cluster = -1;  ///< a cluster leaf: its pieces' planes, into cluster_planes_
   };
   struct Draft;
   class Builder;
@@ -69,9 +75,12 @@ class SceneBsp {
   std::int32_t lay_out(Draft& draft, Builder& builder, std::size_t depth);
   void visit(std::int32_t node, const Light& light,
              const std::function<void(NodePieces)>& fn) const;
+  void visit_cluster(const Node& n, const Light& light,
+                     const std::function<void(NodePieces)>& fn) const;
 
   std::vector<Node> nodes_;
   std::vector<ConvexPolygon> pieces_;
+  std::vector<Plane> cluster_planes_;
   std::int32_t root_ = -1;
   double eps_ = 0;
   std::size_t splits_ = 0, depth_ = 0, solids_ = 0;

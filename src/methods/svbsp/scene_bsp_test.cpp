@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <map>
 
 #include "convex_solids.h"
+#include "shadowkit/methods/shadow_method.h"
 #include "shadowkit/scene/scene_file.h"
+#include "svbsp_test_support.h"
 #include "testing/test_scenes.h"
 
 namespace shadowkit::svbsp {
@@ -134,6 +137,54 @@ TEST(SceneBsp, EmptySceneHasNoNode) {
   EXPECT_EQ(bsp.node_count(), 0u);
   EXPECT_EQ(bsp.piece_count(), 0u);
   EXPECT_TRUE(visit_order(bsp, Light::point({0, 10, 0})).empty());
+}
+
+Scene ball(bool inward, const Light& light) {
+  const Camera cam = testing::camera({0, 5, 9}, {0, 0, 0}, 64, 48);
+  return testing::make_scene(cam, {light}, {inward ? inside_out(sphere(8, 6)) : sphere(8, 6)});
+}
+
+TEST(SceneBsp, AConvexOrConcavePatchIsOneClusterWithoutSplits) {
+  for (const bool inward : {false, true}) {
+    const SceneBsp bsp = SceneBsp::build(ball(inward, Light::point({0, 5, 0})));
+    EXPECT_EQ(bsp.node_count(), 1u) << inward;
+    EXPECT_EQ(bsp.split_count(), 0u) << inward;
+    EXPECT_EQ(bsp.piece_count(), 48u) << inward;
+    // Without clusters (paper=1), a node per plane.
+    const SceneBsp planes = SceneBsp::build(ball(inward, Light::point({0, 5, 0})), nullptr, false);
+    EXPECT_GT(planes.node_count(), 8u) << inward;
+  }
+}
+
+TEST(SceneBsp, AClusterGivesThePiecesTurnedToTheLightFirstOneByOne) {
+  for (const bool inward : {false, true}) {
+    for (const Light& light : {Light::point({0, 5, 0}), Light::point({3, -4, 1}),
+                               Light::point({0, 0.2, 0}), Light::directional({1, -2, 0.5})}) {
+      const Scene scene = ball(inward, light);
+      const SceneBsp bsp = SceneBsp::build(scene);
+      // Turned to the light: the light in front of the surface's outer side.
+      std::vector<bool> turned;
+      bsp.front_to_back(light, [&](NodePieces node) {
+        ASSERT_EQ(node.pieces.size(), 1u);
+        const double side = light_side(scene.face_plane(node.pieces[0].face), light);
+        turned.push_back(inward ? side < 0 : side > 0);
+      });
+      ASSERT_EQ(turned.size(), 48u);
+      EXPECT_TRUE(std::is_sorted(turned.rbegin(), turned.rend())) << inward;
+    }
+  }
+}
+
+TEST(SceneBsp, CoincidentFacesMakeNoClusterAndComeTogether) {
+  // Two faces in one plane may overlap: one node hands both over at once.
+  const Camera cam = testing::camera({0, 5, 9}, {0, 0, 0}, 64, 48);
+  const Scene scene = testing::make_scene(
+      cam, {testing::point_light({0, 10, 0})},
+      {testing::horizontal_quad(-1, 1, -1, 1, 0), testing::horizontal_quad(-0.5, 1.5, -1, 1, 0)});
+  std::vector<std::size_t> sizes;
+  SceneBsp::build(scene).front_to_back(
+      Light::point({0, 10, 0}), [&](NodePieces node) { sizes.push_back(node.pieces.size()); });
+  EXPECT_EQ(sizes, std::vector<std::size_t>{2});
 }
 
 }  // namespace

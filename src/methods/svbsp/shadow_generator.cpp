@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "shadowkit/core/error.h"
@@ -25,6 +26,9 @@ double in_plane_tolerance(const Scene& scene, const Light& light) {
   return light.type == Light::Type::point ? plane_tolerance(scene, light)
                                           : SceneBsp::kRelativeTolerance;
 }
+
+// Pieces sampled to place the cells of a balanced tree.
+constexpr std::size_t kCellSample = std::size_t(1) << 16;
 
 }  // namespace
 
@@ -64,6 +68,21 @@ ShadowGenerator::ShadowGenerator(const Scene& scene, const Light& light,
       in_plane_(in_plane_tolerance(scene, light)),
       tree_(light, plane_tolerance(scene, light), settings.merge_siblings,
             settings.skip_edges_in_tree) {}
+
+void ShadowGenerator::divide(std::span<const ConvexPolygon> pieces) {
+  std::size_t levels = 0;
+  while ((pieces.size() >> (levels + 1)) >= kPiecesPerCell) ++levels;
+  if (!settings_.balance || levels == 0) return;
+  const std::optional<LightView> view = LightView::of(light_, scene_.bounds());
+  if (!view) return;
+  // The medians of an evenly spread sample place the cells as well as those of all.
+  const std::size_t n = std::min(pieces.size(), kCellSample);
+  std::vector<LightView::Coordinates> points(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    points[i] = view->coordinates(centroid(pieces[i * pieces.size() / n]));
+  }
+  tree_.divide(*view, points, levels);
+}
 
 bool ShadowGenerator::in_light_plane(const ConvexPolygon& piece) const {
   return std::abs(light_side(scene_.face_plane(piece.face), light_)) <= in_plane_;
@@ -153,6 +172,7 @@ LightFragments generate_shadows(const SceneBsp& bsp, const Scene& scene, const L
                                 const GeneratorSettings& settings, const FarSide& far_side,
                                 const ConvexSolids* solids) {
   ShadowGenerator generator(scene, light, settings, far_side, solids);
+  generator.divide(bsp.pieces());
   LightFragments result;
   bsp.front_to_back(light, [&](NodePieces node) { generator.process(node, result.fragments); });
   result.light_facing = generator.light_facing();

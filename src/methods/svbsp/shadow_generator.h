@@ -42,6 +42,9 @@ struct GeneratorSettings {
   bool merge_siblings = true;
   /// §6: a piece whose fragments are all lit or all shadowed is kept whole.
   bool whole_pieces = true;
+  /// §6: the SVBSP tree is kept balanced: on a scene of many pieces it starts cut into cells
+  /// by planes through the light (ShadowGenerator::divide).
+  bool balance = true;
 };
 
 /// Whether a global face is on the far side of its solid from the light (OutwardSolids); its
@@ -55,6 +58,11 @@ FarSide far_side_of(const Scene& scene, const Light& light);
 /// front-to-back order, it grows the light's SVBSP tree and gives each piece's fragments.
 class ShadowGenerator {
  public:
+  /// §6's balance: a cell's share of the pieces. A polygon crosses the volumes of the
+  /// pieces before it in its cell, about the square root of a cell's share in a sweep over
+  /// a surface, and the cells' planes, one per halving.
+  static constexpr std::size_t kPiecesPerCell = 1024;
+
   /// \p solids: the convex solids of the scene BSP tree's solid leaves (§6, contour edges);
   /// null when it has none.
   ShadowGenerator(const Scene& scene, const Light& light, const GeneratorSettings& settings = {},
@@ -65,6 +73,11 @@ class ShadowGenerator {
   bool in_light_plane(const ConvexPolygon& piece) const;
   /// Whether \p piece is on the far side of its solid (FarSide).
   bool far_side(const ConvexPolygon& piece) const { return far_side_ && far_side_(piece.face); }
+  /// With the balance setting, before any piece: cuts the tree into cells of about
+  /// kPiecesPerCell of \p pieces (all the generator will be fed) each, placed by where the
+  /// light sees them (SvbspTree::divide). Nothing on scenes of fewer than two cells' pieces,
+  /// or with a point light inside the scene's box.
+  void divide(std::span<const ConvexPolygon> pieces);
   /// Processes the pieces of one BSP node: appends their fragments to \p out and unions the
   /// shadow volumes of the lit ones into the tree. Far-side pieces are appended shadowed and
   /// whole.

@@ -48,6 +48,7 @@ std::vector<double> SunlitAreas::filter(Vec3 toward_light, std::vector<Fragment>
   ShadowGenerator generator(scene_, light, {}, [&](std::uint32_t face) {
     return outward_solid_faces_[face] && dot(scene_.face_plane(face).normal, toward_light) < 0;
   });
+  generator.divide(bsp_->pieces());
   // Fragments are summed node by node and dropped: only the tree must grow (§4), not the
   // list of every fragment the fragments command keeps.
   std::vector<Fragment> fragments;

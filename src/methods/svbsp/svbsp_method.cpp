@@ -22,27 +22,29 @@ bool switch_setting(const MethodOptions& options, const std::string& key, bool f
 
 SvbspMethod::SvbspMethod(const MethodOptions& options) {
   options.expect_only("svbsp", {"paper", "contour_planes", "far_side", "skip_edges_in_tree",
-                                "merge_siblings", "whole_pieces", "shadowed_only"});
+                                "merge_siblings", "whole_pieces", "shadowed_only", "balance"});
   // paper=1: Figs. 3 and 4 as written, one-sided; each §6 refinement off unless set.
   const bool paper = switch_setting(options, "paper", false);
   generator_.two_sided = !paper;
   generator_.skip_edges_in_tree = switch_setting(options, "skip_edges_in_tree", !paper);
   generator_.merge_siblings = switch_setting(options, "merge_siblings", !paper);
   generator_.whole_pieces = switch_setting(options, "whole_pieces", !paper);
+  generator_.balance = switch_setting(options, "balance", !paper);
   far_side_ = switch_setting(options, "far_side", !paper);
   contour_planes_ = switch_setting(options, "contour_planes", false);
   shadowed_only_ = switch_setting(options, "shadowed_only", false);
+  clusters_ = !paper;
 }
 
 void SvbspMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
   if (!contour_planes_) {
     // Independent: the solids' faces are found while the tree is built.
-    bsp_ = svbsp::SceneBsp::build(scene);
+    bsp_ = svbsp::SceneBsp::build(scene, nullptr, clusters_);
     return;
   }
   // §6, contour edges: the tree keeps each convex solid whole.
   convex_solids_.emplace(scene, scene.outward_solids());
-  bsp_ = svbsp::SceneBsp::build(scene, &*convex_solids_);
+  bsp_ = svbsp::SceneBsp::build(scene, &*convex_solids_, clusters_);
 }
 
 void SvbspMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {

@@ -40,6 +40,7 @@ class SvbspMethod final : public ShadowMethod {
   bool far_side_ = true;
   bool contour_planes_ = false;
   bool shadowed_only_ = false;
+  bool clusters_ = true;  ///< scene BSP cluster leaves; paper=1: none (§3's tree)
   std::optional<svbsp::SceneBsp> bsp_;
   std::optional<svbsp::ConvexSolids> convex_solids_;  ///< with contour_planes only
   Light light_;

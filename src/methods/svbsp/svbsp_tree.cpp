@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "shadowkit/core/error.h"
+
 namespace shadowkit::svbsp {
 
 bool make_shadow_plane(const Light& light, Vec3 a, Vec3 b, Vec3 inside, ShadowPlane& out) {
@@ -40,9 +42,7 @@ std::int32_t SvbspTree::chain(std::span<const ShadowPlane> planes) {
 // The shadow volume of a lit fragment as a chain of its shadow planes (buildSVBSPtree of
 // Fig. 4 for a convex polygon).
 std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p) {
-  Vec3 centroid;
-  for (const Vec3& v : p.vertices) centroid += v;
-  centroid = centroid / double(p.vertices.size());
+  const Vec3 inside = centroid(p);
   const std::size_t n = p.vertices.size();
   absl::InlinedVector<ShadowPlane, ConvexPolygon::kInlineCorners> planes;
   bool undefined = false;
@@ -50,7 +50,7 @@ std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p) {
     // §6: an edge in a plane that already bounds this cell needs no plane of its own.
     if (skip_edges_in_tree_ && p.edge_in_tree[i]) continue;
     ShadowPlane s;
-    if (make_shadow_plane(light_, p.vertices[i], p.vertices[(i + 1) % n], centroid, s)) {
+    if (make_shadow_plane(light_, p.vertices[i], p.vertices[(i + 1) % n], inside, s)) {
       planes.push_back(s);
     } else {
       undefined = true;
@@ -94,47 +94,68 @@ void SvbspTree::enlarge_by_contour(std::vector<Landing> landings,
   }
 }
 
+void SvbspTree::divide(const LightView& view, std::span<LightView::Coordinates> points,
+                       std::size_t levels) {
+  SHADOWKIT_CHECK(nodes_.empty() && root_ == kOut);
+  root_ = cells(view, points, levels);
+}
+
+std::int32_t SvbspTree::cells(const LightView& view, std::span<LightView::Coordinates> points,
+                              std::size_t levels) {
+  if (levels == 0 || points.size() < 2) return kOut;
+  // The wider coordinate, cut at its median: halves of equal count.
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (const LightView::Coordinates& c : points) {
+    for (std::size_t k = 0; k < 2; ++k)
+      lo[k] = std::min(lo[k], c[k]), hi[k] = std::max(hi[k], c[k]);
+  }
+  const std::size_t axis = hi[1] - lo[1] > hi[0] - lo[0] ? 1 : 0;
+  const auto mid = points.begin() + std::ptrdiff_t(points.size() / 2);
+  std::nth_element(points.begin(), mid, points.end(),
+                   [axis](const auto& a, const auto& b) { return a[axis] < b[axis]; });
+  const std::int32_t index = std::int32_t(nodes_.size());
+  nodes_.push_back({{view.plane(int(axis), (*mid)[axis])}, kOut, kOut});
+  const std::int32_t negative = cells(view, points.first(points.size() / 2), levels - 1);
+  const std::int32_t positive = cells(view, points.subspan(points.size() / 2), levels - 1);
+  nodes_[std::size_t(index)].negative = negative;
+  nodes_[std::size_t(index)].positive = positive;
+  return index;
+}
+
 std::int32_t& SvbspTree::slot(std::int32_t parent, bool positive) {
   return parent < 0 ? root_ : (positive ? nodes_[parent].positive : nodes_[parent].negative);
 }
 
 void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive, const Sinks& sinks) {
   std::int32_t at = slot(parent, positive);
-  ConvexPolygon negative_part, positive_part;
-  // Down the tree, splitting at each node the piece spans (Fig. 4).
+  // Down the tree, splitting at the first node the piece spans (Fig. 4).
   while (at >= 0) {
     const Plane& plane = nodes_[at].shadow_plane.plane;
     const PlaneSides sides = svbsp::classify(p, plane, eps_);
-    if (!sides.touching && !sides.spanning()) {  // wholly on one side: no copy
+    if (!sides.spanning()) {  // on one side (within eps: positive), no copy
+      if (sides.touching) mark_edges_in_plane(p, plane, eps_);
       parent = at;
-      positive = sides.positive;
-      at = sides.positive ? nodes_[at].positive : nodes_[at].negative;
+      positive = !sides.negative;
+      at = positive ? nodes_[at].positive : nodes_[at].negative;
       continue;
     }
+    // Spanning: each side in its own subtree; the tree may grow (and nodes_ move) meanwhile.
+    ConvexPolygon negative_part, positive_part;
     split_polygon(p, plane, eps_, true, negative_part, positive_part);
-    const bool has_neg = !negative_part.vertices.empty();
-    const bool has_pos = !positive_part.vertices.empty();
-    if (has_neg && has_pos) {
-      // Each side in its own subtree; the tree may grow (and nodes_ move) meanwhile.
-      std::vector<Fragment>* out = sinks.out;
-      const std::size_t first = out ? out->size() : 0;
-      const std::int32_t node = at;
-      descend(std::move(negative_part), node, false, sinks);
-      descend(std::move(positive_part), node, true, sinks);
-      // §6: two sibling fragments in the same state are the polygon before the split. The
-      // pieces are exactly its halves (the cut shares its points), so no area changes; the
-      // verdicts and the tree are those of the halves.
-      if (merge_siblings_ && out && out->size() == first + 2 &&
-          (*out)[first].lit == (*out)[first + 1].lit) {
-        (*out)[first].polygon = std::move(p);
-        out->pop_back();
-      }
-      return;
+    std::vector<Fragment>* out = sinks.out;
+    const std::size_t first = out ? out->size() : 0;
+    const std::int32_t node = at;
+    descend(std::move(negative_part), node, false, sinks);
+    descend(std::move(positive_part), node, true, sinks);
+    // §6: two sibling fragments in the same state are the polygon before the split. The
+    // pieces are exactly its halves (the cut shares its points), so no area changes; the
+    // verdicts and the tree are those of the halves.
+    if (merge_siblings_ && out && out->size() == first + 2 &&
+        (*out)[first].lit == (*out)[first + 1].lit) {
+      (*out)[first].polygon = std::move(p);
+      out->pop_back();
     }
-    p = std::move(has_pos ? positive_part : negative_part);
-    parent = at;
-    positive = has_pos;
-    at = has_pos ? nodes_[at].positive : nodes_[at].negative;
+    return;
   }
   const bool lit = at == kOut;
   if (lit && sinks.enlarge) slot(parent, positive) = shadow_volume(p);

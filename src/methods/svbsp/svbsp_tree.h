@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "convex_polygon.h"
+#include "light_view.h"
 #include "shadowkit/scene/scene.h"
 
 namespace shadowkit::svbsp {
@@ -64,6 +65,13 @@ class SvbspTree {
                 std::vector<Landing>* landings = nullptr) {
     descend(p, -1, false, {&out, false, landings});
   }
+  /// §6, "keep an SVBSP tree well-balanced, even at the expense of increased size": cuts the
+  /// empty tree's one OUT cell into up to 2^\p levels OUT cells, a kd tree of planes through
+  /// the light at the medians of \p points (reordered) as \p view sees them. Volumes then grow
+  /// in a cell each, and a polygon passes \p levels planes to reach its cell instead of the
+  /// volumes of every polygon before it. The planes bound no volume: a polygon they split
+  /// gets the verdicts of its whole, and its edges in them no plane (skip_edges_in_tree).
+  void divide(const LightView& view, std::span<LightView::Coordinates> points, std::size_t levels);
   /// Enlarging only: unions the shadow volume of \p p into the tree.
   void enlarge(const ConvexPolygon& p) { descend(p, -1, false, {nullptr, true, nullptr}); }
   /// §6, contour edges only: replaces the OUT leaf of each landing by the volume bounded by
@@ -93,6 +101,9 @@ class SvbspTree {
   // Filters \p p from the slot (parent node, side; parent -1: the root) down to the leaves.
   void descend(ConvexPolygon p, std::int32_t parent, bool positive, const Sinks& sinks);
   std::int32_t& slot(std::int32_t parent, bool positive);
+  // The cells of divide() over \p points: a subtree of OUT leaves.
+  std::int32_t cells(const LightView& view, std::span<LightView::Coordinates> points,
+                     std::size_t levels);
   std::int32_t shadow_volume(const ConvexPolygon& p);
   // Links \p planes into one volume: outside any of them OUT, inside all of them IN.
   std::int32_t chain(std::span<const ShadowPlane> planes);
