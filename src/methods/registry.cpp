@@ -34,7 +34,8 @@ std::vector<SettingInfo> method_settings(std::string_view method) {
     return {{"paper", "0", flag, ""},         {"contour_planes", "0", flag, ""},
             {"far_side", "", flag, ""},       {"skip_edges_in_tree", "", flag, ""},
             {"shadowed_only", "0", flag, ""}, {"merge_siblings", "", flag, ""},
-            {"whole_pieces", "", flag, ""}};
+            {"whole_pieces", "", flag, ""},   {"balance", "", flag, ""},
+            {"footprints", "", flag, ""}};
   }
   if (method == "voxel") {
     return {{"resolution", "256", {}, "a power of two, 16..2048"},

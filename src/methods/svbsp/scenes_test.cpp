@@ -4,11 +4,35 @@
 
 #include "shadowkit/scene/scene_file.h"
 #include "svbsp_method.h"
+#include "svbsp_test_support.h"
 #include "testing/method_testing.h"
 #include "testing/test_scenes.h"
 
 namespace shadowkit::svbsp {
 namespace {
+
+// The sub-objects that Crow's footprints find wholly in the shadow of nearer ones are
+// shadowed whole without filtering: fewer pieces filtered, and the same lit area on every
+// face.
+TEST(SvbspScenes, FootprintsShadowPartsWholeAndKeepTheLitAreas) {
+  for (const Light& light :
+       {testing::point_light({3, 14, 5}), testing::directional_light({-0.3, -1, -0.2})}) {
+    const Scene scene = testing::cube_block(light);
+    SvbspMethod with({}), without({"svbsp", {{"footprints", "0"}}});
+    for (SvbspMethod* m : {&with, &without}) {
+      m->prepare(scene, {});
+      m->build(scene, 0, {});
+    }
+    EXPECT_LT(testing::counter(with, "light_facing") + 30 * 3,
+              testing::counter(without, "light_facing"))
+        << int(light.type);  // more than 30 cubes, three faces each turned to the light
+    const auto want = face_areas(without.fragments());
+    for (const auto& [face, a] : face_areas(with.fragments())) {
+      const double size = face_area(scene, face);
+      EXPECT_NEAR(a.lit, want.at(face).lit, 1e-9 * size) << int(light.type) << " " << face;
+    }
+  }
+}
 
 // §6's shadowed-fragments-only mode draws the shadowed fragments over the lit faces: the
 // same mask from fewer fragments, but for pixel centres on snapped slivers of an outline.

@@ -32,7 +32,7 @@ constexpr std::size_t kCellSample = std::size_t(1) << 16;
 
 }  // namespace
 
-FarSide far_side_of(const Scene& scene, const Light& light) {
+ShadowedWhole far_side_of(const Scene& scene, const Light& light) {
   const OutwardSolids& solids = scene.outward_solids();
   if (light.type == Light::Type::point) {
     return [&solids, &scene, p = light.position](std::uint32_t face) {
@@ -58,12 +58,12 @@ FrontFacing front_facing(const Scene& scene, const Light& light) {
 }
 
 ShadowGenerator::ShadowGenerator(const Scene& scene, const Light& light,
-                                 const GeneratorSettings& settings, FarSide far_side,
+                                 const GeneratorSettings& settings, ShadowedWhole shadowed_whole,
                                  const ConvexSolids* solids)
     : scene_(scene),
       light_(light),
       settings_(settings),
-      far_side_(std::move(far_side)),
+      shadowed_whole_(std::move(shadowed_whole)),
       solids_(solids),
       in_plane_(in_plane_tolerance(scene, light)),
       tree_(light, plane_tolerance(scene, light), settings.merge_siblings,
@@ -123,14 +123,14 @@ void ShadowGenerator::process_coplanar(std::span<const ConvexPolygon> coplanar,
                                        std::vector<Fragment>& out) {
   // Pieces of one plane cannot shadow one another, but where two of them overlap, the
   // first one's volume would hold the second: classify all, then enlarge.
-  const auto far = std::count_if(coplanar.begin(), coplanar.end(),
-                                 [this](const ConvexPolygon& p) { return far_side(p); });
-  const bool together = std::ssize(coplanar) - far > 1;
+  const auto whole = std::count_if(coplanar.begin(), coplanar.end(),
+                                   [this](const ConvexPolygon& p) { return shadowed_whole(p); });
+  const bool together = std::ssize(coplanar) - whole > 1;
   const std::size_t group = out.size();
   for (const ConvexPolygon& piece : coplanar) {
     const std::size_t first = out.size();
-    if ((far > 0 && far_side(piece)) || !facing(piece)) {
-      out.push_back({piece, false});  // Fig. 3: not facing the light, or the far side
+    if ((whole > 0 && shadowed_whole(piece)) || !facing(piece)) {
+      out.push_back({piece, false});  // Fig. 3: not facing the light, or shadowed whole
       continue;
     }
     ++light_facing_;
@@ -169,9 +169,9 @@ void ShadowGenerator::process_solid(std::span<const ConvexPolygon> faces, std::s
 }
 
 LightFragments generate_shadows(const SceneBsp& bsp, const Scene& scene, const Light& light,
-                                const GeneratorSettings& settings, const FarSide& far_side,
-                                const ConvexSolids* solids) {
-  ShadowGenerator generator(scene, light, settings, far_side, solids);
+                                const GeneratorSettings& settings,
+                                const ShadowedWhole& shadowed_whole, const ConvexSolids* solids) {
+  ShadowGenerator generator(scene, light, settings, shadowed_whole, solids);
   generator.divide(bsp.pieces());
   LightFragments result;
   bsp.front_to_back(light, [&](NodePieces node) { generator.process(node, result.fragments); });

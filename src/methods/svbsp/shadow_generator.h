@@ -47,12 +47,13 @@ struct GeneratorSettings {
   bool balance = true;
 };
 
-/// Whether a global face is on the far side of its solid from the light (OutwardSolids); its
-/// pieces are shadowed without filtering. Empty: every piece is filtered.
-using FarSide = std::function<bool(std::uint32_t face)>;
+/// Whether a global face is known to lie in shadow whole: its pieces are shadowed without
+/// filtering and cast nothing new. Empty: every piece is filtered.
+using ShadowedWhole = std::function<bool(std::uint32_t face)>;
 
-/// The far-side test of the scene's outward solids for \p light.
-FarSide far_side_of(const Scene& scene, const Light& light);
+/// The far sides of the scene's outward solids from \p light, which their near sides
+/// shadow.
+ShadowedWhole far_side_of(const Scene& scene, const Light& light);
 
 /// \brief The body of Fig. 3 for one light: fed the scene pieces one BSP node at a time in
 /// front-to-back order, it grows the light's SVBSP tree and gives each piece's fragments.
@@ -66,13 +67,15 @@ class ShadowGenerator {
   /// \p solids: the convex solids of the scene BSP tree's solid leaves (§6, contour edges);
   /// null when it has none.
   ShadowGenerator(const Scene& scene, const Light& light, const GeneratorSettings& settings = {},
-                  FarSide far_side = {}, const ConvexSolids* solids = nullptr);
+                  ShadowedWhole shadowed_whole = {}, const ConvexSolids* solids = nullptr);
 
   /// Whether the light lies in the plane of \p piece's face: the piece is shadowed and
   /// casts nothing (Fig. 3).
   bool in_light_plane(const ConvexPolygon& piece) const;
-  /// Whether \p piece is on the far side of its solid (FarSide).
-  bool far_side(const ConvexPolygon& piece) const { return far_side_ && far_side_(piece.face); }
+  /// Whether \p piece is known to lie in shadow whole (ShadowedWhole).
+  bool shadowed_whole(const ConvexPolygon& piece) const {
+    return shadowed_whole_ && shadowed_whole_(piece.face);
+  }
   /// With the balance setting, before any piece: cuts the tree into cells of about
   /// kPiecesPerCell of \p pieces (all the generator will be fed) each, placed by where the
   /// light sees them (SvbspTree::divide). Nothing on scenes of fewer than two cells' pieces,
@@ -105,7 +108,7 @@ class ShadowGenerator {
   const Scene& scene_;
   Light light_;
   GeneratorSettings settings_;
-  FarSide far_side_;
+  ShadowedWhole shadowed_whole_;
   const ConvexSolids* solids_;
   double in_plane_;
   SvbspTree tree_;
@@ -115,9 +118,10 @@ class ShadowGenerator {
 /// Filters the pieces of \p bsp in front-to-back order from \p light down a new SVBSP tree.
 /// Surfaces are two-sided unless \p settings says otherwise: a piece faces the light from
 /// whichever side the light is; a piece whose plane holds the light is shadowed and casts
-/// nothing. \p far_side: see FarSide. \p solids: see ShadowGenerator.
+/// nothing. \p shadowed_whole: see ShadowedWhole. \p solids: see ShadowGenerator.
 LightFragments generate_shadows(const SceneBsp& bsp, const Scene& scene, const Light& light,
                                 const GeneratorSettings& settings = {},
-                                const FarSide& far_side = {}, const ConvexSolids* solids = nullptr);
+                                const ShadowedWhole& shadowed_whole = {},
+                                const ConvexSolids* solids = nullptr);
 
 }  // namespace shadowkit::svbsp

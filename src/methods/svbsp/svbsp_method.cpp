@@ -6,6 +6,7 @@
 #include "fragment_raster.h"
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/svbsp.h"
+#include "shadowkit/scene/footprints.h"
 
 namespace shadowkit::svbsp {
 
@@ -21,8 +22,9 @@ bool switch_setting(const MethodOptions& options, const std::string& key, bool f
 }  // namespace
 
 SvbspMethod::SvbspMethod(const MethodOptions& options) {
-  options.expect_only("svbsp", {"paper", "contour_planes", "far_side", "skip_edges_in_tree",
-                                "merge_siblings", "whole_pieces", "shadowed_only", "balance"});
+  options.expect_only(
+      "svbsp", {"paper", "contour_planes", "far_side", "skip_edges_in_tree", "merge_siblings",
+                "whole_pieces", "shadowed_only", "balance", "footprints"});
   // paper=1: Figs. 3 and 4 as written, one-sided; each §6 refinement off unless set.
   const bool paper = switch_setting(options, "paper", false);
   generator_.two_sided = !paper;
@@ -31,12 +33,14 @@ SvbspMethod::SvbspMethod(const MethodOptions& options) {
   generator_.whole_pieces = switch_setting(options, "whole_pieces", !paper);
   generator_.balance = switch_setting(options, "balance", !paper);
   far_side_ = switch_setting(options, "far_side", !paper);
+  footprints_ = switch_setting(options, "footprints", !paper);
   contour_planes_ = switch_setting(options, "contour_planes", false);
   shadowed_only_ = switch_setting(options, "shadowed_only", false);
   clusters_ = !paper;
 }
 
 void SvbspMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
+  if (footprints_) parts_ = SubObjects::of(scene);
   if (!contour_planes_) {
     // Independent: the solids' faces are found while the tree is built.
     bsp_ = svbsp::SceneBsp::build(scene, nullptr, clusters_);
@@ -50,15 +54,25 @@ void SvbspMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
 void SvbspMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
   SHADOWKIT_CHECK(bsp_.has_value());
   light_ = scene.lights[light];
-  result_ =
-      svbsp::generate_shadows(*bsp_, scene, light_, generator_,
-                              far_side_ ? svbsp::far_side_of(scene, light_) : svbsp::FarSide{},
-                              convex_solids_ ? &*convex_solids_ : nullptr);
+  result_ = svbsp::generate_shadows(*bsp_, scene, light_, generator_, shadowed_whole(scene),
+                                    convex_solids_ ? &*convex_solids_ : nullptr);
   if (shadowed_only_) {  // §6: one light at a time, the lit fragments are thrown away
     std::erase_if(result_.fragments, [](const svbsp::Fragment& f) { return f.lit; });
   }
   input_polygons_ = scene.face_count();
   front_facing_ = svbsp::front_facing(scene, light_);
+}
+
+// §6 skips filtering where the answer is known: the far sides of outward solids, and the
+// sub-objects wholly in the shadow of nearer ones (Crow's footprints), whose volumes lie
+// within theirs.
+ShadowedWhole SvbspMethod::shadowed_whole(const Scene& scene) {
+  const ShadowedWhole far_side = far_side_ ? far_side_of(scene, light_) : ShadowedWhole{};
+  if (!footprints_) return far_side;
+  shadowed_parts_ = shadowed_sub_objects(parts_, light_, scene.bounds());
+  return [this, far_side](std::uint32_t face) {
+    return shadowed_parts_[parts_.of_face[face]] || (far_side && far_side(face));
+  };
 }
 
 void SvbspMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
