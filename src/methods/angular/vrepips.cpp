@@ -6,6 +6,8 @@
 #include <numeric>
 #include <tuple>
 
+#include "light_frame.h"
+
 namespace shadowkit::angular {
 namespace {
 
@@ -32,10 +34,6 @@ Vec3 lerp(Vec3 a, Vec3 b, double t) {
   return a + (b - a) * t;
 }
 
-double theta(Vec3 v, bool point_light) {
-  return point_light ? std::atan2(v.y, v.z) : v.y;
-}
-
 // A VRE of a closed loop and its theta range (eq. 2), for the sweep that pairs the edges to
 // test.
 struct ThetaSpan {
@@ -51,7 +49,8 @@ std::vector<ThetaSpan> vre_spans(std::span<const Vec3> local, std::span<const Ri
     for (const std::uint32_t r : loop.edges) {
       const RidgeEdge& re = ridges[r];
       if (re.hidden_ridge) continue;  // Sec. 2.1: VREPIPs are between VREs only
-      double lo = theta(local[re.from], point_light), hi = theta(local[re.to], point_light);
+      double lo = local_theta(local[re.from], point_light);
+      double hi = local_theta(local[re.to], point_light);
       if (lo > hi) std::swap(lo, hi);
       // Hazard: an edge across the light's back (theta wraps) is tested against every other.
       if (point_light && hi - lo > std::numbers::pi) lo = -std::numbers::pi, hi = std::numbers::pi;
