@@ -145,10 +145,11 @@ struct Stops {
 };
 
 // Sec. 2.4 at one pseudo intersection: \p leave[v] for each of its VREPIPs v, the VREPIP
-// whose edge the traversal takes on arriving at v. Around the point as the light sees it, the
-// VREs' halves coming in and going out are matched like parentheses in clockwise order, each
-// coming-in half to a going-out half after it, so that the loops that come out do not cross
-// there. Where the halves alternate, that is "the edge closest to the incoming edge
+// whose edge the traversal takes on arriving at v. Around the point as the light sees it, in
+// increasing angle from u towards w = n x u (taken as the paper's clockwise: what matters is
+// one fixed sense), the VREs' halves coming in and going out are matched like parentheses,
+// each coming-in half to a going-out half after it, so that the loops that come out do not
+// cross there. Where the halves alternate, that is "the edge closest to the incoming edge
 // clockwise"; of two VREs crossing, each leaves on the other (Sec. 2.2).
 void match_at(std::span<const Vec3> local, std::span<const RidgeEdge> ridges, const Vrepips& v,
               const PseudoIntersection& at, bool point_light, std::vector<std::uint32_t>& leave) {
