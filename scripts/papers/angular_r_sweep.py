@@ -119,16 +119,18 @@ def light_inside(repeats):
 
 def pairings(repeats):
     """Each pairing at the automatic R: the table's pairs, the paper's own count of ridge-edge
-    pairs and of the ones it walked, build and shade times, and the mismatch."""
-    lines = ["| scene | pairing | R | table pairs | RE pairs | walked | objects paper/walk | "
-             "build ms | shade ms | mismatch % |", "|---|---|---:|---:|---:|---:|---|---:|---:|---:|"]
+    pairs, of the ones it walked and of the VREPIPs it split loops at, build and shade times,
+    and the mismatch."""
+    lines = ["| scene | pairing | R | table pairs | RE pairs | walked | VREPIPs | objects paper/walk | "
+             "build ms | shade ms | mismatch % |",
+             "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|"]
     for scene in PAIRING_SCENES:
         for pairing in PAIRINGS:
             b = bench(scene, {"pairing": pairing}, repeats)
             pct, resolution = compare(scene, {"pairing": pairing})
             paper = pairing == "paper"
-            counts = (f"{b['re_pairs']:.0f} | {b['pairing_fallbacks']:.0f} | "
-                      f"{b['paper_objects']:.0f}/{b['walked_objects']:.0f}") if paper else "– | – | –"
+            counts = (f"{b['re_pairs']:.0f} | {b['pairing_fallbacks']:.0f} | {b['vrepips']:.0f} | "
+                      f"{b['paper_objects']:.0f}/{b['walked_objects']:.0f}") if paper else "– | – | – | –"
             lines.append(f"| `{scene}` | {pairing} | {resolution} | {b['table_pairs']:.0f} | "
                          f"{counts} | {b['build_ms']:.2f} | {b['shade_ms']:.2f} | {pct:.4f} |")
     return lines

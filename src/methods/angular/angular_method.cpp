@@ -245,7 +245,8 @@ MethodCounters AngularMethod::counters() const {
     out.insert(out.end(), {{"paper_objects", p.paper_objects},
                            {"walked_objects", p.walked_objects},
                            {"re_pairs", p.re_pairs},
-                           {"pairing_fallbacks", p.fallbacks}});
+                           {"pairing_fallbacks", p.fallbacks},
+                           {"vrepips", p.vrepips}});
   }
   return out;
 }

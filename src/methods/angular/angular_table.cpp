@@ -552,6 +552,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     pairing.combine_each([&](const PairingStats& s) {
       table.pairing_.re_pairs += double(s.re_pairs);
       table.pairing_.fallbacks += double(s.fallbacks);
+      table.pairing_.vrepips += double(s.vrepips);
     });
   }
   table.entries_.pairs = std::move(storage.unsorted);

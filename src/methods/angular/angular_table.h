@@ -92,6 +92,7 @@ struct PairingCounts {
   double walked_objects = 0;  ///< objects it does not cover (open, thin, around the light)
   double re_pairs = 0;        ///< begin-end pairs of ridge edges it made
   double fallbacks = 0;       ///< of those, the begins walked instead
+  double vrepips = 0;         ///< VREPIPs the loops were split at (RE-loops paper, Sec. 2.2)
 };
 
 /// \brief A pair and the entry it belongs to, while the table is built (24 bytes: no reach).

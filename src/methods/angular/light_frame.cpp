@@ -30,7 +30,7 @@ LightFrame::LightFrame(const Light& light, const Camera& camera, Vec3 scene_cent
 
 AngularPoint LightFrame::angular_local(Vec3 v) const {
   if (!point_) return {v.z, v.y, v.x};
-  return {length(v), std::atan2(v.y, v.z), phi_local(v)};
+  return {length(v), local_theta(v, true), phi_local(v)};
 }
 
 FrameAffine LightFrame::theta_plane(double theta) const {

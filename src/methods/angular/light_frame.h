@@ -23,6 +23,12 @@ struct FrameAffine {
   double at(Vec3 v, double w = 1) const { return dot(a, v) + b * w; }
 };
 
+/// Eq. 2 of a light-frame point, as LightFrame::angular_local gives it, knowing only the
+/// light's kind: for code that holds light-frame points but no frame.
+inline double local_theta(Vec3 v, bool point_light) {
+  return point_light ? std::atan2(v.y, v.z) : v.y;
+}
+
 /// \brief The frame fixed to the light whose XY plane is parallel to the camera's
 /// projection plane (Sec. 3, Fig. 18), so that lines along the camera's right axis are
 /// constant-theta lines.

@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <tuple>
+
+#include "light_frame.h"
+#include "vrepips.h"
 
 namespace shadowkit::angular {
 namespace {
@@ -13,8 +17,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // Eq. 2 of any vertex (SlicedMesh::theta holds only the ridge edges' ones).
 double vertex_theta(const SlicedMesh& m, std::uint32_t v, bool point_light) {
-  const Vec3 p = m.local[v];
-  return point_light ? std::atan2(p.y, p.z) : p.y;
+  return local_theta(m.local[v], point_light);
 }
 
 // The hidden edges by theta, while the slices go down: those whose theta range may hold the
@@ -334,6 +337,85 @@ std::pair<int, int> entry_range(const ThetaQuantization& q, double lo, double hi
   return {first, last};
 }
 
+// Sec. 2.2's split where it changes the branches: the pseudo intersections at which VREs go
+// opposite ways in theta (a branch going down passes one going up as the light sees them).
+// Where all go one way (the windings of a coil, Fig. 22), Sec. 3.2's peaks pair the layers as
+// the far sheet joins them, and a split there would pair one layer's begin with another's
+// end.
+Vrepips where_branches_cross(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
+                             const Vrepips& all) {
+  Vrepips out;
+  for (const PseudoIntersection& at : all.at) {
+    const int first = rise(m, ridges[all.points[at.vrepips[0]].ridge]);
+    if (std::ranges::all_of(at.vrepips, [&](std::uint32_t v) {
+          return rise(m, ridges[all.points[v].ridge]) == first;
+        })) {
+      continue;
+    }
+    PseudoIntersection& kept = out.at.emplace_back();
+    for (const std::uint32_t v : at.vrepips) {
+      kept.vrepips.push_back(std::uint32_t(out.points.size()));
+      out.points.push_back(all.points[v]);
+    }
+  }
+  return out;
+}
+
+// An object's RE loops after the split: each piece a ridge edge of its own (same mesh edge and
+// face, so that its crossings are the edge's, bit for bit), its VREPIP ends vertices appended
+// after the mesh's, so that Sec. 3.2's branches take the pieces as they take ridge edges.
+struct SplitLoops {
+  std::vector<Vec3> local;
+  std::vector<double> theta;
+  std::vector<RidgeEdge> ridges;
+  std::vector<RidgeEdgeLoop> loops;
+};
+
+SplitLoops split_loops(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Vrepips& v,
+                       std::span<const SimpleLoop> simple, bool point_light) {
+  SplitLoops out{{m.local.begin(), m.local.end()}, {m.theta.begin(), m.theta.end()}, {}, {}};
+  std::map<std::pair<std::uint32_t, double>, std::uint32_t> vertex_at;  // (ridge, t)
+  for (const Vrepip& p : v.points) {
+    vertex_at[{p.ridge, p.t}] = std::uint32_t(out.local.size());
+    out.local.push_back(p.p);
+    out.theta.push_back(local_theta(p.p, point_light));
+  }
+  for (const SimpleLoop& loop : simple) {
+    RidgeEdgeLoop& split = out.loops.emplace_back(RidgeEdgeLoop{{}, true});
+    for (const LoopPiece& piece : loop) {
+      RidgeEdge re = ridges[piece.ridge];
+      if (piece.t0 > 0) re.from = vertex_at.at({piece.ridge, piece.t0});
+      if (piece.t1 < 1) re.to = vertex_at.at({piece.ridge, piece.t1});
+      split.edges.push_back(std::uint32_t(out.ridges.size()));
+      out.ridges.push_back(re);
+    }
+  }
+  return out;
+}
+
+// Secs. 3.2-3.3 for loops that need no split.
+void pair_loops(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
+                std::span<const RidgeEdgeLoop> loops, const ThetaQuantization& q,
+                std::span<const ThetaSlice> slices, SliceScratch& scratch,
+                std::vector<EntryPair>& out, PairingStats& stats) {
+  const LoopBranches branches = split_into_branches(m, ridges, loops, slices[0].point_light);
+  const std::vector<RePair> pairs = pair_branches(m, ridges, branches, q, slices);
+  const std::vector<std::uint32_t> hidden = hidden_edges(m.mesh, m.sheets);
+  insert_hidden_edges(m, ridges, hidden, pairs, slices, scratch, out, stats);
+}
+
+// Secs. 2.2 and 3.2-3.3: the loops split at \p v's VREPIPs, their pieces paired.
+void pair_split_loops(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
+                      std::span<const RidgeEdgeLoop> loops, const Vrepips& v,
+                      const ThetaQuantization& q, std::span<const ThetaSlice> slices,
+                      SliceScratch& scratch, std::vector<EntryPair>& out, PairingStats& stats) {
+  const bool point_light = slices[0].point_light;
+  const SplitLoops split = split_loops(
+      m, ridges, v, split_at_vrepips(m.local, ridges, loops, v, point_light), point_light);
+  const SlicedMesh in_pieces{m.mesh, m.sheets, split.local, split.theta, m.hidden_id};
+  pair_loops(in_pieces, split.ridges, split.loops, q, slices, scratch, out, stats);
+}
+
 }  // namespace
 
 LoopBranches split_into_branches(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
@@ -426,10 +508,30 @@ void pair_re_loops(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
                    std::span<const ThetaSlice> slices, SliceScratch& scratch,
                    std::vector<EntryPair>& out, PairingStats& stats) {
   if (slices.empty()) return;
-  const LoopBranches branches = split_into_branches(m, ridges, loops, slices[0].point_light);
-  const std::vector<RePair> pairs = pair_branches(m, ridges, branches, q, slices);
-  const std::vector<std::uint32_t> hidden = hidden_edges(m.mesh, m.sheets);
-  insert_hidden_edges(m, ridges, hidden, pairs, slices, scratch, out, stats);
+  const std::size_t mark = out.size();
+  PairingStats whole;
+  pair_loops(m, ridges, loops, q, slices, scratch, out, whole);
+  const bool point_light = slices[0].point_light;
+  const Vrepips v =
+      whole.fallbacks == 0
+          ? Vrepips{}
+          : where_branches_cross(m, ridges, find_vrepips(m.local, ridges, loops, point_light));
+  if (!v.points.empty()) {
+    std::vector<EntryPair> split_out;
+    PairingStats split{0, 0, v.points.size()};
+    pair_split_loops(m, ridges, loops, v, q, slices, scratch, split_out, split);
+    // Hazard: a split at a VREPIP can pair what the far sheet does not join (the split loops
+    // are the shadow polygons' outlines, not the far sheet's layers): it is kept only where
+    // its pairs fall back less.
+    if (split.fallbacks < whole.fallbacks) {
+      out.resize(mark);
+      out.insert(out.end(), split_out.begin(), split_out.end());
+      whole = split;
+    }
+  }
+  stats.re_pairs += whole.re_pairs;
+  stats.fallbacks += whole.fallbacks;
+  stats.vrepips += whole.vrepips;
 }
 
 }  // namespace shadowkit::angular

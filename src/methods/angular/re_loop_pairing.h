@@ -1,7 +1,8 @@
 #pragma once
 // The RE-loops paper's own pairing (Thakur, Cheng & Miura, RE-loops paper, Secs. 3.2-3.3):
 // branch pairs processed down from local peaks, equal adjacent peaks (Fig. 27), holes and
-// hole-like situations by direction constraints, hidden edges inserted in duplicate.
+// hole-like situations by direction constraints, hidden edges inserted in duplicate; and, where
+// that leaves pairs the far sheet does not join, the loops split at VREPIPs (Sec. 2.2).
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -63,6 +64,7 @@ std::vector<RePair> pair_branches(const SlicedMesh& mesh, std::span<const RidgeE
 struct PairingStats {
   std::size_t re_pairs = 0;
   std::size_t fallbacks = 0;  ///< begins walked instead: no partner, or an inconsistent one
+  std::size_t vrepips = 0;    ///< VREPIPs the loops were split at (Sec. 2.2)
 };
 
 /// Sec. 3.3: the hidden edges of one solid (both faces' far sheets meet across them). The
@@ -89,7 +91,9 @@ bool paper_pairing_applies(const FarSheets& sheets, std::span<const RidgeEdgeLoo
                            bool wraps, bool axis_faces);
 
 /// Secs. 3.2-3.3 for all of one object's RE loops: split_into_branches, pair_branches,
-/// insert_hidden_edges.
+/// insert_hidden_edges. Where pairs fall back, the loops are also split (Sec. 2.2) at the
+/// VREPIPs where their VREs go opposite ways in theta and paired again in pieces; the split
+/// is kept when fewer of its pairs fall back.
 void pair_re_loops(const SlicedMesh& mesh, std::span<const RidgeEdge> ridges,
                    std::span<const RidgeEdgeLoop> loops, const ThetaQuantization& q,
                    std::span<const ThetaSlice> slices, SliceScratch& scratch,

@@ -118,6 +118,51 @@ TEST(RePairing, ACoiledLoopPairsEachLayerWithItself) {
   EXPECT_GT(interleaved, 10);
 }
 
+// Secs. 2.2 / 3.2: the house's garage roof under its sun. Where a branch going down passes
+// one going up as the sun sees them, peak pairing joins crossings the far sheet does not (92
+// of 349 pairs walked). Split at the two VREPIPs there, the loop's pieces pair by their peaks
+// with 8 walked, and the split is kept; the table is the walk's, pair for pair.
+TEST(RePairing, ASplitAtVrepipsIsKeptWhereItsPairsFallBackLess) {
+  Scene scene = load_scene_file(std::string(SHADOWKIT_SOURCE_DIR) + "/examples/house.json", {});
+  scene.objects = {scene.objects[25]};
+  const Paired roof(std::move(scene), 300);
+  SliceScratch scratch;
+  std::vector<EntryPair> unsplit, split, walked;
+  PairingStats before, after;
+  insert_hidden_edges(roof.m, roof.loops.ridges, hidden_edges(roof.m.mesh, roof.m.sheets),
+                      roof.pairs, roof.slices, scratch, unsplit, before);
+  EXPECT_EQ(before.re_pairs, 349u);
+  EXPECT_EQ(before.fallbacks, 92u);
+  pair_re_loops(roof.m, roof.loops.ridges, roof.loops.loops, roof.q, roof.slices, scratch, split,
+                after);
+  EXPECT_EQ(after.vrepips, 2u);
+  EXPECT_EQ(after.re_pairs, 349u);
+  EXPECT_EQ(after.fallbacks, 8u);
+  for (const RidgeEdgeLoop& loop : roof.loops.loops) {
+    slice_loop(roof.m, roof.loops.ridges, loop, roof.q, roof.slices, scratch, walked);
+  }
+  const auto key = [](const EntryPair& p) {
+    return std::tuple(p.entry, p.phi_begin, p.phi_end, p.hidden);
+  };
+  std::ranges::sort(split, {}, key);
+  std::ranges::sort(walked, {}, key);
+  ASSERT_EQ(split.size(), walked.size());
+  for (std::size_t i = 0; i < split.size(); ++i) EXPECT_EQ(key(split[i]), key(walked[i])) << i;
+}
+
+// Where peak pairing needs no help the loops are not split: the coil's windings cross (four
+// VREPIPs), and its peaks pair each layer with itself (Sec. 3.2, Fig. 22).
+TEST(RePairing, LoopsWhosePairsAllJoinTheirFarSheetsAreNotSplit) {
+  const Paired coil(load_scene("coil", {}), 300);
+  SliceScratch scratch;
+  std::vector<EntryPair> out;
+  PairingStats stats;
+  pair_re_loops(coil.m, coil.loops.ridges, coil.loops.loops, coil.q, coil.slices, scratch, out,
+                stats);
+  EXPECT_EQ(stats.fallbacks, 0u);
+  EXPECT_EQ(stats.vrepips, 0u);
+}
+
 // Figs. 13 / 25: the frame's hole is a second loop, whose peak is hole-like (its branches go
 // down then up from left to right). Its branches are inserted into the outer loop's pair:
 // through the hole, shadow begins at the outer loop and ends at the hole's, then begins at
