@@ -41,7 +41,8 @@ TABLE1 = {
                   "nodes": 2894, "fragments": 3345},
 }
 
-REFINEMENTS = ["skip_edges_in_tree", "merge_siblings", "whole_pieces", "far_side"]
+REFINEMENTS = ["skip_edges_in_tree", "merge_siblings", "whole_pieces", "far_side", "balance",
+               "footprints"]
 
 CONTOUR_SCENES = ["cubes:2000", "tetra:4", "three-lights", "table", "room",
                   "examples/default.json", "examples/room.json"]
