@@ -18,7 +18,7 @@ namespace {
 // cells across: footprints that overlap must each cover many cells for their union to hide
 // what lies behind the seams between them.
 constexpr double kCellsPerFootprint = 16;
-constexpr int kMinCells = 512, kMaxCells = 2048;
+constexpr int kMinCells = 128, kMaxCells = 2048;
 constexpr double kSlack = 1e-6;  // of a cell: rounding of the projections
 
 struct Point2 {

@@ -19,7 +19,7 @@ namespace shadowkit {
 /// the six faces of a cube for a point light), each cell holding the nearest far reach of
 /// the footprints that cover it wholly; a box is tested against every cell it touches. A
 /// face's grid spans only where the footprints fall on it, with about 16 cells per
-/// footprint (512 to 2048 across): a box behind the seam of two overlapping footprints is
+/// footprint (128 to 2048 across): a box behind the seam of two overlapping footprints is
 /// found hidden only where cells fit between their outlines. Both sides are rounded toward
 /// keeping a sub-object.
 std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& light,
