@@ -243,7 +243,9 @@ TEST(ScanConverter, DepthTilesAreTheReachedTilesOfTheFullPass) {
       left_out += handed[i] == 0;
     }
     EXPECT_GT(drawn, key.size() / 10);
-    if (boxes == 3) EXPECT_GE(left_out, 64u * 64);  // a tile of sky at least
+    if (boxes == 3) {
+      EXPECT_GE(left_out, 64u * 64);  // a tile of sky at least
+    }
   }
 }
 
