@@ -30,9 +30,9 @@ struct Point2 {
 // light the six faces of a cube around it (a set of points whose directions share a face
 // projects centrally onto it, so the hull of their projections is the projection of their
 // hull).
-class LightView {
+class FootprintProjection {
  public:
-  explicit LightView(const Light& light) : light_(light) {
+  explicit FootprintProjection(const Light& light) : light_(light) {
     if (light.type == Light::Type::point) return;
     const Vec3 d = light.direction;
     u_ = normalize(cross(d, std::abs(d.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0}));
@@ -187,7 +187,7 @@ struct SubObjectView {
   double far = 0;             ///< how far from the light its footprint reaches
 };
 
-SubObjectView view_of(const SubObjects& parts, std::uint32_t k, const LightView& view,
+SubObjectView view_of(const SubObjects& parts, std::uint32_t k, const FootprintProjection& view,
                       std::vector<Point2>& points) {
   SubObjectView out;
   out.near = view.near(parts.bounds[k]);
@@ -214,7 +214,7 @@ SubObjectView view_of(const SubObjects& parts, std::uint32_t k, const LightView&
 
 // Per face of \p view, a grid around the footprints in \p views that fall on it.
 std::vector<FaceGrid> footprint_grids(const std::vector<SubObjectView>& views,
-                                      const LightView& view) {
+                                      const FootprintProjection& view) {
   const std::size_t faces = std::size_t(view.face_count());
   std::vector<Point2> lo(faces, {INFINITY, INFINITY}), hi(faces, {-INFINITY, -INFINITY});
   std::vector<std::size_t> footprints(faces, 0);
@@ -238,7 +238,7 @@ std::vector<FaceGrid> footprint_grids(const std::vector<SubObjectView>& views,
 
 std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& light,
                                        const Bounds3& scene_bounds) {
-  const LightView view(light);
+  const FootprintProjection view(light);
   std::vector<SubObjectView> views(parts.size());
   tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, std::uint32_t(parts.size()), 256),
                     [&](const auto& r) {

@@ -81,7 +81,8 @@ void SvbspMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces
 }
 
 std::size_t SvbspMethod::memory_bytes() const {
-  std::size_t bytes = (bsp_ ? bsp_->memory_bytes() : 0) + result_.svbsp_bytes;
+  std::size_t bytes = (bsp_ ? bsp_->memory_bytes() : 0) + result_.svbsp_bytes +
+                      parts_.memory_bytes() + shadowed_parts_.capacity();
   for (const svbsp::Fragment& f : result_.fragments) {
     bytes += sizeof(f) + heap_bytes(f.polygon);
   }
