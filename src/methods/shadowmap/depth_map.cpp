@@ -31,6 +31,8 @@ void DepthMap::render(const Scene& scene, const RasterProjection& view, const Co
 void DepthMap::allocate(const RasterProjection& view) {
   view_ = view;
   texel_side_ = std::max(1.0 / view.scale_x, 1.0 / view.scale_y);
+  grid_ = {float(view.offset_x), float(view.offset_y), float(view.scale_x),
+           float(view.scale_y),  view.width,           view.height};
   tiles_x_ = (view.width + kTile - 1) / kTile;
   const int tiles_y = (view.height + kTile - 1) / kTile;
   slot_.assign(std::size_t(tiles_x_) * tiles_y, 0);

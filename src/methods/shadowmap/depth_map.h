@@ -55,23 +55,16 @@ class DepthMap {
     return texels_[std::size_t(slot_[tile]) * kTileTexels + (uy % kTile) * kTile + ux % kTile];
   }
 
-  /// \brief A view-space point \p v and where it falls on the image plane: (xv / zv, yv / zv)
-  /// for a perspective view, (xv, yv) for an orthographic one. The texel lookup and the depth
-  /// slope both need it.
-  struct Sample {
-    Vec3 v;
-    double u, w;
+  /// \brief The view's projection onto texels, in float for the lookups (texel_batch.h):
+  /// a texel's width on the image plane is far above float's rounding there.
+  struct TexelGrid {
+    float offset_x, offset_y, scale_x, scale_y;
+    int width, height;
+    /// The texel whose span [i, i + 1) holds \p x (RasterProjection::pixel_x and pixel_y),
+    /// clamped to the map, NaN to 0: texel_batch.h's lanes compute
+    /// min(max(offset_x + scale_x u, 0), width - 1) and the same for offset_y - scale_y w.
   };
-  Sample sample(Vec3 v) const {
-    return view_.orthographic ? Sample{v, v.x, v.y} : Sample{v, v.x / v.z, v.y / v.z};
-  }
-
-  /// The texel (x, y) whose footprint contains \p s; points off the map (and points on its
-  /// outer edges) take the nearest edge texel. (RasterProjection::pixel_x and pixel_y.)
-  void texel_of(const Sample& s, int& x, int& y) const {
-    x = texel_index(view_.offset_x + view_.scale_x * s.u, view_.width);
-    y = texel_index(view_.offset_y - view_.scale_y * s.w, view_.height);
-  }
+  const TexelGrid& texel_grid() const { return grid_; }
 
   /// World size of one texel at view depth \p zv: the larger side of its footprint on the plane
   /// zv = const (2 zv / resolution for a 90° face, the fitted extent / resolution for an
@@ -88,15 +81,22 @@ class DepthMap {
     return std::hypot(n.x, n.y) / std::abs(view_.orthographic ? n.z : eye_distance);
   }
 
-  /// How fast the view depth zv of the receiver's plane changes per unit of lateral distance
-  /// at a point of view depth \p zv, capped at kMaxSlope, from its \p slope_factor. For an
-  /// orthographic map it is tan(angle between normal and light direction); for a perspective
-  /// face it is the same tangent on the face's axis and the exact zv gradient off it.
-  double depth_slope(double slope_factor, double zv) const {
-    if (view_.orthographic) return std::min(kMaxSlope, slope_factor);
-    if (!(zv > 0)) return kMaxSlope;
-    // min(kMaxSlope, NaN) is kMaxSlope: a plane through the eye is seen edge-on.
-    return std::min(kMaxSlope, slope_factor * zv);
+  /// Williams 1978, second pass, with percentage-closer filtering: of the kernel x kernel
+  /// texels centred on texel (\p x, \p y) (kernel odd; texels past the map's edge are
+  /// clamped to it), how many store a depth no nearer than \p depth, a point's depth less
+  /// its bias: a point no farther from the light than the nearest surface the light sees in
+  /// its direction is lit.
+  int passing_tests(int x, int y, float depth, int kernel) const {
+    if (kernel == 1) return depth <= this->depth(x, y);
+    const int r = kernel / 2;
+    int passed = 0;
+    for (int dy = -r; dy <= r; ++dy) {
+      const int ty = std::clamp(y + dy, 0, view_.height - 1);
+      for (int dx = -r; dx <= r; ++dx) {
+        passed += depth <= this->depth(std::clamp(x + dx, 0, view_.width - 1), ty);
+      }
+    }
+    return passed;
   }
 
   /// The linear depth a texel stores for the scan converter's depth \p key
@@ -106,45 +106,7 @@ class DepthMap {
     return kOrthographic ? float(-key) : 1.0f / std::max(float(key), 0.0f);
   }
 
-  /// The stored depth of the texel of \p s.
-  const float& stored(const Sample& s) const {
-    int x = 0, y = 0;
-    texel_of(s, x, y);
-    return depth(x, y);
-  }
-
-  /// Williams 1978, second pass: a point at view depth \p z is lit when it is not farther
-  /// from the light than the nearest surface the light sees in its direction, \p stored
-  /// (within the \p bias).
-  static bool passes(double z, float stored, double bias) { return z <= double(stored) + bias; }
-
-  /// Depth tests of a kernel x kernel block of texels centred on the texel of \p s (kernel
-  /// odd; texels past the map's edge are clamped to it): how many have v.z <= stored + bias.
-  int passing_tests(const Sample& s, double bias, int kernel) const {
-    if (kernel == 1) return passes(s.v.z, stored(s), bias);
-    int cx = 0, cy = 0;
-    texel_of(s, cx, cy);
-    const int r = kernel / 2;
-    int passed = 0;
-    for (int dy = -r; dy <= r; ++dy) {
-      const int y = std::clamp(cy + dy, 0, view_.height - 1);
-      for (int dx = -r; dx <= r; ++dx) {
-        const int x = std::clamp(cx + dx, 0, view_.width - 1);
-        passed += passes(s.v.z, depth(x, y), bias);
-      }
-    }
-    return passed;
-  }
-
  private:
-  // Index of the texel whose span [i, i + 1) contains continuous coordinate s, clamped to
-  // [0, n - 1]; NaN goes to 0.
-  static int texel_index(double s, int n) {
-    if (!(s > 0)) return 0;
-    if (s >= n) return n - 1;
-    return int(s);
-  }
-
   void allocate(const RasterProjection& view);
   std::size_t store(const RasterTile& tile, std::uint32_t slot);
   template <bool kOrthographic>
@@ -152,6 +114,7 @@ class DepthMap {
 
   RasterProjection view_;
   double texel_side_ = 0;
+  TexelGrid grid_{};
   int tiles_x_ = 0;
   std::vector<std::uint32_t> slot_;  ///< storage tile per map tile; slot 0 is all +infinity
   /// kTileTexels per slot, room for a slot per map tile: left uninitialized, so only the

@@ -106,22 +106,22 @@ void ShadowMapMethod::build(const Scene& scene, std::size_t light, const Context
   }
 }
 
+// One row of a screen tile in the camera pass: its visible points, where each is tested, and
+// the pixel each decides.
+struct ShadowMapMethod::TileRow {
+  PointBatch points;
+  TexelBatch texels;
+  std::array<std::size_t, PointBatch::kSize> pixel;
+};
+
 // What the camera pass knows of the receiving face of the last pixel, kept while a run of
-// pixels stays on one face and one map.
+// pixels stays on one face.
 struct ShadowMapMethod::Receiver {
   std::uint32_t face = kNoFace;
   const Plane* plane = nullptr;
   bool faces_light = false;
   double eye_distance = 0;
-  const DepthMap* map = nullptr;
-  double slope_factor = 0;  ///< DepthMap::slope_factor of the plane in the map's view
-};
-
-// A point's depth test, ready to be made: where the point falls in which map, and its bias.
-struct ShadowMapMethod::DepthTest {
-  const DepthMap* map;
-  DepthMap::Sample s;
-  double bias;
+  ReceiverBias bias;
 };
 
 void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
@@ -131,6 +131,7 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
   // The contract's pixel rays as VisibleSurfaceBuffer::ray() makes them, (forward + x right)
   // + y up, with the column's part computed once per column and the row's once per row.
   const Camera& camera = scene.camera;
+  const Vec3 eye = camera.position;
   const Vec3 forward = camera.forward(), right = camera.right(), up = camera.true_up();
   const Camera::PixelGrid grid = camera.pixel_grid();
   std::vector<Vec3> column(std::size_t(surfaces.width));
@@ -138,7 +139,8 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
     column[c] = forward + (grid.x0 + grid.step * double(c)) * right;
   }
   // Screen tiles, so that neighbouring visible points, which look up neighbouring texels, come
-  // one after another.
+  // one after another; a tile's row is one batch.
+  static_assert(kShadeTileW <= PointBatch::kSize);
   const int tiles_x = (surfaces.width + kShadeTileW - 1) / kShadeTileW;
   const int tiles_y = (surfaces.height + kShadeTileH - 1) / kShadeTileH;
   tbb::parallel_for(0, tiles_x * tiles_y, [&](int tile) {
@@ -146,96 +148,108 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
     const int x1 = std::min(x0 + kShadeTileW, surfaces.width);
     const int y1 = std::min(y0 + kShadeTileH, surfaces.height);
     Receiver receiver;
-    // A row's one-texel comparisons wait until the row is set up, their texels prefetched: a
-    // texel not in cache then no longer stalls the setup of the points after it.
-    struct Comparison {
-      std::size_t pixel;
-      const float* stored;
-      double z, bias;
-    };
-    std::array<Comparison, kShadeTileW> pending;
-    for (int y = y0; y < y1; ++y) {
+    // Sets up row y's points and starts loading their texels.
+    const auto set_up = [&](int y, TileRow& r) {
       const Vec3 row = (grid.y0 - grid.step * double(y)) * up;
-      std::size_t waiting = 0;
+      r.points.size = 0;
       for (int x = x0; x < x1; ++x) {
         const std::size_t i = surfaces.index(x, y);
         if (!surfaces.covered(i)) continue;
-        const Vec3 ray = column[x] + row;
-        const std::optional<DepthTest> test = depth_test_at(scene, surfaces.face[i], ray, receiver);
-        if (test && pcf_ == 1) {
-          const float* stored = &test->map->stored(test->s);
-          __builtin_prefetch(stored);
-          pending[waiting++] = {i, stored, test->s.v.z, test->bias};
-        } else {
-          mask.pixels[i] = test && passes(*test) ? kMaskLit : kMaskShadow;
+        const std::uint32_t face = surfaces.face[i];
+        if (face != receiver.face) receiver = receiver_of(scene.face_plane(face), eye, face);
+        if (!receiver.faces_light) {
+          mask.pixels[i] = kMaskShadow;
+          continue;
         }
+        // The visible point as VisibleSurfaceBuffer::point() computes it.
+        const Vec3 ray = column[x] + row;
+        r.pixel[r.points.size] = i;
+        add_point(eye + ray * (-receiver.eye_distance / dot(receiver.plane->normal, ray)),
+                  receiver.bias, r.points);
       }
-      for (std::size_t k = 0; k < waiting; ++k) {
-        const Comparison& c = pending[k];
-        mask.pixels[c.pixel] = DepthMap::passes(c.z, *c.stored, c.bias) ? kMaskLit : kMaskShadow;
+      locate(r.points, r.texels);
+      for (std::size_t k = 0; k < r.points.size; ++k) __builtin_prefetch(&stored(r.texels, k));
+    };
+    // Rows in a pipeline: a row's texels load while the next row is set up.
+    std::array<TileRow, 2> rows;
+    for (int y = y0; y <= y1; ++y) {
+      if (y < y1) set_up(y, rows[y % 2]);
+      if (y == y0) continue;
+      const TileRow& r = rows[(y - 1) % 2];
+      for (std::size_t k = 0; k < r.points.size; ++k) {
+        mask.pixels[r.pixel[k]] = lit(r.texels, k) ? kMaskLit : kMaskShadow;
       }
     }
   });
 }
 
-// The per-pixel path is declared inline, down to the depth test, so that the compiler folds it
-// into the camera pass's loop: without the calls (and their results passed in memory) it
-// overlaps the divisions and loads of neighbouring pixels.
-inline std::optional<ShadowMapMethod::DepthTest> ShadowMapMethod::depth_test_at(
-    const Scene& scene, std::uint32_t face, Vec3 ray, Receiver& receiver) const {
-  const Vec3 eye = scene.camera.position;
-  if (face != receiver.face) {
-    receiver = Receiver{};
-    receiver.face = face;
-    receiver.plane = &scene.face_plane(face);
-    // Contract condition 1: a surface is two-sided, lit only on the side the light is on.
-    receiver.faces_light = faces_light(*receiver.plane, eye, light_);
-    receiver.eye_distance = receiver.plane->distance(eye);
-  }
-  if (!receiver.faces_light) return std::nullopt;
-  // The visible point as VisibleSurfaceBuffer::point() computes it.
-  const Vec3 p = eye + ray * (-receiver.eye_distance / dot(receiver.plane->normal, ray));
-  Vec3 v;
-  const DepthMap& map = locate(p, v);
-  if (&map != receiver.map) {
-    receiver.map = &map;
-    receiver.slope_factor = slope_factor(map, *receiver.plane);
-  }
-  return depth_test(map, receiver.slope_factor, v);
+ShadowMapMethod::Receiver ShadowMapMethod::receiver_of(const Plane& plane, Vec3 eye,
+                                                       std::uint32_t face) const {
+  Receiver receiver;
+  receiver.face = face;
+  receiver.plane = &plane;
+  // Contract condition 1: a surface is two-sided, lit only on the side the light is on.
+  receiver.faces_light = faces_light(plane, eye, light_);
+  receiver.eye_distance = plane.distance(eye);
+  receiver.bias = bias_of(plane);
+  return receiver;
 }
 
-bool ShadowMapMethod::passes_depth_test(const Plane& plane, Vec3 p) const {
-  Vec3 v;
-  const DepthMap& map = locate(p, v);
-  return passes(depth_test(map, slope_factor(map, plane), v));
-}
-
-double ShadowMapMethod::slope_factor(const DepthMap& map, const Plane& plane) {
-  return map.slope_factor(view_normal(map.view(), plane.normal), plane.distance(map.view().eye));
-}
-
-inline const DepthMap& ShadowMapMethod::locate(Vec3 p, Vec3& v) const {
-  // Williams 1978, second pass: transform the visible point into the light's view.
-  if (light_.type == Light::Type::point) return cube_.locate(p, v);
-  v = ortho_.view().to_view(p);
-  return ortho_;
-}
-
-inline ShadowMapMethod::DepthTest ShadowMapMethod::depth_test(const DepthMap& map,
-                                                              double slope_factor, Vec3 v) const {
-  const DepthMap::Sample s = map.sample(v);
+ReceiverBias ShadowMapMethod::bias_of(const Plane& plane) const {
   // The map sampled each surface at texel centres, so a plane's stored depth differs from
   // its depth at p by up to its slope times half a texel, and float storage adds rounding:
   // without a bias surfaces shadow themselves, the self-shadowing problem Williams 1978
   // describes ("acne").
-  const double bias =
-      bias_ + slope_bias_ * map.texel_size(s.v.z) * map.depth_slope(slope_factor, s.v.z);
-  return {&map, s, bias};
+  const Vec3 n = plane.normal;
+  if (light_.type == Light::Type::point) {
+    const DepthMap& face_map = cube_.face(0);
+    const double distance = plane.distance(light_.position);
+    return {float(bias_),
+            float(slope_bias_ * face_map.texel_size(1)),
+            {float(face_map.slope_factor({n.y, n.z, 0}, distance)),
+             float(face_map.slope_factor({n.x, n.z, 0}, distance)),
+             float(face_map.slope_factor({n.x, n.y, 0}, distance))}};
+  }
+  const double slope = std::min(kMaxSlope, ortho_.slope_factor(view_normal(ortho_.view(), n), 0));
+  return {float(bias_ + slope_bias_ * ortho_.texel_size(0) * slope), 0, {}};
 }
 
-bool ShadowMapMethod::passes(const DepthTest& test) const {
+// Williams 1978, second pass: the visible point in the light's view (for a cube map, its
+// offset from the light, which CubeMap::face_of places).
+inline void ShadowMapMethod::add_point(Vec3 p, const ReceiverBias& bias, PointBatch& points) const {
+  points.add(light_.type == Light::Type::point ? p - light_.position : ortho_.view().to_view(p),
+             bias);
+}
+
+void ShadowMapMethod::locate(const PointBatch& points, TexelBatch& texels) const {
+  if (light_.type == Light::Type::point) {
+    cube_texels(cube_, points, texels);
+  } else {
+    orthographic_texels(ortho_, points, texels);
+  }
+}
+
+inline const float& ShadowMapMethod::stored(const TexelBatch& texels, std::size_t k) const {
+  return map_of(texels, k).depth(texels.texel_x[k], texels.texel_y[k]);
+}
+
+inline const DepthMap& ShadowMapMethod::map_of(const TexelBatch& texels, std::size_t k) const {
+  return light_.type == Light::Type::point ? cube_.face(texels.map[k]) : ortho_;
+}
+
+inline bool ShadowMapMethod::lit(const TexelBatch& texels, std::size_t k) const {
+  const DepthMap& map = map_of(texels, k);
   // Lit if half the tests pass.
-  return 2 * test.map->passing_tests(test.s, test.bias, pcf_) >= pcf_ * pcf_;
+  return 2 * map.passing_tests(texels.texel_x[k], texels.texel_y[k], texels.depth[k], pcf_) >=
+         pcf_ * pcf_;
+}
+
+bool ShadowMapMethod::passes_depth_test(const Plane& plane, Vec3 p) const {
+  PointBatch points;
+  add_point(p, bias_of(plane), points);
+  TexelBatch texels;
+  locate(points, texels);
+  return lit(texels, 0);
 }
 
 std::size_t ShadowMapMethod::memory_bytes() const {

@@ -8,6 +8,7 @@
 #include "cube_map.h"
 #include "depth_map.h"
 #include "shadowkit/methods/shadow_method.h"
+#include "texel_batch.h"
 
 namespace shadowkit::shadowmap {
 
@@ -61,19 +62,21 @@ class ShadowMapMethod final : public ShadowMethod {
 
  private:
   struct Receiver;
-  struct DepthTest;
-  /// The depth test of the visible point on \p face along the camera's \p ray, or nothing
-  /// when the face does not face the light; \p receiver carries what the last pixel learnt
-  /// of its face.
-  std::optional<DepthTest> depth_test_at(const Scene& scene, std::uint32_t face, Vec3 ray,
-                                         Receiver& receiver) const;
-  /// The map of the last build() that holds world point \p p, and \p p in its view.
-  const shadowmap::DepthMap& locate(Vec3 p, Vec3& v) const;
-  /// The depth test of the point \p v (in \p map's view) on a receiver whose plane has
-  /// DepthMap::slope_factor \p slope_factor in that view.
-  DepthTest depth_test(const shadowmap::DepthMap& map, double slope_factor, Vec3 v) const;
-  static double slope_factor(const shadowmap::DepthMap& map, const Plane& plane);
-  bool passes(const DepthTest& test) const;
+  struct TileRow;
+  /// What the camera pass keeps of the receiving \p face with \p plane, seen from \p eye.
+  Receiver receiver_of(const Plane& plane, Vec3 eye, std::uint32_t face) const;
+  /// The bias terms of the depth tests on a receiver with \p plane (Williams's
+  /// self-shadowing), in the maps of the last build().
+  shadowmap::ReceiverBias bias_of(const Plane& plane) const;
+  /// Adds the point \p p on a receiver with \p bias to \p points.
+  void add_point(Vec3 p, const shadowmap::ReceiverBias& bias, shadowmap::PointBatch& points) const;
+  /// Where each of \p points is tested, in the maps of the last build().
+  void locate(const shadowmap::PointBatch& points, shadowmap::TexelBatch& texels) const;
+  /// The map of point \p k of a located batch, and its texel's stored depth.
+  const shadowmap::DepthMap& map_of(const shadowmap::TexelBatch& texels, std::size_t k) const;
+  const float& stored(const shadowmap::TexelBatch& texels, std::size_t k) const;
+  /// Whether point \p k of a located batch passes the depth test (half its PCF kernel).
+  bool lit(const shadowmap::TexelBatch& texels, std::size_t k) const;
 
   int resolution_ = 2048;
   std::optional<double> bias_option_;

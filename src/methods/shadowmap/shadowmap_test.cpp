@@ -17,11 +17,14 @@
 #include "shadowkit/raster/scan_converter.h"
 #include "shadowkit/raster/visible_surface.h"
 #include "shadowkit/scene/mesh.h"
+#include "texel_batch.h"
 
 namespace shadowkit::shadowmap {
 namespace {
 
 using shadowmap::CubeMap;
+using shadowmap::PointBatch;
+using shadowmap::TexelBatch;
 
 const Context& quiet() {
   static const Context ctx = [] {
@@ -218,6 +221,52 @@ TEST(ShadowMap, CubeFaceSelectionCoversAllDirections) {
     EXPECT_GE(view.pixel_y(v), -1e-9);
     EXPECT_LE(view.pixel_y(v), kRes + 1e-9);
   }
+}
+
+// The camera pass's batches place every direction as the cube map's own face selection and
+// projection do: the same face and, off texel boundaries, the same texel; lanes past a
+// batch's size change nothing.
+TEST(ShadowMap, BatchesPlaceDirectionsAsTheCubeMapDoes) {
+  constexpr int kRes = 64;
+  ShadowMapMethod method = make({{"resolution", std::to_string(kRes)}});
+  method.build(square_scene(Light::point({0, 1, 0}), kTopCamera), 0, quiet());
+  const CubeMap& cube = method.cube_map();
+  std::vector<Vec3> dirs;
+  for (int x = -1; x <= 1; ++x) {
+    for (int y = -1; y <= 1; ++y) {
+      for (int z = -1; z <= 1; ++z) {
+        if (x || y || z) dirs.push_back({x * 0.5, y * 0.5, z * 0.5});
+      }
+    }
+  }
+  for (int k = 0; k < 500; ++k) {  // a spiral over the sphere, as above
+    const double t = (k + 0.5) / 500, z = 1 - 2 * t, a = k * 2.399963229728653;
+    const double s = std::sqrt(1 - z * z);
+    dirs.push_back({s * std::cos(a), s * std::sin(a), z});
+  }
+  int checked = 0;
+  for (std::size_t first = 0; first < dirs.size(); first += PointBatch::kSize - 1) {
+    PointBatch points;
+    for (std::size_t k = first; k < std::min(dirs.size(), first + PointBatch::kSize - 1); ++k) {
+      points.add(dirs[k], {});
+    }
+    TexelBatch texels;
+    cube_texels(cube, points, texels);
+    for (std::size_t k = 0; k < points.size; ++k) {
+      const Vec3 d = dirs[first + k];
+      const int f = CubeMap::face_of(d);
+      ASSERT_EQ(texels.map[k], f) << d.x << " " << d.y << " " << d.z;
+      const RasterProjection& view = cube.face(f).view();
+      const Vec3 v = view.to_view(view.eye + d);
+      const double px = view.pixel_x(v), py = view.pixel_y(v);
+      if (std::abs(px - std::round(px)) < 1e-4 || std::abs(py - std::round(py)) < 1e-4) continue;
+      EXPECT_EQ(texels.texel_x[k], std::clamp(int(px), 0, kRes - 1));
+      EXPECT_EQ(texels.texel_y[k], std::clamp(int(py), 0, kRes - 1));
+      EXPECT_FLOAT_EQ(texels.depth[k], float(v.z));  // no bias
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 450);
 }
 
 // A closed box [-5, 5]^3 around a point light at its centre: the cube faces' edges and corners
