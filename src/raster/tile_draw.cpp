@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <vector>
 
@@ -64,29 +65,45 @@ bool TileDepth::hidden(const BlockRange& r, double nearest) const {
   return true;
 }
 
-// As hidden(), taking the farthest key of each stale block on the way: only up to the first
-// block that shows, since a large triangle would otherwise scan most of the tile again.
+// As hidden(), taking the farthest key of stale blocks again where it matters. A stale key
+// only lags behind (keys only grow nearer), so a stale block that hides still does, and one
+// that shows is taken again only once every fresh block hides: a large triangle would
+// otherwise scan most of the tile again.
 bool TileDepth::hidden_refreshing(const BlockRange& r, double nearest) {
+  std::uint64_t lagging = 0;
   for (int by = r.by0; by <= r.by1; ++by) {
     for (int bx = r.bx0; bx <= r.bx1; ++bx) {
       const int b = by * kBlocks + bx;
-      if (stale_ >> b & 1) refresh(b);
-      if (!(nearest < far_[b])) return false;
+      if (nearest < far_[b]) continue;
+      if (!(stale_ >> b & 1)) return false;
+      lagging |= std::uint64_t(1) << b;
     }
+  }
+  for (; lagging != 0; lagging &= lagging - 1) {
+    const int b = std::countr_zero(lagging);
+    refresh(b);
+    if (!(nearest < far_[b])) return false;
   }
   return true;
 }
 
 // Takes the farthest key of block \p b; background counts as -inf, farther than anything.
+// Column by column first, in selections the compiler turns into vector minima.
 void TileDepth::refresh(int b) {
   stale_ &= ~(std::uint64_t(1) << b);
-  const int bx = b % kBlocks, by = b / kBlocks;
-  double far = INFINITY;
-  for (int y = by * kBlock; y < std::min(h_, (by + 1) * kBlock); ++y) {
-    const double* row = key_ + y * w_;
-    for (int x = bx * kBlock; x < std::min(w_, (bx + 1) * kBlock); ++x) far = std::min(far, row[x]);
+  const int xa = b % kBlocks * kBlock, ya = b / kBlocks * kBlock;
+  const int columns = std::min(w_ - xa, kBlock), yb = std::min(h_, ya + kBlock);
+  double far[kBlock];
+  std::fill_n(far, kBlock, INFINITY);
+  for (int y = ya; y < yb; ++y) {
+    const double* row = key_ + y * w_ + xa;
+    if (columns == kBlock) {
+      for (int x = 0; x < kBlock; ++x) far[x] = row[x] < far[x] ? row[x] : far[x];
+    } else {
+      for (int x = 0; x < columns; ++x) far[x] = row[x] < far[x] ? row[x] : far[x];
+    }
   }
-  far_[b] = far;
+  far_[b] = *std::min_element(far, far + kBlock);
 }
 
 template <bool kFaces>
