@@ -11,6 +11,9 @@ endif()
 
 add_library(shadowkit_options INTERFACE)
 target_link_libraries(shadowkit_options INTERFACE shadowkit_warnings)
+# No code reads errno after a math function; without the flag std::sqrt keeps a branch to
+# set it, and no loop that takes a square root is vectorized.
+target_compile_options(shadowkit_options INTERFACE -fno-math-errno)
 if(CMAKE_BUILD_TYPE STREQUAL "Release")
   target_compile_options(shadowkit_options INTERFACE -march=x86-64-v2 -O3)
 endif()
