@@ -523,11 +523,6 @@ const KnownFailure kKnownFailures[] = {
      "boxes standing on it leaves stripes of the upper box lit where the lower boxes shadow "
      "it (1.1% at the automatic R, 3.6% at R 99, 3.2% with exact=0; 0 with the light 0.001 "
      "above or below the plane): the table misses pairs of the lower boxes, at any R"},
-    {"volume", nullptr, "coincident-boxes",
-     "volume: a point on one copy's face lies in the other copy's face plane, which bounds "
-     "that copy's volume; the plane test rounds either way, and lines of pixels across the "
-     "top face come out in shadow. The contract has them lit: a coincident face is not "
-     "strictly between the point and the light"},
     // With contour_planes=1, fewer planes, it agrees (0.000%).
     {"svbsp", "defaults", "sun-1e-7-off-the-camera-right-axis", kSvbspGrazingSun},
     {"svbsp", "paper=1", "sun-1e-7-off-the-camera-right-axis", kSvbspGrazingSun},

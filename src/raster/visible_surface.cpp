@@ -32,7 +32,7 @@ Vec3 VisibleSurfaceBuffer::ray(std::size_t i) const {
 
 Vec3 VisibleSurfaceBuffer::point(std::size_t i) const {
   const Vec3 eye = scene_->camera.position, dir = ray(i);
-  const Plane& plane = scene_->face_plane(face[i]);
+  const Plane& plane = this->plane(i);
   return eye + dir * (-plane.distance(eye) / dot(plane.normal, dir));
 }
 

@@ -43,13 +43,19 @@ inline std::uint8_t mask_value(const VisibleFrame& frame, std::uint32_t f, int t
 /// Whether the visible point of pixel (\p x, \p y), at depth key \p visible, lies beyond
 /// \p plane (on its positive side; the eye on its negative), whose key plane is \p key: a
 /// larger key than the visible one. Keys within the slack of each other fall back to the
-/// exact plane test on the visible point itself.
+/// exact plane test on the visible point itself. A point whose face lies in \p plane is not
+/// beyond it, whatever the rounding of its position: so a face of a coincident copy is on
+/// the boundary of the copy's volume, as a face is on its own.
 inline bool beyond_plane(const Plane& plane, const KeyPlane& key, const VisibleFrame& frame, int x,
                          int y, double visible) {
   const double k = key.at(x, y);
   if (k - key.slack > visible) return true;
   if (k + key.slack < visible) return false;
-  return plane.distance(frame.surfaces.point(frame.surfaces.index(x, y))) > 0;
+  const std::size_t i = frame.surfaces.index(x, y);
+  const Plane& seen = frame.surfaces.plane(i);
+  const bool same = seen.normal == plane.normal && seen.d == plane.d;
+  const bool opposite = seen.normal == -plane.normal && seen.d == -plane.d;
+  return !same && !opposite && plane.distance(frame.surfaces.point(i)) > 0;
 }
 
 /// \brief The faces a run of pixels shows: exactly lo and hi while it shows at most two,
