@@ -29,13 +29,9 @@ RasterProjection CubeMap::face_view(int face, Vec3 eye, int resolution, double n
 }
 
 void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution, const Context& ctx) {
-  light_position_ = light_position;
   const double near = near_plane_for(scene.bounds(), light_position);
   std::array<RasterProjection, kFaces> views;
-  for (int f = 0; f < kFaces; ++f) {
-    views[f] = face_view(f, light_position, resolution, near);
-    frames_[f] = AxisFrame(views[f]);
-  }
+  for (int f = 0; f < kFaces; ++f) views[f] = face_view(f, light_position, resolution, near);
   for (int f = 0; f < kFaces; ++f) faces_[f].render(scene, views[f], ctx);
 }
 

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstddef>
 
-#include "axis_frame.h"
 #include "depth_map.h"
 #include "shadowkit/core/context.h"
 #include "shadowkit/core/vec.h"
@@ -42,14 +41,6 @@ class CubeMap {
   void render(const Scene& scene, Vec3 light_position, int resolution, const Context& ctx);
 
   const DepthMap& face(int f) const { return faces_[f]; }
-  /// The face map that holds world point \p p, and \p p in its view (as its view's to_view).
-  const DepthMap& locate(Vec3 p, Vec3& v) const {
-    const Vec3 d = p - light_position_;
-    const int f = face_of(d);
-    v = frames_[f].to_view(d);
-    return faces_[f];
-  }
-
   std::size_t texel_count() const;
   std::size_t covered_texels() const;
   /// The maps' bytes.
@@ -57,8 +48,6 @@ class CubeMap {
 
  private:
   std::array<DepthMap, kFaces> faces_;
-  std::array<AxisFrame, kFaces> frames_;
-  Vec3 light_position_;
 };
 
 }  // namespace shadowkit::shadowmap

@@ -43,8 +43,8 @@ Ints clamped(Floats x, int n) {
 }  // namespace
 
 // The face of the dominant axis (CubeMap::face_of, ties to x, then y) and the view
-// coordinates in it (AxisFrame::to_view), by selection. Right is forward x up: +X sees (z, y),
-// -X (-z, y), +Y (x, z), -Y (-x, z), +Z (-x, y), -Z (x, y).
+// coordinates in it (RasterProjection::to_view of CubeMap::face_view), by selection. Right is
+// forward x up: +X sees (z, y), -X (-z, y), +Y (x, z), -Y (-x, z), +Z (-x, y), -Z (x, y).
 void cube_texels(const CubeMap& cube, const PointBatch& points, TexelBatch& out) {
   const DepthMap::TexelGrid grid = cube.face(0).texel_grid();
   for (std::size_t k = 0; k < points.size; k += kLanes) {
