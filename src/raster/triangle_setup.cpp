@@ -6,6 +6,7 @@
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 #include "shadowkit/core/error.h"
@@ -289,6 +290,31 @@ void setup_triangle(const Scene& scene, const RasterProjection& view,
   }
 }
 
+// The corners a run of triangles met last, by vertex: the triangles of a cluster share
+// vertices (a cube's twelve have eight), so most corners are computed once.
+class CornerCache {
+ public:
+  CornerCache(const RasterProjection& view, const std::array<ClipPlane, kClipPlanes>& planes,
+              const std::vector<Vec3>& positions)
+      : view_(view), planes_(planes), positions_(positions) {
+    vertex_.fill(std::numeric_limits<std::uint32_t>::max());
+  }
+  Corner operator()(std::uint32_t v) {
+    const std::size_t slot = v % kSlots;
+    if (vertex_[slot] != v)
+      vertex_[slot] = v, corner_[slot] = corner(view_, planes_, positions_[v]);
+    return corner_[slot];
+  }
+
+ private:
+  static constexpr std::size_t kSlots = 64;
+  const RasterProjection& view_;
+  const std::array<ClipPlane, kClipPlanes>& planes_;
+  const std::vector<Vec3>& positions_;
+  std::array<std::uint32_t, kSlots> vertex_;
+  std::array<Corner, kSlots> corner_;
+};
+
 // A triangle clipped by the five planes has at most eight corners: six triangles.
 constexpr std::size_t kChunkTriangles = ScreenTriangles::kChunkSize / 6;
 
@@ -347,12 +373,12 @@ ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view
   SHADOWKIT_CHECK(chunks.size() < (std::size_t(1) << (32 - ScreenTriangles::kPlaceBits)));
   tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
     TriangleBuilder builder(view, chunks[c]);
+    CornerCache corners(view, planes, list.positions);
     const std::size_t end = std::min(ids.size(), (c + 1) * kChunkTriangles);
     for (std::size_t i = c * kChunkTriangles; i < end; ++i) {
       const auto& tri = list.triangles[ids[i]];
-      setup_triangle(scene, view, planes, ids[i], corner(view, planes, list.positions[tri[0]]),
-                     corner(view, planes, list.positions[tri[1]]),
-                     corner(view, planes, list.positions[tri[2]]), builder);
+      setup_triangle(scene, view, planes, ids[i], corners(tri[0]), corners(tri[1]), corners(tri[2]),
+                     builder);
     }
   });
   return out;

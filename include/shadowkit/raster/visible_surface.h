@@ -33,6 +33,8 @@ class VisibleSurfaceBuffer {
   std::vector<std::uint32_t> object_ids() const;
   /// The visible point of covered pixel \p i: its pixel ray against its face plane.
   Vec3 point(std::size_t i) const;
+  /// The plane of the face seen at covered pixel \p i.
+  const Plane& plane(std::size_t i) const { return scene_->face_plane(face[i]); }
   /// The unnormalised contract ray f + x r + y u through the centre of pixel \p i.
   Vec3 ray(std::size_t i) const;
 
