@@ -214,10 +214,11 @@ def report(work, out, summary_path):
          "Every command uses every core (`--threads` not given)."))
     w(f"- **Build**: {meta['build']}.")
     w(f"- **Scenes**: every built-in scene and every example file but four: "
-      f"`examples/cubes-2000.json` and `examples/three-lights.json` are the built-in "
-      f"`cubes:2000` and `three-lights` at a smaller size, `examples/house.json` is the sun "
-      f"study's, and `examples/knot-600k.json` (576,000 triangles) is timed beside cube "
-      f"fields of up to 960,000 triangles in [scaling.md](scaling.md).")
+      f"`examples/cubes-2000.json` is the built-in `cubes:2000` itself, "
+      f"`examples/three-lights.json` the built-in `three-lights` at a smaller size, "
+      f"`examples/house.json` is the sun study's, and `examples/knot-600k.json` (576,000 "
+      f"triangles) is timed beside cube fields of up to 960,000 triangles in "
+      f"[scaling.md](scaling.md).")
     w(f"- **Resolution**: {size} on every scene. The built-in scenes are {size} already; the "
       f"example files (1280x720) run from copies whose camera is {size}, the same view.")
     w(f"- **Timing**: {passes} pass{'es' if passes > 1 else ''} over the scenes; in each, per "
