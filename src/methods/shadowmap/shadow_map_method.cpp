@@ -191,7 +191,7 @@ ShadowMapMethod::Receiver ShadowMapMethod::receiver_of(const Plane& plane, Vec3 
   // Contract condition 1: a surface is two-sided, lit only on the side the light is on.
   receiver.faces_light = faces_light(plane, eye, light_);
   receiver.eye_distance = plane.distance(eye);
-  receiver.bias = bias_of(plane);
+  if (receiver.faces_light) receiver.bias = bias_of(plane);
   return receiver;
 }
 
