@@ -358,7 +358,7 @@ class SceneBsp::Builder {
         } else {
           (sides.positive ? front : back).push_back(id);
         }
-      } else if (id == best || sides.on()) {
+      } else if (id == best || sides.on() || in_plane(pool_[id], draft.plane)) {
         draft.here.push_back(id);
       } else if (!sides.spanning()) {
         (sides.positive ? front : back).push_back(id);
@@ -368,6 +368,15 @@ class SceneBsp::Builder {
         front.push_back(add(std::move(pos)));
       }
     }
+  }
+
+  // Whether piece \p p's face lies in \p plane: its plane is that plane, either way round. The
+  // corners of a face that is planar only within the scene's tolerance lie off its own plane,
+  // and a coincident copy of it would otherwise be cut by it and shadowed by it.
+  bool in_plane(const ConvexPolygon& p, const Plane& plane) const {
+    const Plane& own = scene_.face_plane(p.face);
+    return (own.normal == plane.normal && own.d == plane.d) ||
+           (own.normal == -plane.normal && own.d == -plane.d);
   }
 
   std::uint32_t add(ConvexPolygon&& p) {

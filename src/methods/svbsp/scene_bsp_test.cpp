@@ -187,5 +187,23 @@ TEST(SceneBsp, CoincidentFacesMakeNoClusterAndComeTogether) {
   EXPECT_EQ(sizes, std::vector<std::size_t>{2});
 }
 
+TEST(SceneBsp, CopiesOfAFacePlanarOnlyWithinToleranceComeTogether) {
+  // A quad whose fourth corner lies 1e-6 off the plane of the other three is one face (planar
+  // within the scene's tolerance); its corners lie off its plane either way. Its coincident
+  // copy lies in that plane as much as it does: one node, not a copy cut by the other's plane
+  // and shadowed by it.
+  const Camera cam = testing::camera({0, 5, 9}, {0, 0, 0}, 64, 48);
+  const PolygonSoup quad = testing::polygon({{-1, 0, 1}, {1, 0, 1}, {1, 1e-6, -1}, {-1, 0, -1}});
+  const Scene scene = testing::make_scene(cam, {testing::point_light({0, 10, 0})}, {quad, quad});
+  for (const bool clusters : {false, true}) {
+    const SceneBsp bsp = SceneBsp::build(scene, nullptr, clusters);
+    std::vector<std::size_t> sizes;
+    bsp.front_to_back(Light::point({0, 10, 0}),
+                      [&](NodePieces node) { sizes.push_back(node.pieces.size()); });
+    EXPECT_EQ(sizes, std::vector<std::size_t>{2}) << "clusters " << clusters;
+    EXPECT_EQ(bsp.split_count(), 0u);
+  }
+}
+
 }  // namespace
 }  // namespace shadowkit::svbsp
