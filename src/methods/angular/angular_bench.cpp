@@ -31,6 +31,7 @@ void report(benchmark::State& state, const ShadowMethod& method) {
 void BM_TableConstruction(benchmark::State& state) {
   const Fixture& f = cube_field(int(state.range(0)));
   AngularMethod method({});
+  method.prepare(f.scene, {});
   for (auto _ : state) method.build(f.scene, 0, {});
   report(state, method);
   state.counters["polygons"] = double(f.scene.face_count());
