@@ -523,11 +523,6 @@ const KnownFailure kKnownFailures[] = {
     {"shadowmap", nullptr, "sweep/angular-resolution-grazing-light.json", kShadowmapAcne},
     {"shadowmap", nullptr, "sweep/angular-saturation-grazing-light.json", kShadowmapAcne},
     {"shadowmap", nullptr, "light-very-close-to-a-surface", kShadowmapAcne},
-    {"angular", nullptr, "sweep/angular-light-in-the-plane-of-box-bottoms.json",
-     "angular: a point light exactly in the plane of the ground and of the bottom faces of the "
-     "boxes standing on it leaves stripes of the upper box lit where the lower boxes shadow "
-     "it (1.1% at the automatic R, 3.6% at R 99, 3.2% with exact=0; 0 with the light 0.001 "
-     "above or below the plane): the table misses pairs of the lower boxes, at any R"},
     {"volume", nullptr, "coincident-boxes",
      "volume: a point on one copy's face lies in the other copy's face plane, which bounds "
      "that copy's volume; the plane test rounds either way, and lines of pixels across the "
