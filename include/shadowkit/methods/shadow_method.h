@@ -75,10 +75,11 @@ class ShadowMethod {
 };
 
 /// Within this many ulps of the magnitudes involved, a light lies in a face's plane
-/// (light_side). Hazard: a face's plane is computed from its corners in working coordinates,
-/// its point as their average and its normal as a sum of products, so a light given exactly
-/// in the face's plane in the scene file comes out a few ulps off it, on either side: the
-/// face would then face the light, or turn from it, by rounding alone.
+/// (light_side). Hazard: the light and a face's corners are moved to working coordinates,
+/// each coordinate rounded, and the face's plane is computed from its corners, its point as
+/// their average and its normal as a sum of products; so a light given exactly in the face's
+/// plane in the scene file comes out a few ulps off it, on either side: the face would then
+/// face the light, or turn from it, by rounding alone.
 inline constexpr double kInPlaneUlps = 64;
 
 /// Which side of \p plane the light is on: the signed distance of a point light, or
