@@ -141,6 +141,7 @@ const std::vector<SceneEntry>& scene_catalog() {
           "angular-light-inside-touching-boxes.json", "angular-low-sun-along-a-torus.json",
           "angular-open-box-face-steep-to-the-light.json", "angular-prism-on-a-large-ground.json",
           "angular-resolution-grazing-light.json", "angular-saturation-grazing-light.json",
+          "light-in-the-plane-of-a-ground-of-triangles.json",
           "raytrace-light-in-ceiling-plane.json", "volume-light-inside-box.json"}) {
       c.push_back({std::string("sweep/") + file, [file] { return sweep(file); }});
     }
@@ -424,6 +425,10 @@ const SceneTolerances kTolerances[] = {
     {"sweep/angular-prism-on-a-large-ground.json",  0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-resolution-grazing-light.json", 0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-saturation-grazing-light.json", 0,      kExact, kExact, kAngular, kVoxelBand},
+    // A point light in the ground's plane, which in working coordinates lies a rounding
+    // off the plane of the ground's triangles: the ground fails condition 1 in every method.
+    {"sweep/light-in-the-plane-of-a-ground-of-triangles.json",
+                                                    0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/raytrace-light-in-ceiling-plane.json",  0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/volume-light-inside-box.json",          0,      kExact, kExact, kAngular, kVoxelBand},
     // -- degenerate cases
@@ -518,11 +523,6 @@ const KnownFailure kKnownFailures[] = {
     {"shadowmap", nullptr, "sweep/angular-resolution-grazing-light.json", kShadowmapAcne},
     {"shadowmap", nullptr, "sweep/angular-saturation-grazing-light.json", kShadowmapAcne},
     {"shadowmap", nullptr, "light-very-close-to-a-surface", kShadowmapAcne},
-    {"angular", nullptr, "sweep/angular-light-in-the-plane-of-box-bottoms.json",
-     "angular: a point light exactly in the plane of the ground and of the bottom faces of the "
-     "boxes standing on it leaves stripes of the upper box lit where the lower boxes shadow "
-     "it (1.1% at the automatic R, 3.6% at R 99, 3.2% with exact=0; 0 with the light 0.001 "
-     "above or below the plane): the table misses pairs of the lower boxes, at any R"},
     // With contour_planes=1, fewer planes, it agrees (0.000%).
     {"svbsp", "defaults", "sun-1e-7-off-the-camera-right-axis", kSvbspGrazingSun},
     {"svbsp", "paper=1", "sun-1e-7-off-the-camera-right-axis", kSvbspGrazingSun},

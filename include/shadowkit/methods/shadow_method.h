@@ -1,8 +1,10 @@
 #pragma once
 /// \brief The one interface every shadow method implements, and what they share.
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -72,11 +74,24 @@ class ShadowMethod {
   virtual MethodCounters counters() const { return {}; }
 };
 
+/// Within this many ulps of the magnitudes involved, a light lies in a face's plane
+/// (light_side). Hazard: the light and a face's corners are moved to working coordinates,
+/// each coordinate rounded, and the face's plane is computed from its corners, its point as
+/// their average and its normal as a sum of products; so a light given exactly in the face's
+/// plane in the scene file comes out a few ulps off it, on either side: the face would then
+/// face the light, or turn from it, by rounding alone.
+inline constexpr double kInPlaneUlps = 64;
+
 /// Which side of \p plane the light is on: the signed distance of a point light, or
-/// -dot(n, direction) for a directional one; 0 when the light lies in the plane.
+/// -dot(n, direction) for a directional one; 0 when the light lies in the plane, to within
+/// kInPlaneUlps of the rounding of that distance (of the light's coordinates and the plane's
+/// offset; of the unit vectors for a directional light).
 inline double light_side(const Plane& plane, const Light& light) {
-  return light.type == Light::Type::point ? plane.distance(light.position)
-                                          : -dot(plane.normal, light.direction);
+  const bool point = light.type == Light::Type::point;
+  const double side = point ? plane.distance(light.position) : -dot(plane.normal, light.direction);
+  const double magnitude = point ? max_abs_component(light.position) + std::abs(plane.d) : 1.0;
+  const double rounding = kInPlaneUlps * std::numeric_limits<double>::epsilon() * magnitude;
+  return std::abs(side) <= rounding ? 0.0 : side;
 }
 
 /// Condition 1 of the contract: the camera at \p eye and the light are strictly on the same

@@ -203,7 +203,8 @@ void find_loops(const Mesh& mesh, const FarSheets& sheets, const LightFrame& fra
   for (const RidgeEdge& re : o.ridges) {
     double a = o.theta[re.from], b = o.theta[re.to];
     if (a > b) std::swap(a, b);
-    o.wraps = o.wraps || (frame.point_light() && b - a > kPi);
+    // Half a turn may pass behind the light too (kHalfTurnTolerance).
+    o.wraps = o.wraps || (frame.point_light() && (b - a > kPi || half_a_turn(a, b)));
     o.theta_lo = std::min(o.theta_lo, a);
     o.theta_hi = std::max(o.theta_hi, b);
   }

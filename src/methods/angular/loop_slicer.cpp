@@ -10,6 +10,12 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// Hazard: an edge through the light's X axis (kHalfTurnTolerance) crosses every slice on the
+// axis. The light frame's rotation and the crossing's interpolation each round by a few ulps
+// of the ends' coordinates, so the crossing lands a rounding to either side of the axis,
+// differently in each slice. Within this many ulps it lies on the axis.
+constexpr double kAxisUlps = 64;
+
 // Mesh edge e's ends in the light frame and their sides of one slice, each computed once per
 // edge and slice.
 struct EdgeSides {
@@ -26,9 +32,11 @@ struct EdgeSides {
     Crossing c;
     c.p = a + (b - a) * (ga / (ga - gb));
     c.rho = s.rho(c.p);
-    // On the light's X axis: the half-plane's edge, whose phi is +-inf by the sign of X
-    // (tan(phi) = X / rho with rho >= 0), never a rounded -0's opposite.
-    if (c.rho == 0) c.rho = +0.0;
+    // On the light's X axis (kAxisUlps): the half-plane's edge, whose phi is +-inf by the
+    // sign of X (tan(phi) = X / rho with rho >= 0), never a rounded -0's opposite.
+    const double axis = kAxisUlps * std::numeric_limits<double>::epsilon() *
+                        std::max(max_abs_component(a), max_abs_component(b));
+    if (std::abs(c.rho) <= axis) c.rho = +0.0;
     c.phi = s.phi(c.p, c.rho);
     c.edge = e;
     return c;
@@ -37,13 +45,14 @@ struct EdgeSides {
 
 // Where ridge edge \p re, whose ends \p sides holds, goes up through slice \p s into the
 // half-plane at its theta: a walk's start. False when it does not (the half-plane at
-// theta + pi is another entry's).
+// theta + pi is another entry's). On the light's X axis it goes up into this half-plane and
+// down out of the other: the walk starts at phi = +-inf.
 bool walk_start(const RidgeEdge& re, const MeshEdge& edge, const EdgeSides& sides,
                 const ThetaSlice& s, Crossing& at) {
   const bool from_below = (re.from == edge.v0 ? sides.ga : sides.gb) < 0;
   if (!(from_below && sides.crossed())) return false;
   at = sides.crossing(s, re.edge);
-  return at.rho > 0;
+  return at.rho >= 0;
 }
 
 // The crossings of face f's edges by the slice, ordered along the cut line.
@@ -234,6 +243,18 @@ void slice_ridge_edge(const SlicedMesh& m, const RidgeEdge& re, double lo, doubl
   }
 }
 
+// Slices ridge edge \p re over the unwrapped theta interval [lo, hi], hi < lo + 2 pi. A
+// table cut to the view lies within [-pi, pi]: the part from pi on is its start, a turn lower.
+void slice_arc(const SlicedMesh& m, const RidgeEdge& re, double lo, double hi,
+               const ThetaQuantization& q, std::span<const ThetaSlice> slices,
+               SliceScratch& scratch, std::vector<EntryPair>& out) {
+  slice_ridge_edge(m, re, lo, hi, q, slices, scratch, out);
+  if (!q.full_turn && hi >= std::numbers::pi) {
+    slice_ridge_edge(m, re, lo - 2 * std::numbers::pi, hi - 2 * std::numbers::pi, q, slices,
+                     scratch, out);
+  }
+}
+
 }  // namespace
 
 Crossing edge_crossing(const SlicedMesh& m, const ThetaSlice& s, std::uint32_t e) {
@@ -272,23 +293,26 @@ void slice_loop(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const Ri
   const bool point = slices[0].point_light;
   for (const std::uint32_t i : loop.edges) {
     const RidgeEdge& re = ridges[i];
-    double lo = m.theta[re.from], hi = m.theta[re.to];
-    const bool wraps = point && std::abs(hi - lo) > std::numbers::pi;  // behind the light
+    const double from = m.theta[re.from], to = m.theta[re.to];
+    const double lo = std::min(from, to), hi = std::max(from, to);
+    // Through the light's X axis (kHalfTurnTolerance): up through one half, either one.
+    if (point && half_a_turn(lo, hi)) {
+      slice_arc(m, re, lo, hi, q, slices, scratch, out);
+      slice_arc(m, re, hi, lo + 2 * std::numbers::pi, q, slices, scratch, out);
+      continue;
+    }
+    const bool wraps = point && hi - lo > std::numbers::pi;  // behind the light
     // Direction constraint (RE-loops paper, Sec. 3.2): seen from the light, every far sheet
     // lies to the right of its REs (larger phi), so shadow begins where an RE goes up
     // through a slice and ends where one comes down, the begin's partner. An RE clearly
     // going down begins nothing; near-constant theta is left to the side test.
-    if ((hi - lo) * (wraps ? -1 : 1) < -1e-9) continue;
-    if (lo > hi) std::swap(lo, hi);
-    if (!wraps) {
-      slice_ridge_edge(m, re, lo, hi, q, slices, scratch, out);
-      continue;
+    if ((to - from) * (wraps ? -1 : 1) < -1e-9) continue;
+    // Unwrapped, a wrapping RE runs from hi up past pi to lo + 2 pi.
+    if (wraps) {
+      slice_arc(m, re, hi, lo + 2 * std::numbers::pi, q, slices, scratch, out);
+    } else {
+      slice_arc(m, re, lo, hi, q, slices, scratch, out);
     }
-    // Unwrapped, it runs from hi up past pi to lo + 2 pi. A table cut to the view lies
-    // within [-pi, pi]: the part past pi is its start, a turn lower.
-    slice_ridge_edge(m, re, hi, lo + 2 * std::numbers::pi, q, slices, scratch, out);
-    if (!q.full_turn)
-      slice_ridge_edge(m, re, hi - 2 * std::numbers::pi, lo, q, slices, scratch, out);
   }
 }
 

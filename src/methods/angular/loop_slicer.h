@@ -3,6 +3,7 @@
 // 1.3-1.6; RE-loops paper, Secs. 3.2-3.3).
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <span>
 #include <utility>
 #include <vector>
@@ -78,6 +79,18 @@ struct SlicedMesh {
   std::span<const double> theta;             ///< per vertex on an RE: its theta (eq. 2)
   std::span<const std::uint32_t> hidden_id;  ///< per face: its AngularTable::hidden() index
 };
+
+/// Hazard: an edge in a plane through a point light that holds the light's X axis (an edge of
+/// a face edge-on to the light, such as a bottom face whose plane holds the light) runs half a
+/// turn in theta, one way round or the other as rounding decides. Within this of half a turn
+/// an edge may run either way.
+inline constexpr double kHalfTurnTolerance = 1e-9;
+
+/// An edge whose ends' theta about a point light are \p lo <= \p hi runs within
+/// kHalfTurnTolerance of half a turn.
+inline bool half_a_turn(double lo, double hi) {
+  return std::abs(hi - lo - std::numbers::pi) <= kHalfTurnTolerance;
+}
 
 /// \brief Sec. 7, steps 1.5-1.6 for one RE loop. At every entry an edge of the loop crosses
 /// where shadow begins (the loop's far sheet lies towards larger phi: the direction
