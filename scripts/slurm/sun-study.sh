@@ -5,8 +5,10 @@ set -euo pipefail
 
 usage() {
   cat <<'EOF'
-usage: sun-study.sh --shards N --out DIR [OPTIONS] SCENE --lat DEG --lon DEG --utc-offset HOURS
+usage: sun-study.sh --shards N --out DIR [OPTIONS] SCENE [--lat DEG --lon DEG --utc-offset HOURS]
                     --from T --to T --step MINUTES [other sun-study options]
+
+--lat, --lon and --utc-offset may be left out when the scene file has a site.
 
 Submits `shadowkit sun-study ... --shard I/N --out DIR/shard-I` as a job array of N tasks
 (sbatch --array=0-(N-1)), then `shadowkit sun-study-merge DIR/shard-0 ... --out DIR` as a job
@@ -123,7 +125,7 @@ whole() {
 whole --shards "$shards"
 shards=$((10#$shards))
 [[ -n $out ]] || die "give --out DIR (try --help)"
-((${#study[@]})) || die "give the sun-study arguments: SCENE --lat ... (try --help)"
+((${#study[@]})) || die "give the sun-study arguments: SCENE --from ... (try --help)"
 for arg in "${study[@]}"; do
   [[ $arg == --out || $arg == --out=* ]] && die "give --out once, as this script's option"
 done

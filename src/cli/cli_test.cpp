@@ -300,6 +300,18 @@ TEST_F(Cli, SunStudyShardsMergeIntoOneRunsFiles) {
                    "shard");
 }
 
+// The help says what SCENE may be, and sun-study's does not offer the --set it refuses.
+TEST_F(Cli, HelpNamesMeshFilesAndSunStudyHidesSet) {
+  const Result render = run("render --help");
+  ASSERT_EQ(render.status, 0) << render.err;
+  EXPECT_THAT(render.out, HasSubstr("scene file, mesh file or built-in scene"));
+  EXPECT_THAT(render.out, HasSubstr("--set"));
+  const Result study = run("sun-study --help");
+  ASSERT_EQ(study.status, 0) << study.err;
+  EXPECT_THAT(study.out, HasSubstr("scene file, mesh file or built-in scene"));
+  EXPECT_THAT(study.out, ::testing::Not(HasSubstr("--set")));
+}
+
 TEST_F(Cli, SunStudyBadOptionsExitWith2NamingTheOption) {
   const std::string out = " --out " + (dir_ / "out").string();
   auto study = [&](const std::string& lat, const std::string& from, const std::string& to,

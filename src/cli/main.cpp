@@ -22,14 +22,16 @@ struct Shared {
   std::vector<std::string> settings;
 };
 
-void add_shared(CLI::App* cmd, CommandOptions& options, Shared& shared) {
+// Returns the --set option, so that a command that refuses settings can hide it.
+CLI::Option* add_shared(CLI::App* cmd, CommandOptions& options, Shared& shared) {
   std::string scenes;
   for (const std::string& s : builtin_scene_names()) scenes += (scenes.empty() ? "" : ", ") + s;
-  cmd->add_option("SCENE", options.scene, "scene file, or a built-in scene: " + scenes)->required();
+  cmd->add_option("SCENE", options.scene, "scene file, mesh file or built-in scene: " + scenes)
+      ->required();
   cmd->add_option("--threads", shared.threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
-  cmd->add_option("--set", shared.settings,
-                  "method setting METHOD.KEY=VALUE, e.g. shadowmap.resolution=4096");
+  return cmd->add_option("--set", shared.settings,
+                         "method setting METHOD.KEY=VALUE, e.g. shadowmap.resolution=4096");
 }
 
 std::vector<std::string> split_list(const std::string& s) {
@@ -107,7 +109,8 @@ int main(int argc, char** argv) {
       "sun-study",
       "the sunlit fraction of every polygon at each time step, and its sun hours "
       "(the sun-study contract)");
-  add_shared(sun_study_cmd, sun_study, shared);
+  // sun-study refuses --set (run_sun_study says why), so its help does not list it.
+  add_shared(sun_study_cmd, sun_study, shared)->group("");
   // The site's options stand in place of the scene file's site keys, so each is required
   // only when the scene has no site (run_sun_study says which is missing).
   sun_study_cmd->add_option("--lat", sun_study.latitude_deg,
