@@ -38,7 +38,6 @@ namespace {
 
 // Tolerances are relative to the mesh's size so that tiny and huge models behave alike.
 constexpr double kWeldTolerance = 1e-9;    // of the bounding-box diagonal
-constexpr double kPlanarTolerance = 1e-5;  // of the face's own diameter
 constexpr double kDegenerateArea = 1e-14;  // of the face's squared diameter
 
 struct CellKey {

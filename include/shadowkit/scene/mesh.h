@@ -10,6 +10,11 @@
 
 namespace shadowkit {
 
+/// A face stays whole while every corner lies within this of its own diameter from its plane;
+/// a face less planar is split into triangles. So a face's corners may lie off its plane by
+/// this much, far more than the methods' plane tolerances.
+inline constexpr double kPlanarTolerance = 1e-5;
+
 /// \brief Polygons as a file gives them: positions and, per face, a list of vertex indices
 /// (compressed rows: face f uses indices[face_start[f] .. face_start[f+1])).
 struct PolygonSoup {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -12,6 +13,7 @@
 
 #include "convex_solids.h"
 #include "shadowkit/methods/shadow_method.h"
+#include "shadowkit/scene/mesh.h"
 #include "shadowkit/scene/triangulate.h"
 
 namespace shadowkit::svbsp {
@@ -160,7 +162,11 @@ class SceneBsp::Builder {
  public:
   Builder(const Scene& scene, double eps, std::vector<ConvexPolygon> inputs,
           const ConvexSolids* solids, bool clusters)
-      : scene_(scene), eps_(eps), clusters_(clusters), pool_(inputs.begin(), inputs.end()) {
+      : scene_(scene),
+        eps_(eps),
+        planar_reach_(kPlanarTolerance * std::max(1.0, scene.bounds().diagonal())),
+        clusters_(clusters),
+        pool_(inputs.begin(), inputs.end()) {
     if (solids) solids_.resize(solids->size());
     for (std::uint32_t id = 0; id < pool_.size(); ++id) {
       const std::int32_t s = solids ? solids->solid_of(pool_[id].face) : -1;
@@ -374,6 +380,10 @@ class SceneBsp::Builder {
   // corners of a face that is planar only within the scene's tolerance lie off its own plane,
   // and a coincident copy of it would otherwise be cut by it and shadowed by it.
   bool in_plane(const ConvexPolygon& p, const Plane& plane) const {
+    // Most pieces lie far from the plane: their corners tell without the face's plane.
+    for (const Vec3& v : p.vertices) {
+      if (std::abs(plane.distance(v)) > planar_reach_) return false;
+    }
     const Plane& own = scene_.face_plane(p.face);
     return (own.normal == plane.normal && own.d == plane.d) ||
            (own.normal == -plane.normal && own.d == -plane.d);
@@ -385,6 +395,7 @@ class SceneBsp::Builder {
 
   const Scene& scene_;
   double eps_;
+  double planar_reach_;  ///< how far a face's corners may lie off its plane (kPlanarTolerance)
   bool clusters_;
   tbb::concurrent_vector<ConvexPolygon> pool_;
   std::vector<Solid> solids_;
