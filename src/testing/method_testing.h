@@ -1,6 +1,9 @@
 #pragma once
 // Running a method in a test: one light's mask, its counters, its mismatch with raytrace.
 #include <algorithm>
+#include <functional>
+#include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -8,6 +11,7 @@
 #include "shadowkit/methods/registry.h"
 #include "shadowkit/methods/shadow_method.h"
 #include "shadowkit/scene/scene_file.h"
+#include "testing/test_scenes.h"
 
 namespace shadowkit::testing {
 
@@ -34,6 +38,38 @@ inline ShadowMask method_mask(ShadowMethod& method, const Scene& scene,
                               const VisibleSurfaceBuffer& vsb, std::size_t light) {
   method.prepare(scene, {});
   return light_mask(method, scene, vsb, light);
+}
+
+/// \brief What a coincident copy changes in a method's masks (coincident_copy_difference).
+struct CopyDifference {
+  int differ = 0;   ///< pixels whose mask differs, over both lights
+  int lit_box = 0;  ///< lit pixels of the box alone, under the light that lights fewer
+};
+
+/// \p box on a ground, alone and with a second copy at the same spot, each copy's faces in the
+/// other's planes, under a point and a directional light: the masks of the method that
+/// \p make gives should be the same, since a coincident face is not strictly between a point
+/// and the light.
+inline CopyDifference coincident_copy_difference(
+    const std::function<std::unique_ptr<ShadowMethod>()>& make, const PolygonSoup& box) {
+  const Camera cam = camera({4, 6, 7}, {0, 0.5, 0}, 320, 240);
+  const PolygonSoup ground = horizontal_quad(-10, 10, -10, 10, 0);
+  CopyDifference out{0, std::numeric_limits<int>::max()};
+  for (const Light& light : {point_light({-2, 5, 3}), directional_light({0.4, -1, -0.3})}) {
+    const Scene one = make_scene(cam, {light}, {ground, box});
+    const Scene two = make_scene(cam, {light}, {ground, box, box});
+    const VisibleSurfaceBuffer vsb_one = render_visible_surfaces(one, {});
+    const VisibleSurfaceBuffer vsb_two = render_visible_surfaces(two, {});
+    const ShadowMask mask_one = method_mask(*make(), one, vsb_one, 0);
+    const ShadowMask mask_two = method_mask(*make(), two, vsb_two, 0);
+    int lit_box = 0;
+    for (std::size_t i = 0; i < mask_one.size(); ++i) {
+      out.differ += mask_one.pixels[i] != mask_two.pixels[i];
+      lit_box += vsb_one.object(i) == 1 && mask_one.pixels[i] == kMaskLit;
+    }
+    out.lit_box = std::min(out.lit_box, lit_box);
+  }
+  return out;
 }
 
 /// A counter of \p method by name, or -1.
