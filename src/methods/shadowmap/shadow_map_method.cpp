@@ -112,6 +112,7 @@ struct ShadowMapMethod::TileRow {
   PointBatch points;
   TexelBatch texels;
   std::array<std::size_t, PointBatch::kSize> pixel;
+  std::array<const float*, PointBatch::kSize> stored;  ///< each point's texel
 };
 
 // What the camera pass knows of the receiving face of the last pixel, kept while a run of
@@ -168,16 +169,22 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
                   receiver.bias, r.points);
       }
       locate(r.points, r.texels);
-      for (std::size_t k = 0; k < r.points.size; ++k) __builtin_prefetch(&stored(r.texels, k));
+      for (std::size_t k = 0; k < r.points.size; ++k) {
+        r.stored[k] = &stored(r.texels, k);
+        __builtin_prefetch(r.stored[k]);
+      }
     };
-    // Rows in a pipeline: a row's texels load while the next row is set up.
-    std::array<TileRow, 2> rows;
+    // Rows in a pipeline: a row's texels load while the next row is set up. The thread's own,
+    // made once (a frame has thousands of tiles): the body starts no parallel work, so no
+    // other tile takes them meanwhile.
+    thread_local std::array<TileRow, 2> rows;
     for (int y = y0; y <= y1; ++y) {
       if (y < y1) set_up(y, rows[y % 2]);
       if (y == y0) continue;
       const TileRow& r = rows[(y - 1) % 2];
       for (std::size_t k = 0; k < r.points.size; ++k) {
-        mask.pixels[r.pixel[k]] = lit(r.texels, k) ? kMaskLit : kMaskShadow;
+        const bool lit_k = pcf_ == 1 ? r.texels.depth[k] <= *r.stored[k] : lit(r.texels, k);
+        mask.pixels[r.pixel[k]] = lit_k ? kMaskLit : kMaskShadow;
       }
     }
   });
