@@ -510,11 +510,6 @@ constexpr const char* kShadowmapAcne =
     "shadowmap: acne on receivers the light grazes past the slope cap; a finer map does not "
     "mend it (Williams's self-shadowing, docs/methods/shadowmap.md)";
 
-constexpr const char* kSvbspGrazingSun =
-    "svbsp: under a sun 3.4e-8 rad above the horizon the shadow planes of the tetrahedra's "
-    "edges meet the ground at that angle, and the plane tolerance relative to the scene's "
-    "reach cuts slivers of lit ground into shadow";
-
 const KnownFailure kKnownFailures[] = {
     {"shadowmap", nullptr, "sweep/angular-grazing-light-far-shadow.json", kShadowmapAcne},
     {"shadowmap", nullptr, "sweep/angular-knot-shadow-under-a-light-on-the-ground.json",
@@ -523,9 +518,6 @@ const KnownFailure kKnownFailures[] = {
     {"shadowmap", nullptr, "sweep/angular-resolution-grazing-light.json", kShadowmapAcne},
     {"shadowmap", nullptr, "sweep/angular-saturation-grazing-light.json", kShadowmapAcne},
     {"shadowmap", nullptr, "light-very-close-to-a-surface", kShadowmapAcne},
-    // With contour_planes=1, fewer planes, it agrees (0.000%).
-    {"svbsp", "defaults", "sun-1e-7-off-the-camera-right-axis", kSvbspGrazingSun},
-    {"svbsp", "paper=1", "sun-1e-7-off-the-camera-right-axis", kSvbspGrazingSun},
     {"voxel", "resolution=64,test=topology", "light-at-a-box-corner",
      "voxel: with the point light exactly on the box's corner, a wedge of the lit ground in "
      "front of the box comes out in shadow at M = 64 (a quarter of the interior). At M = 128 "

@@ -74,4 +74,9 @@ struct Plane {
   double distance(Vec3 p) const { return dot(normal, p) + d; }
 };
 
+/// Whether two planes are the same set of points: equal bit for bit, either way round.
+inline bool same_plane(const Plane& a, const Plane& b) {
+  return (a.normal == b.normal && a.d == b.d) || (a.normal == -b.normal && a.d == -b.d);
+}
+
 }  // namespace shadowkit

@@ -1,6 +1,7 @@
 #include "convex_polygon.h"
 
 #include <cmath>
+#include <optional>
 #include <tuple>
 
 namespace shadowkit::svbsp {
@@ -17,12 +18,15 @@ Vec3 crossing(Vec3 a, double da, Vec3 b, double db) {
 }
 
 // Sutherland-Hodgman for one side s (+1 or -1), keeping the per-edge flags: each emitted
-// vertex carries the flag of the edge that leaves it.
+// vertex carries the flag of the edge that leaves it. With \p mark, an emitted edge along the
+// plane (an edge with both ends on it, or the cut) is flagged when both its ends lie within
+// \p *mark of it.
 void clip_side(const ConvexPolygon& p, std::span<const double> d, std::span<const int> side, int s,
-               bool mark, ConvexPolygon& out) {
+               std::optional<double> mark, ConvexPolygon& out) {
   out.vertices.clear();
   out.edge_in_tree.clear();
   out.face = p.face;
+  absl::InlinedVector<bool, 8> along, exact;  // per emitted edge; per emitted vertex
   const std::size_t n = p.vertices.size();
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t j = (i + 1) % n;
@@ -30,23 +34,31 @@ void clip_side(const ConvexPolygon& p, std::span<const double> d, std::span<cons
     const bool flag = p.edge_in_tree[i];
     if (sa >= 0) {
       out.vertices.push_back(p.vertices[i]);
-      // Kept edge: in the plane if both ends are on it. Leaving edge from an on-vertex: the
-      // next vertex emitted is on the plane too, so that edge is the cut.
-      const bool in_plane = sa == 0 && sb == 0;
-      out.edge_in_tree.push_back(sb >= 0 ? (flag || (mark && in_plane)) : (sa == 0 ? mark : flag));
+      exact.push_back(mark && std::abs(d[i]) <= *mark);
+      // Kept edge: its own flag, along the plane if both ends are on it. Leaving edge from an
+      // on-vertex: the next vertex emitted is on the plane too, so that edge is the cut.
+      out.edge_in_tree.push_back(sb >= 0 || sa != 0 ? flag : 0);
+      along.push_back(sa == 0 && sb <= 0);
     }
     if (sa * sb < 0) {
       out.vertices.push_back(crossing(p.vertices[i], d[i], p.vertices[j], d[j]));
-      out.edge_in_tree.push_back(sb > 0 ? flag : mark);
+      exact.push_back(true);
+      out.edge_in_tree.push_back(sb > 0 ? flag : 0);
+      along.push_back(sb < 0);
     }
+  }
+  if (!mark) return;
+  const std::size_t m = out.vertices.size();
+  for (std::size_t k = 0; k < m; ++k) {
+    if (along[k] && exact[k] && exact[(k + 1) % m]) out.edge_in_tree[k] = 1;
   }
 }
 
-// Flags the edges of \p p whose ends are both on the plane (side 0).
-void mark_on_edges(ConvexPolygon& p, std::span<const int> side) {
+// Flags the edges of \p p whose ends both lie within \p within of the plane.
+void mark_on_edges(ConvexPolygon& p, std::span<const double> d, double within) {
   const std::size_t n = p.vertices.size();
   for (std::size_t i = 0; i < n; ++i) {
-    if (side[i] == 0 && side[(i + 1) % n] == 0) p.edge_in_tree[i] = 1;
+    if (std::abs(d[i]) <= within && std::abs(d[(i + 1) % n]) <= within) p.edge_in_tree[i] = 1;
   }
 }
 
@@ -81,19 +93,20 @@ double area(const ConvexPolygon& p) {
   return 0.5 * length(sum);
 }
 
-void mark_edges_in_plane(ConvexPolygon& p, const Plane& plane, double eps) {
+void mark_edges_in_plane(ConvexPolygon& p, const Plane& plane, double eps, double within) {
   const std::size_t n = p.vertices.size();
-  absl::InlinedVector<int, 8> side(n);
+  absl::InlinedVector<double, 8> d(n);
   bool off = false;
   for (std::size_t i = 0; i < n; ++i) {
-    side[i] = side_of(plane.distance(p.vertices[i]), eps);
-    off = off || side[i] != 0;
+    d[i] = plane.distance(p.vertices[i]);
+    off = off || side_of(d[i], eps) != 0;
   }
-  if (off) mark_on_edges(p, side);
+  if (off) mark_on_edges(p, d, within);
 }
 
-void split_polygon(const ConvexPolygon& p, const Plane& plane, double eps, bool mark_edges,
-                   ConvexPolygon& negative, ConvexPolygon& positive) {
+void split_polygon(const ConvexPolygon& p, const Plane& plane, double eps,
+                   std::optional<double> mark_within, ConvexPolygon& negative,
+                   ConvexPolygon& positive) {
   const std::size_t n = p.vertices.size();
   absl::InlinedVector<double, 8> d(n);
   absl::InlinedVector<int, 8> side(n);
@@ -108,11 +121,12 @@ void split_polygon(const ConvexPolygon& p, const Plane& plane, double eps, bool 
   negative.vertices.clear();
   positive.vertices.clear();
   // A sliver within eps of the plane has no edge that bounds the cell: mark nothing.
-  const bool mark = mark_edges && (any_negative || any_positive);
+  const std::optional<double> mark =
+      any_negative || any_positive ? mark_within : std::optional<double>();
   if (!any_negative || !any_positive) {  // one side: the polygon whole, its edges on the plane
     ConvexPolygon& out = any_negative ? negative : positive;
     out = p;
-    if (mark && any_on) mark_on_edges(out, side);
+    if (mark && any_on) mark_on_edges(out, d, *mark);
     return;
   }
   clip_side(p, d, side, -1, mark, negative);

@@ -4,6 +4,7 @@
 #include <absl/container/inlined_vector.h>
 
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "shadowkit/core/vec.h"
@@ -49,6 +50,12 @@ struct PlaneSides {
   bool spanning() const { return negative && positive; }
 };
 
+/// The share of a plane tolerance eps within which a point lies in the plane itself, to the
+/// rounding of its distance. A point within eps but beyond that is only near the plane, and
+/// a grazing light's shadow plane may meet a receiver at so small an angle that eps spans a
+/// wide strip of it.
+inline constexpr double kInPlaneShare = 1e-4;
+
 /// Where \p p lies against \p plane with tolerance \p eps (one tolerance everywhere, §7).
 /// Inline: the trees' inner loops call it at every node, and a call returning the three
 /// flags through memory stalls them.
@@ -63,19 +70,22 @@ inline PlaneSides classify(const ConvexPolygon& p, const Plane& plane, double ep
   return s;
 }
 
-/// What split_polygon() makes of \p p when it lies on one side of \p plane, in place: edges
-/// with both ends within \p eps of the plane are flagged edge_in_tree (unless every vertex
-/// is: a sliver in the plane bounds nothing). Filtering a polygon that only touches a plane
-/// needs no copy (§6: its edges along the plane add no plane of their own).
-void mark_edges_in_plane(ConvexPolygon& p, const Plane& plane, double eps);
+/// What split_polygon() makes of \p p when it lies on one side of \p plane (tolerance
+/// \p eps), in place: edges with both ends within \p within of the plane are flagged
+/// edge_in_tree (unless every vertex is within eps: a sliver in the plane bounds nothing).
+/// Filtering a polygon that only touches a plane needs no copy (§6: its edges along the plane
+/// add no plane of their own).
+void mark_edges_in_plane(ConvexPolygon& p, const Plane& plane, double eps, double within);
 
 /// splitPolygon of Fig. 4: the parts of \p p on the negative and the positive side of
 /// \p plane. A polygon on one side (or wholly within eps of the plane: positive) is copied
-/// to that side only; the other output is left empty. Where \p mark_edges, edges that end up
-/// lying in the plane (the cut and edges with both ends on it) are flagged edge_in_tree.
-/// Cut points are computed from the edge's end points in a canonical order, so the two
-/// polygons sharing an edge are cut at bit-identical points (no cracks, §7).
-void split_polygon(const ConvexPolygon& p, const Plane& plane, double eps, bool mark_edges,
-                   ConvexPolygon& negative, ConvexPolygon& positive);
+/// to that side only; the other output is left empty. With \p mark_within, edges that end up
+/// along the plane (the cut and edges with both ends on it) are flagged edge_in_tree when
+/// both their ends lie within *mark_within of it. Cut points are computed from the edge's end
+/// points in a canonical order, so the two polygons sharing an edge are cut at bit-identical
+/// points (no cracks, §7).
+void split_polygon(const ConvexPolygon& p, const Plane& plane, double eps,
+                   std::optional<double> mark_within, ConvexPolygon& negative,
+                   ConvexPolygon& positive);
 
 }  // namespace shadowkit::svbsp

@@ -369,7 +369,7 @@ class SceneBsp::Builder {
       } else if (!sides.spanning()) {
         (sides.positive ? front : back).push_back(id);
       } else {
-        split_polygon(pool_[id], draft.plane, eps_, false, neg, pos);
+        split_polygon(pool_[id], draft.plane, eps_, std::nullopt, neg, pos);
         back.push_back(add(std::move(neg)));
         front.push_back(add(std::move(pos)));
       }
@@ -384,9 +384,7 @@ class SceneBsp::Builder {
     for (const Vec3& v : p.vertices) {
       if (std::abs(plane.distance(v)) > planar_reach_) return false;
     }
-    const Plane& own = scene_.face_plane(p.face);
-    return (own.normal == plane.normal && own.d == plane.d) ||
-           (own.normal == -plane.normal && own.d == -plane.d);
+    return same_plane(scene_.face_plane(p.face), plane);
   }
 
   std::uint32_t add(ConvexPolygon&& p) {

@@ -131,9 +131,14 @@ void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive, con
   // Down the tree, splitting at the first node the piece spans (Fig. 4).
   while (at >= 0) {
     const Plane& plane = nodes_[at].shadow_plane.plane;
-    const PlaneSides sides = svbsp::classify(p, plane, eps_);
+    // Within eps a point is near the plane; within in_plane, in it (kInPlaneShare).
+    const double in_plane = eps_ * kInPlaneShare;
+    PlaneSides sides = svbsp::classify(p, plane, eps_);
+    // Wholly near the plane is not in it: a grazing receiver is told by the finer tolerance.
+    const double eps = sides.on() ? in_plane : eps_;
+    if (sides.on()) sides = svbsp::classify(p, plane, eps);
     if (!sides.spanning()) {  // on one side (within eps: positive), no copy
-      if (sides.touching) mark_edges_in_plane(p, plane, eps_);
+      if (sides.touching) mark_edges_in_plane(p, plane, eps, in_plane);
       parent = at;
       positive = !sides.negative;
       at = positive ? nodes_[at].positive : nodes_[at].negative;
@@ -141,7 +146,7 @@ void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive, con
     }
     // Spanning: each side in its own subtree; the tree may grow (and nodes_ move) meanwhile.
     ConvexPolygon negative_part, positive_part;
-    split_polygon(p, plane, eps_, true, negative_part, positive_part);
+    split_polygon(p, plane, eps, in_plane, negative_part, positive_part);
     std::vector<Fragment>* out = sinks.out;
     const std::size_t first = out ? out->size() : 0;
     const std::int32_t node = at;

@@ -52,10 +52,7 @@ inline bool beyond_plane(const Plane& plane, const KeyPlane& key, const VisibleF
   if (k - key.slack > visible) return true;
   if (k + key.slack < visible) return false;
   const std::size_t i = frame.surfaces.index(x, y);
-  const Plane& seen = frame.surfaces.plane(i);
-  const bool same = seen.normal == plane.normal && seen.d == plane.d;
-  const bool opposite = seen.normal == -plane.normal && seen.d == -plane.d;
-  return !same && !opposite && plane.distance(frame.surfaces.point(i)) > 0;
+  return !same_plane(frame.surfaces.plane(i), plane) && plane.distance(frame.surfaces.point(i)) > 0;
 }
 
 /// \brief The faces a run of pixels shows: exactly lo and hi while it shows at most two,
