@@ -142,7 +142,8 @@ const std::vector<SceneEntry>& scene_catalog() {
           "angular-open-box-face-steep-to-the-light.json", "angular-prism-on-a-large-ground.json",
           "angular-resolution-grazing-light.json", "angular-saturation-grazing-light.json",
           "light-in-the-plane-of-a-ground-of-triangles.json",
-          "raytrace-light-in-ceiling-plane.json", "volume-light-inside-box.json"}) {
+          "raytrace-light-in-ceiling-plane.json", "svbsp-cut-point-snapped-off-a-knot-face.json",
+          "volume-light-inside-box.json"}) {
       c.push_back({std::string("sweep/") + file, [file] { return sweep(file); }});
     }
 
@@ -430,6 +431,10 @@ const SceneTolerances kTolerances[] = {
     {"sweep/light-in-the-plane-of-a-ground-of-triangles.json",
                                                     0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/raytrace-light-in-ceiling-plane.json",  0,      kExact, kExact, kAngular, kVoxelBand},
+    // A fragment's corner on a knot face's outline snaps off it on the raster, and the pixel
+    // centre beside it is owned by no fragment: svbsp shadowed it (one pixel, 0.064%).
+    {"sweep/svbsp-cut-point-snapped-off-a-knot-face.json",
+                                                    0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/volume-light-inside-box.json",          0,      kExact, kExact, kAngular, kVoxelBand},
     // -- degenerate cases
     {"lights-in-face-planes",                       0,      kExact, kExact, kAngular, kVoxelBand},
