@@ -523,10 +523,6 @@ const KnownFailure kKnownFailures[] = {
     {"shadowmap", nullptr, "sweep/angular-resolution-grazing-light.json", kShadowmapAcne},
     {"shadowmap", nullptr, "sweep/angular-saturation-grazing-light.json", kShadowmapAcne},
     {"shadowmap", nullptr, "light-very-close-to-a-surface", kShadowmapAcne},
-    {"voxel", "resolution=64,test=topology", "light-at-a-box-corner",
-     "voxel: with the point light exactly on the box's corner, a wedge of the lit ground in "
-     "front of the box comes out in shadow at M = 64 (a quarter of the interior). At M = 128 "
-     "the scene agrees, but not when other lights widen the voxels' bound"},
 };
 
 std::string known_failure(const std::string& method, const std::string& settings,

@@ -41,7 +41,10 @@ bool topology_test_shadowed(const LightProjection& projection, const BlockingSub
   const Vec3 direction = projection.to_light(a);
   const double reach = length(direction);
   if (reach == 0) return false;
-  const RaySegment ray{a, direction, own_surface / reach, 1};
+  // A point light's end of the ray likewise: a surface that close holds the light, to the
+  // voxels' precision, and passes it edge on (a light at a box's corner).
+  const double light_end = projection.point_light() ? own_surface / reach : 0;
+  const RaySegment ray{a, direction, own_surface / reach, 1 - light_end};
   const double distance = projection.distance(a);
   for (const auto& record : lists.list(projection.entry(a))) {
     if (record.distance >= distance) break;
