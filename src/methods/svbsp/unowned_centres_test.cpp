@@ -108,7 +108,9 @@ TEST(UnownedCentres, AFaceWithoutFragmentsIsShadowed) {
   ShadowMask mask = square.unowned();
   resolve_unowned(square.scene, {}, {}, square.surfaces, mask);
   for (std::size_t i = 0; i < mask.pixels.size(); ++i) {
-    if (square.surfaces.covered(i)) EXPECT_EQ(mask.pixels[i], kMaskShadow);
+    if (square.surfaces.covered(i)) {
+      EXPECT_EQ(mask.pixels[i], kMaskShadow);
+    }
   }
 }
 
