@@ -47,5 +47,22 @@ TEST(VisibleSurface, GroundDepthMatchesTheAnalyticDistance) {
   EXPECT_FALSE(vsb.covered(vsb.index(25, 0)));
 }
 
+TEST(VisibleSurface, NextCoveredSkipsBackgroundToTheFirstFace) {
+  VisibleSurfaceBuffer vsb;
+  vsb.width = 40, vsb.height = 2;
+  vsb.face.assign(80, kNoFace);
+  // Row 1 shows faces at columns 0, 7, 8, 9, 23 and 39; row 0 none.
+  for (const int x : {0, 7, 8, 9, 23, 39}) vsb.face[vsb.index(x, 1)] = 5;
+  std::vector<int> found;
+  for (int x = vsb.next_covered(0, 40, 1); x < 40; x = vsb.next_covered(x + 1, 40, 1)) {
+    found.push_back(x);
+  }
+  EXPECT_EQ(found, (std::vector<int>{0, 7, 8, 9, 23, 39}));
+  EXPECT_EQ(vsb.next_covered(0, 40, 0), 40);   // a row of background
+  EXPECT_EQ(vsb.next_covered(10, 23, 1), 23);  // none before the end
+  EXPECT_EQ(vsb.next_covered(10, 24, 1), 23);
+  EXPECT_EQ(vsb.next_covered(40, 40, 1), 40);
+}
+
 }  // namespace
 }  // namespace shadowkit

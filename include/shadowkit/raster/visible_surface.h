@@ -23,6 +23,18 @@ class VisibleSurfaceBuffer {
 
   std::size_t index(int x, int y) const { return std::size_t(y) * width + x; }
   bool covered(std::size_t i) const { return face[i] != kNoFace; }
+  /// The first column from \p x, before \p end, where row \p y shows a face, or \p end.
+  /// Background goes eight pixels at a time: kNoFace is all ones, and so is their AND.
+  int next_covered(int x, int end, int y) const {
+    const std::uint32_t* f = face.data() + index(0, y);
+    if (x < end && f[x] != kNoFace) return x;  // most often, inside a face's stretch
+    while (x + 8 <= end && (f[x] & f[x + 1] & f[x + 2] & f[x + 3] & f[x + 4] & f[x + 5] & f[x + 6] &
+                            f[x + 7]) == kNoFace) {
+      x += 8;
+    }
+    while (x < end && f[x] == kNoFace) ++x;
+    return x;
+  }
   std::size_t covered_count() const;
 
   /// The object seen at pixel \p i (kNoFace for background).

@@ -167,7 +167,7 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
   while (x < surfaces.width) {
     const std::size_t i = surfaces.index(x, row);
     if (!surfaces.covered(i)) {
-      ++x;
+      x = surfaces.next_covered(x, surfaces.width, row);
       continue;
     }
     // One face's stretch of the scan line.

@@ -153,9 +153,9 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
     const auto set_up = [&](int y, TileRow& r) {
       const Vec3 row = (grid.y0 - grid.step * double(y)) * up;
       r.points.size = 0;
-      for (int x = x0; x < x1; ++x) {
+      for (int x = surfaces.next_covered(x0, x1, y); x < x1;
+           x = surfaces.next_covered(x + 1, x1, y)) {
         const std::size_t i = surfaces.index(x, y);
-        if (!surfaces.covered(i)) continue;
         const std::uint32_t face = surfaces.face[i];
         if (face != receiver.face) receiver = receiver_of(scene.face_plane(face), eye, face);
         if (!receiver.faces_light) {
