@@ -38,7 +38,7 @@ void DepthMap::allocate(const RasterProjection& view) {
   slot_.assign(std::size_t(tiles_x_) * tiles_y, 0);
   if (capacity_ < slot_.size() + 1) {
     capacity_ = slot_.size() + 1;
-    texels_.reset(new float[capacity_ * kTileTexels]);
+    texels_ = make_huge_page_array<float>(capacity_ * kTileTexels);
   }
   std::fill_n(texels_.get(), kTileTexels, kEmpty);
 }

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 #include "shadowkit/core/context.h"
+#include "shadowkit/core/huge_pages.h"
 #include "shadowkit/core/vec.h"
 #include "shadowkit/raster/projection.h"
 #include "shadowkit/raster/scan_converter.h"
@@ -118,8 +118,9 @@ class DepthMap {
   int tiles_x_ = 0;
   std::vector<std::uint32_t> slot_;  ///< storage tile per map tile; slot 0 is all +infinity
   /// kTileTexels per slot, room for a slot per map tile: left uninitialized, so only the
-  /// slots drawn take memory. Only grows, to be reused.
-  std::unique_ptr<float[]> texels_;
+  /// slots drawn take memory. On huge pages: the lookups land all over a point light's six
+  /// faces. Only grows, to be reused.
+  HugePageArray<float> texels_;
   std::size_t capacity_ = 0;  ///< slots texels_ has room for
   std::size_t slots_ = 0;     ///< slots in use
   std::size_t covered_ = 0;
