@@ -162,6 +162,10 @@ TEST_F(MeshIoErrorTest, PlyHeaderProblems) {
               HasSubstr(at("format.ply", 2) + "unknown PLY format 'binary_middle_endian'"));
   EXPECT_THAT(error("count.ply", ascii + "element vertex -3\n"),
               HasSubstr(at("count.ply", 3) + "expected 'element <name> <count>'"));
+  // A count past 2^64 - 1 must not read as 0, which would drop the element unread.
+  EXPECT_EQ(error("overflow.ply", ascii + vertex + "element face 18446744073709551616\n"),
+            at("overflow.ply", 7) +
+                "element count '18446744073709551616' is beyond 18446744073709551615");
   EXPECT_THAT(error("end.ply", ascii + vertex), HasSubstr("the header has no 'end_header' line"));
   EXPECT_THAT(error("magic.ply", "solid x\n"), HasSubstr("not a PLY file"));
   EXPECT_THAT(error("float-index.ply", ascii + vertex +
