@@ -585,8 +585,7 @@ bool parse_model(std::string_view data, const std::string& path, tinygltf::Model
              : loader.LoadASCIIFromString(&model, &error, &warning, data.data(), size, base_dir);
   if (ok) return true;
   // tinygltf's messages may run over several lines: the first says what is wrong.
-  if (error.empty()) error = "tinygltf could not read it";
-  error = error.substr(0, error.find('\n'));
+  error = error.empty() ? "tinygltf could not read it" : first_line(error);
   return false;
 }
 

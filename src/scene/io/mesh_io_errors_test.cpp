@@ -41,6 +41,17 @@ TEST_F(MeshIoErrorTest, FilesAssimpCannotRead) {
   EXPECT_THAT(error("notes.txt", "shopping list\n"),
               AllOf(HasSubstr(at("notes.txt") + "assimp cannot read it: "),
                     HasSubstr("No suitable reader found")));
+  // assimp's messages quote the file: they are cut short and their control bytes masked.
+  auto ifc = [](const std::string& schema) {
+    return "ISO-10303-21;\nHEADER;\nFILE_SCHEMA(('" + schema +
+           "'));\nENDSEC;\nDATA;\nENDSEC;\nEND-ISO-10303-21;\n";
+  };
+  const std::string said = "IFC: Unrecognized file schema: ";
+  EXPECT_EQ(error("escape.ifc", ifc("RED\x1b[31m")),
+            at("escape.ifc") + "assimp cannot read it: " + said + "RED?[31m");
+  EXPECT_EQ(error("long.ifc", ifc(std::string(100000, 'B'))),
+            at("long.ifc") + "assimp cannot read it: " + said +
+                std::string(160 - said.size(), 'B') + "...");
 }
 
 TEST_F(MeshIoErrorTest, EmptyFilesAndFilesWithoutFaces) {
