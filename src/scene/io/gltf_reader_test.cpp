@@ -272,5 +272,18 @@ TEST_F(GltfTest, AMissingBufferFileIsNamed) {
   EXPECT_EQ(read("external.gltf", gltf).soup.face_count(), 1u) << "found beside the file";
 }
 
+// A buffer in a device or a pipe may never end: reading it would fill the memory.
+TEST_F(GltfTest, ABufferInADeviceIsRefused) {
+  std::filesystem::create_symlink("/dev/zero", dir_ / "zero.bin");
+  const std::string gltf =
+      R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 36, "uri": "zero.bin"}],
+    "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 3}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "nodes": [{"mesh": 0}]})";
+  EXPECT_EQ(error("zero.gltf", gltf),
+            at("zero.gltf") + "not a valid glTF 2.0 file: File read error : " +
+                (dir_ / "zero.bin").string() + " : it is not a regular file");
+}
+
 }  // namespace
 }  // namespace shadowkit::mesh_io_test

@@ -2,6 +2,7 @@
 // files never crash the readers.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstring>
 #include <limits>
@@ -31,6 +32,15 @@ TEST_F(MeshIoErrorTest, Directory) {
   for (const char* name : {"folder.obj", "folder.ifc"}) {
     std::filesystem::create_directory(dir_ / name);
     EXPECT_EQ(error_of(dir_ / name), at(name) + "cannot read the file: it is a directory");
+  }
+}
+
+// A device or a pipe may never end: reading one would fill the memory or wait for ever.
+TEST_F(MeshIoErrorTest, DevicesAndPipes) {
+  std::filesystem::create_symlink("/dev/zero", dir_ / "zero.obj");
+  ASSERT_EQ(mkfifo((dir_ / "pipe.dae").c_str(), 0600), 0);
+  for (const char* name : {"zero.obj", "pipe.dae"}) {
+    EXPECT_EQ(error_of(dir_ / name), at(name) + "cannot read the file: it is not a regular file");
   }
 }
 
