@@ -104,6 +104,8 @@ void write_report(const fs::path& dir, const Scene& scene, const CameraPass& pas
        << rows << "</table>\n<h2>Shaded</h2>\n<div class=\"row\">\n"
        << shaded << "</div>\n"
        << per_light;
+  html.close();  // the buffer's last bytes go out here: a full disk may show only now
+  if (!html) throw InputError((dir / "index.html").string(), "cannot write the report");
 }
 
 }  // namespace shadowkit

@@ -261,6 +261,20 @@ TEST_F(Cli, FragmentsWritesPlyAndAreasThatSumToEachPolygon) {
                    "svbsp.shadowed_only");
 }
 
+// /dev/full opens and refuses every byte; a small file's bytes leave only as it is closed.
+TEST_F(Cli, AFullDiskIsBadInputNotASilentlyShortFile) {
+  fs::create_symlink("/dev/full", dir_ / "full.ply");
+  expect_bad_input("fragments square --out " + (dir_ / "full.ply").string(),
+                   (dir_ / "full.ply").string() + ": write failed");
+  fs::create_symlink("/dev/full", dir_ / "areas.json");
+  expect_bad_input("fragments square --out " + (dir_ / "areas.ply").string(),
+                   (dir_ / "areas.json").string() + ": cannot write");
+  fs::create_directory(dir_ / "report");
+  fs::create_symlink("/dev/full", dir_ / "report" / "index.html");
+  expect_bad_input("compare square --methods raytrace --report " + (dir_ / "report").string(),
+                   (dir_ / "report" / "index.html").string() + ": cannot write the report");
+}
+
 TEST_F(Cli, DegenerateFacesAreAWarningNotAnError) {
   write("degenerate.obj", std::string(kGround) + "v 9 9 9\nf 5 5 5\n");
   const Result r = run("info " + scene(R"({"mesh": "degenerate.obj"})").string());

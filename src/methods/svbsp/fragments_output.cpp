@@ -55,6 +55,7 @@ void write_fragments_ply(const std::filesystem::path& path, const Scene& scene,
     for (std::size_t l = 0; l < scene.lights.size(); ++l) out << ' ' << ((f.lit_mask >> l) & 1);
     out << '\n';
   }
+  out.close();  // the buffer's last bytes go out here: a full disk may show only now
   if (!out) throw InputError(path.string(), "write failed");
 }
 
@@ -100,6 +101,7 @@ FragmentsWritten write_fragments(const Scene& scene, const std::filesystem::path
   write_fragments_ply(ply, scene, result);
   std::ofstream out(json);
   out << fragment_areas_json(scene, result).dump(2) << "\n";
+  out.close();
   if (!out) throw InputError(json.string(), "cannot write");
   return {result.fragments.size()};
 }

@@ -31,6 +31,7 @@
 #include "readers.h"
 #include "shadowkit/scene/limits.h"
 #include "skipped_items.h"
+#include "text_cursor.h"
 
 namespace shadowkit::mesh_io {
 namespace {
@@ -427,8 +428,7 @@ std::vector<std::string> assimp_extensions() {
 MeshFile read_with_assimp(const std::string& path, const Context& ctx) {
   ImportResult result = cached_import(path);
   if (!result.error.empty()) {
-    throw InputError(path,
-                     "assimp cannot read it: " + result.error.substr(0, result.error.find('\n')));
+    throw InputError(path, "assimp cannot read it: " + first_line(result.error));
   }
   for (const std::string& warning : result.warnings) ctx.warning(path + ": " + warning);
   return std::move(result.file);

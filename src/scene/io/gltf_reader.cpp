@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <memory>
@@ -522,6 +523,13 @@ void place_nodes(const GltfSource& src, GltfMeshes& meshes, MeshFile& file) {
 // Files tinygltf may open: only those the glTF names, read by us with errors we word.
 bool read_referenced_file(std::vector<unsigned char>* out, std::string* err,
                           const std::string& path, void* /*user*/) {
+  // A device or a pipe may never end (/dev/zero, a FIFO that no one writes to).
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    *err += "it is not a regular file";
+    return false;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     *err += "cannot open '" + path + "'";
@@ -585,8 +593,7 @@ bool parse_model(std::string_view data, const std::string& path, tinygltf::Model
              : loader.LoadASCIIFromString(&model, &error, &warning, data.data(), size, base_dir);
   if (ok) return true;
   // tinygltf's messages may run over several lines: the first says what is wrong.
-  if (error.empty()) error = "tinygltf could not read it";
-  error = error.substr(0, error.find('\n'));
+  error = error.empty() ? "tinygltf could not read it" : first_line(error);
   return false;
 }
 

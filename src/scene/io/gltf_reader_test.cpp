@@ -243,6 +243,20 @@ TEST_F(GltfTest, ErrorsNameTheJsonPath) {
               HasSubstr(at("broken.gltf") + "not a valid glTF 2.0 file: "));
 }
 
+// tinygltf's messages quote the file: a damaged data URI of any length, or control bytes. The
+// message stays one short line that a terminal prints as it is.
+TEST_F(GltfTest, TinygltfMessagesAreCutShortAndPrintable) {
+  const std::string said = "Failed to decode 'uri' : ";
+  const std::string uri = "data:application/octet-stream;base64," + std::string(100000, 'A') + "!";
+  const std::string buffers = R"(, "buffers": [{"byteLength": 4, "uri": ")" + uri + "\"}]";
+  EXPECT_EQ(error("long.gltf", R"({"asset": {"version": "2.0"})" + buffers + "}"),
+            at("long.gltf") + "not a valid glTF 2.0 file: " + said +
+                uri.substr(0, 160 - said.size()) + "...");
+  EXPECT_EQ(error("escape.gltf", R"({"asset": {"version": "2.0"},
+    "buffers": [{"byteLength": 4, "uri": "red\u001b[31m\u0007.bin"}]})"),
+            at("escape.gltf") + "not a valid glTF 2.0 file: File not found : red?[31m?.bin");
+}
+
 TEST_F(GltfTest, AMissingBufferFileIsNamed) {
   const std::string gltf =
       R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 36, "uri": "gone.bin"}],
@@ -256,6 +270,19 @@ TEST_F(GltfTest, AMissingBufferFileIsNamed) {
   for (const Vec3& v : kTriangle) w.put(float(v.x)).put(float(v.y)).put(float(v.z));
   write("gone.bin", w.bytes());
   EXPECT_EQ(read("external.gltf", gltf).soup.face_count(), 1u) << "found beside the file";
+}
+
+// A buffer in a device or a pipe may never end: reading it would fill the memory.
+TEST_F(GltfTest, ABufferInADeviceIsRefused) {
+  std::filesystem::create_symlink("/dev/zero", dir_ / "zero.bin");
+  const std::string gltf =
+      R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 36, "uri": "zero.bin"}],
+    "bufferViews": [{"buffer": 0, "byteLength": 36}],
+    "accessors": [{"bufferView": 0, "componentType": 5126, "type": "VEC3", "count": 3}],
+    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}], "nodes": [{"mesh": 0}]})";
+  EXPECT_EQ(error("zero.gltf", gltf),
+            at("zero.gltf") + "not a valid glTF 2.0 file: File read error : " +
+                (dir_ / "zero.bin").string() + " : it is not a regular file");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // files never crash the readers.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstring>
 #include <limits>
@@ -34,6 +35,15 @@ TEST_F(MeshIoErrorTest, Directory) {
   }
 }
 
+// A device or a pipe may never end: reading one would fill the memory or wait for ever.
+TEST_F(MeshIoErrorTest, DevicesAndPipes) {
+  std::filesystem::create_symlink("/dev/zero", dir_ / "zero.obj");
+  ASSERT_EQ(mkfifo((dir_ / "pipe.dae").c_str(), 0600), 0);
+  for (const char* name : {"zero.obj", "pipe.dae"}) {
+    EXPECT_EQ(error_of(dir_ / name), at(name) + "cannot read the file: it is not a regular file");
+  }
+}
+
 // Formats without a reader of shadowkit's own go to assimp, which refuses what it cannot read.
 TEST_F(MeshIoErrorTest, FilesAssimpCannotRead) {
   EXPECT_EQ(error("cube.3ds", cube_obj()),
@@ -41,6 +51,17 @@ TEST_F(MeshIoErrorTest, FilesAssimpCannotRead) {
   EXPECT_THAT(error("notes.txt", "shopping list\n"),
               AllOf(HasSubstr(at("notes.txt") + "assimp cannot read it: "),
                     HasSubstr("No suitable reader found")));
+  // assimp's messages quote the file: they are cut short and their control bytes masked.
+  auto ifc = [](const std::string& schema) {
+    return "ISO-10303-21;\nHEADER;\nFILE_SCHEMA(('" + schema +
+           "'));\nENDSEC;\nDATA;\nENDSEC;\nEND-ISO-10303-21;\n";
+  };
+  const std::string said = "IFC: Unrecognized file schema: ";
+  EXPECT_EQ(error("escape.ifc", ifc("RED\x1b[31m")),
+            at("escape.ifc") + "assimp cannot read it: " + said + "RED?[31m");
+  EXPECT_EQ(error("long.ifc", ifc(std::string(100000, 'B'))),
+            at("long.ifc") + "assimp cannot read it: " + said +
+                std::string(160 - said.size(), 'B') + "...");
 }
 
 TEST_F(MeshIoErrorTest, EmptyFilesAndFilesWithoutFaces) {
@@ -162,6 +183,10 @@ TEST_F(MeshIoErrorTest, PlyHeaderProblems) {
               HasSubstr(at("format.ply", 2) + "unknown PLY format 'binary_middle_endian'"));
   EXPECT_THAT(error("count.ply", ascii + "element vertex -3\n"),
               HasSubstr(at("count.ply", 3) + "expected 'element <name> <count>'"));
+  // A count past 2^64 - 1 must not read as 0, which would drop the element unread.
+  EXPECT_EQ(error("overflow.ply", ascii + vertex + "element face 18446744073709551616\n"),
+            at("overflow.ply", 7) +
+                "element count '18446744073709551616' is beyond 18446744073709551615");
   EXPECT_THAT(error("end.ply", ascii + vertex), HasSubstr("the header has no 'end_header' line"));
   EXPECT_THAT(error("magic.ply", "solid x\n"), HasSubstr("not a PLY file"));
   EXPECT_THAT(error("float-index.ply", ascii + vertex +

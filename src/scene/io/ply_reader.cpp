@@ -3,6 +3,7 @@
 // header lines PLY does not define (old Blender exporters wrote one), with a warning.
 #include <algorithm>
 #include <bit>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -165,9 +166,14 @@ Header read_header(TextCursor& in, SkippedItems& skipped) {
       element.name = in.token();
       const std::string_view count = in.token();
       const char* end = count.data() + count.size();
-      if (element.name.empty() || std::from_chars(count.data(), end, element.count).ptr != end ||
-          count.empty()) {
+      const auto [stop, error] = std::from_chars(count.data(), end, element.count);
+      if (element.name.empty() || stop != end || count.empty()) {
         in.fail("expected 'element <name> <count>'");
+      }
+      // from_chars leaves the count at 0 when it overflows: the element would vanish unread.
+      if (error == std::errc::result_out_of_range) {
+        in.fail("element count " + quote(count) + " is beyond " +
+                std::to_string(std::numeric_limits<std::uint64_t>::max()));
       }
       header.elements.push_back(std::move(element));
     } else if (keyword == "property") {

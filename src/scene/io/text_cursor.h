@@ -43,16 +43,26 @@ inline std::string format_number(double value) {
   return error == std::errc() ? std::string(buffer, end) : std::string("?");
 }
 
-/// A token quoted for a message, cut short and with control bytes masked so that binary
-/// garbage cannot flood or break the one-line message.
-inline std::string quote(std::string_view token) {
-  constexpr std::size_t kMax = 32;
-  std::string quoted = "'";
-  for (char c : token.substr(0, kMax)) {
+/// \p text cut to \p longest bytes ("..." marks the cut) with control bytes masked, so that
+/// binary garbage cannot flood or break a one-line message.
+inline std::string printable(std::string_view text, std::size_t longest) {
+  std::string shown;
+  for (char c : text.substr(0, longest)) {
     const auto u = static_cast<unsigned char>(c);
-    quoted += u < 0x20 || u == 0x7f ? '?' : c;
+    shown += u < 0x20 || u == 0x7f ? '?' : c;
   }
-  return quoted + (token.size() > kMax ? "...'" : "'");
+  return shown + (text.size() > longest ? "..." : "");
+}
+
+/// A token quoted for a message, cut short and with control bytes masked.
+inline std::string quote(std::string_view token) {
+  return "'" + printable(token, 32) + "'";
+}
+
+/// The first line of a library's message (tinygltf's, assimp's), made printable: such
+/// messages quote the file, a whole data URI or an IFC schema name of any length.
+inline std::string first_line(std::string_view message) {
+  return printable(message.substr(0, message.find('\n')), 160);
 }
 
 /// \p text without a leading UTF-8 byte order mark, which some Windows tools write.
