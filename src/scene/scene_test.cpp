@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numbers>
 
 #include "shadowkit/scene/triangulate.h"
@@ -83,6 +84,42 @@ TEST(Triangulate, EarClippingCoversANonConvexPolygonExactly) {
   for (const auto& t : tris) {  // same orientation as the polygon
     EXPECT_GT(cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]).z, 0);
   }
+}
+
+// A star of 20,000 corners at radii 1 and 0.3 in turn: every outer corner is an ear, each
+// found next to the last cut; the triangles cover the star exactly, in its orientation.
+TEST(Triangulate, EarClippingCoversAStarOfTwentyThousandCorners) {
+  constexpr std::uint32_t kCorners = 20000;
+  std::vector<Vec3> p;
+  std::vector<std::uint32_t> loop;
+  for (std::uint32_t i = 0; i < kCorners; ++i) {
+    const double angle = 2 * std::numbers::pi * i / kCorners, r = i % 2 ? 0.3 : 1.0;
+    p.push_back({r * std::cos(angle), r * std::sin(angle), 0});
+    loop.push_back(i);
+  }
+  std::vector<std::array<std::uint32_t, 3>> tris;
+  triangulate_polygon(p, loop, {0, 0, 1}, tris);
+  ASSERT_EQ(tris.size(), kCorners - 2);
+  const double area = 0.5 * length(newell_normal(p, loop));
+  EXPECT_NEAR(triangles_area(p, tris), area, 1e-9 * area);
+  int clockwise = 0;
+  for (const auto& t : tris) clockwise += cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]).z < 0;
+  EXPECT_EQ(clockwise, 0);
+}
+
+// Two squares touching at one corner, given as one loop through that corner twice: a lap
+// finds no ear before the end, and the flattest corner is cut so that clipping ends. Every
+// cut, ear or not, takes its triangle's signed area off the loop's, so they still sum to it.
+TEST(Triangulate, ASelfTouchingLoopEndsWithTheFlattestCorner) {
+  const std::vector<Vec3> p{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {2, 1, 0},
+                            {2, 2, 0}, {1, 2, 0}, {0, 1, 0}};
+  const std::vector<std::uint32_t> loop{0, 1, 2, 3, 4, 5, 2, 6};
+  std::vector<std::array<std::uint32_t, 3>> tris;
+  triangulate_polygon(p, loop, {0, 0, 1}, tris);
+  ASSERT_EQ(tris.size(), loop.size() - 2);
+  double signed_area = 0;
+  for (const auto& t : tris) signed_area += 0.5 * cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]).z;
+  EXPECT_NEAR(signed_area, 2.0, 1e-12);
 }
 
 }  // namespace
