@@ -31,6 +31,14 @@ Vec3 position(const JsonCursor& c) {
   return p;
 }
 
+// A key whose value must be an object: has() finds nothing in any other value, which would
+// skip every key under it without a word.
+void require_object(const JsonCursor& c, const std::string& what) {
+  if (!c.value().is_object()) {
+    c.fail("expected an object" + what + ", got " + std::string(c.value().type_name()));
+  }
+}
+
 nlohmann::json parse_json(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "cannot open scene file");
@@ -48,6 +56,7 @@ void warn_unknown(const JsonCursor& c, const std::vector<std::string>& known, co
 
 Camera read_camera(const JsonCursor& c, Camera camera, const Context& ctx,
                    const std::string& file) {
+  require_object(c, "");
   warn_unknown(c, {"position", "look_at", "up", "fov_y_deg", "width", "height"}, ctx, file);
   if (c.has("position")) camera.position = position(c["position"]);
   if (c.has("look_at")) camera.look_at = position(c["look_at"]);
@@ -123,16 +132,28 @@ sun::Site read_site(const JsonCursor& c, const Context& ctx, const std::string& 
   return site;
 }
 
-void apply_object_transform(const JsonCursor& c, std::vector<Vec3>& positions) {
-  if (!c.has("transform")) return;
+// An object's `transform`, the identity when absent.
+struct ObjectTransform {
+  Vec3 scale{1, 1, 1};
+  Vec3 rotate_deg;
+  Vec3 translate;
+};
+
+ObjectTransform read_transform(const JsonCursor& c, const Context& ctx, const std::string& file) {
+  ObjectTransform transform;
+  if (!c.has("transform")) return transform;
   const JsonCursor t = c["transform"];
-  const Vec3 scale = t.has("scale") ? t["scale"].scale3() : Vec3{1, 1, 1};
-  if (scale.x == 0 || scale.y == 0 || scale.z == 0) {
+  // A transform of another type, or a misspelt key in it, would otherwise leave the object
+  // silently where its mesh put it.
+  require_object(t, " with \"scale\", \"rotate_deg\" or \"translate\"");
+  warn_unknown(t, {"scale", "rotate_deg", "translate"}, ctx, file);
+  if (t.has("scale")) transform.scale = t["scale"].scale3();
+  if (const Vec3 scale = transform.scale; scale.x == 0 || scale.y == 0 || scale.z == 0) {
     t["scale"].fail("a zero scale flattens the object to nothing");
   }
-  const Vec3 rotate = t.has("rotate_deg") ? t["rotate_deg"].vec3() : Vec3{};
-  const Vec3 translate = t.has("translate") ? t["translate"].vec3() : Vec3{};
-  apply_transform(positions, scale, rotate, translate);
+  if (t.has("rotate_deg")) transform.rotate_deg = t["rotate_deg"].vec3();
+  if (t.has("translate")) transform.translate = t["translate"].vec3();
+  return transform;
 }
 
 // Segments per patch edge of a Catmull-Clark object's tessellation, kTessellationForView
@@ -168,7 +189,9 @@ void read_objects(const JsonCursor& list, const fs::path& dir, SceneSource& scen
     std::vector<GeneratedObject> parts;
     if (c.has("mesh")) {
       warn_unknown(c, {"mesh", "transform", "name", "subdivision", "tessellation"}, ctx, file);
-      const fs::path mesh_path = dir / c["mesh"].string();
+      const std::string mesh = c["mesh"].string();
+      if (mesh.empty()) c["mesh"].fail("is an empty path");
+      const fs::path mesh_path = dir / mesh;
       parts.push_back({mesh_path.stem().string(), read_mesh_file(mesh_path, ctx).soup});
     } else if (c.has("generator")) {
       parts = generate_objects(c.value(), c.where());
@@ -177,9 +200,11 @@ void read_objects(const JsonCursor& list, const fs::path& dir, SceneSource& scen
     }
     const int segments = tessellation_segments(c);
     const std::string name = c.has("name") ? c["name"].string() : "";
+    const ObjectTransform transform = read_transform(c, ctx, file);
     std::uint32_t first_face = 0;
     for (GeneratedObject& part : parts) {
-      apply_object_transform(c, part.soup.positions);
+      apply_transform(part.soup.positions, transform.scale, transform.rotate_deg,
+                      transform.translate);
       const auto faces = std::uint32_t(part.soup.face_count());
       scene.objects.push_back({name.empty() ? part.name : name, std::move(part.soup), segments,
                                c.where(), first_entry + std::uint32_t(i), first_face});
@@ -218,8 +243,14 @@ Scene load_scene_file(const fs::path& path, const Context& ctx) {
   SceneSource scene;
   if (root.has("generator")) {
     scene = generated_scene(root, file);
-  } else if (!root.has("camera")) {
-    throw InputError(file + ": key 'camera'", "is missing");
+  } else {
+    // Without a built-in scene's camera to start from, the view must be given; the other
+    // camera keys have defaults (docs/scene-format.md, "Defaults").
+    const JsonCursor camera = root["camera"];
+    require_object(camera, "");
+    for (const std::string key : {"position", "look_at"}) {
+      if (!camera.has(key)) throw InputError(file + ": key 'camera." + key + "'", "is missing");
+    }
   }
   scene.name = path.stem().string();
   scene.where = file;

@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "scene_file_test_fixture.h"
@@ -101,6 +102,42 @@ TEST_F(SceneFileTest, OverflowingTransformIsRejected) {
   EXPECT_THAT(
       error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0], "fov_y_deg": 1e-300)")),
       HasSubstr("key 'camera.fov_y_deg': must lie between"));
+}
+
+// Values that would otherwise be skipped, leaving a default camera or an untransformed
+// object where the file meant something else.
+TEST_F(SceneFileTest, ValuesOfTheWrongKindAreRejectedNotSkipped) {
+  EXPECT_THAT(error_of(scene(R"("look_at": [0, 0, 0])")),
+              HasSubstr("key 'camera.position': is missing"));
+  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12])")),
+              HasSubstr("key 'camera.look_at': is missing"));
+  EXPECT_THAT(error_of(R"({"camera": 5, "lights": []})"),
+              HasSubstr("key 'camera': expected an object, got number"));
+  for (const std::string transform : {"[1]", "null", "2"}) {
+    EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                               R"({"type": "point", "position": [3, 10, 4]})",
+                               R"({"mesh": "ground.obj", "transform": )" + transform + "}")),
+                HasSubstr("key 'objects[0].transform': expected an object"));
+  }
+  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                             R"({"type": "point", "position": [3, 10, 4]})", R"({"mesh": ""})")),
+              HasSubstr("key 'objects[0].mesh': is an empty path"));
+}
+
+TEST_F(SceneFileTest, MisspeltTransformKeysAreWarnedAbout) {
+  std::vector<std::string> warnings;
+  const Context ctx{0, [&](const std::string& m) { warnings.push_back(m); }};
+  const Scene s = load_scene_file(
+      write("scene.json", scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                                R"({"type": "point", "position": [3, 10, 4]})",
+                                R"({"mesh": "ground.obj", "transform": {"rotate": [90, 0, 0],
+                                                  "translate": [0, 1, 0]}})")),
+      ctx);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_THAT(warnings[0], HasSubstr("key 'objects[0].transform.rotate' is not part of the "
+                                     "scene format; ignored"));
+  EXPECT_DOUBLE_EQ(s.world_bounds().lo.y, 1);
+  EXPECT_DOUBLE_EQ(s.world_bounds().hi.x, 5);
 }
 
 // The cube [0, 1]^3 as an OBJ control mesh, faces outward.
