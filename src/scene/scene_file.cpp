@@ -31,6 +31,16 @@ Vec3 position(const JsonCursor& c) {
   return p;
 }
 
+// A direction: only its sense matters, so it is brought to a largest component of 1 before
+// anything squares it; [1e300, -1e300, 0] and [3e-170, -1e-170, 0] are as good as [1, -1, 0]
+// and [3, -1, 0], where a length would overflow to infinity or underflow to 0.
+Vec3 direction(const JsonCursor& c) {
+  const Vec3 d = c.vec3();
+  const double largest = max_abs_component(d);
+  if (largest == 0) c.fail("is the zero vector");
+  return d / largest;
+}
+
 // A key whose value must be an object: has() finds nothing in any other value, which would
 // skip every key under it without a word.
 void require_object(const JsonCursor& c, const std::string& what) {
@@ -60,7 +70,7 @@ Camera read_camera(const JsonCursor& c, Camera camera, const Context& ctx,
   warn_unknown(c, {"position", "look_at", "up", "fov_y_deg", "width", "height"}, ctx, file);
   if (c.has("position")) camera.position = position(c["position"]);
   if (c.has("look_at")) camera.look_at = position(c["look_at"]);
-  if (c.has("up")) camera.up = c["up"].vec3();
+  if (c.has("up")) camera.up = direction(c["up"]);
   if (c.has("fov_y_deg")) camera.fov_y_deg = c["fov_y_deg"].number();
   if (c.has("width")) camera.width = c["width"].integer(1, limits::kImageSide);
   if (c.has("height")) camera.height = c["height"].integer(1, limits::kImageSide);
@@ -98,9 +108,7 @@ Light read_light(const JsonCursor& c, const Context& ctx, const std::string& fil
   } else if (type == "directional") {
     warn_unknown(c, {"type", "direction"}, ctx, file);
     light.type = Light::Type::directional;
-    const Vec3 d = c["direction"].vec3();
-    if (!(length(d) > 0)) c["direction"].fail("is the zero vector");
-    light.direction = normalize(d);
+    light.direction = normalize(direction(c["direction"]));
   } else {
     c["type"].fail("unknown light type '" + type + "' (expected \"point\" or \"directional\")");
   }

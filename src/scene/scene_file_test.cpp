@@ -140,6 +140,22 @@ TEST_F(SceneFileTest, MisspeltTransformKeysAreWarnedAbout) {
   EXPECT_DOUBLE_EQ(s.world_bounds().hi.x, 5);
 }
 
+// A direction's length may overflow or underflow double; its sense is still well defined.
+TEST_F(SceneFileTest, DirectionsOfAnyMagnitudeKeepTheirSense) {
+  const Scene s = load_scene_file(
+      write("scene.json",
+            scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0], "up": [0, 1e-300, 0])",
+                  R"({"type": "directional", "direction": [1e300, -1e300, 0]},
+                     {"type": "directional", "direction": [3e-170, -1e-170, 0]})")),
+      quiet_);
+  ASSERT_EQ(s.lights.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.lights[0].direction.x, std::sqrt(0.5));
+  EXPECT_DOUBLE_EQ(s.lights[0].direction.y, -std::sqrt(0.5));
+  EXPECT_DOUBLE_EQ(s.lights[1].direction.x, 3 / std::sqrt(10.0));
+  EXPECT_DOUBLE_EQ(s.lights[1].direction.y, -1 / std::sqrt(10.0));
+  EXPECT_DOUBLE_EQ(s.camera.right().x, 1);
+}
+
 // The cube [0, 1]^3 as an OBJ control mesh, faces outward.
 constexpr const char* kCubeObj =
     "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
