@@ -167,6 +167,20 @@ TEST_F(StudySite, OptionsGivenAreCheckedBeforeTheScene) {
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 
+// A step whose seconds overflow int64_t would make a step of negative length, which the
+// fraction plot's check stops on after the contract's files are half written.
+TEST_F(StudySite, AStepLongerThanAnyStudyIsAnErrorBeforeTheFolderIsMade) {
+  SunStudyOptions o = at(study(scene("plain.json", ""), "out"), 48.85, 2.35, 1, 0);
+  o.step_minutes = 1e300;
+  EXPECT_EQ(error_of(o),
+            "--step: must be at most 1e10 minutes (19,000 years), longer than any study");
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  o.step_minutes = 1e10;  // the longest: one step
+  run(o);
+  EXPECT_EQ(settings("out")["steps"], 1);
+  EXPECT_EQ(settings("out")["step_seconds"], 600'000'000'000);
+}
+
 TEST(StudySiteOf, OptionsTakeThePlaceOfTheScenesKeys) {
   const sun::Site scene_site{48.85, 2.35, 1, 20};
   SunStudyOptions o;

@@ -12,6 +12,10 @@ namespace {
 // The study's size in steps is bounded so that indices and the file of fractions stay in
 // reach: 19 years at one-minute steps.
 constexpr std::int64_t kMaxSteps = 10'000'000;
+// The longest step, 1e10 minutes (19,000 years), is longer than any study (its years have
+// four digits), so a longer one would change nothing; it keeps the step's seconds, and every
+// sum of steps, within int64_t.
+constexpr double kMaxStepMinutes = 1e10;
 // The most shards a study is cut into.
 constexpr std::int64_t kMaxShards = 1'000'000;
 
@@ -24,6 +28,10 @@ Steps study_steps(const SunStudyOptions& options, double utc_offset_hours) {
   const double seconds = options.step_minutes * 60;
   if (!(options.step_minutes > 0) || !std::isfinite(seconds)) {
     throw InputError("--step", "must be a positive number of minutes");
+  }
+  if (options.step_minutes > kMaxStepMinutes) {
+    throw InputError("--step",
+                     "must be at most 1e10 minutes (19,000 years), longer than any study");
   }
   if (seconds != std::round(seconds)) {
     throw InputError("--step",
