@@ -54,7 +54,9 @@ nlohmann::json parse_json(const fs::path& path) {
   if (!in) throw InputError(path.string(), "cannot open scene file");
   std::stringstream text;
   text << in.rdbuf();
-  return parse_json_text(text.str(), path.string());
+  nlohmann::json json = parse_json_text(text.str(), path.string());
+  check_unique_keys(text.str(), path.string());
+  return json;
 }
 
 void warn_unknown(const JsonCursor& c, const std::vector<std::string>& known, const Context& ctx,

@@ -140,6 +140,22 @@ TEST_F(SceneFileTest, MisspeltTransformKeysAreWarnedAbout) {
   EXPECT_DOUBLE_EQ(s.world_bounds().hi.x, 5);
 }
 
+// nlohmann keeps the last of two equal keys; the first would be dropped unseen.
+TEST_F(SceneFileTest, AKeyGivenTwiceInOneObjectIsRejectedByItsPath) {
+  EXPECT_THAT(error_of(R"({"camera": {"position": [0, 4, 12], "look_at": [0, 0, 0]},
+                           "camera": {"position": [0, 1, 12], "look_at": [0, 0, 0]}})"),
+              HasSubstr("scene.json: key 'camera': is given twice in one object"));
+  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                             R"({"type": "point", "position": [3, 10, 4]},
+                                {"type": "directional", "direction": [0, -1, 0], "type": "point"})")),
+              HasSubstr("key 'lights[1].type': is given twice in one object"));
+  // Equal keys in different objects are no repetition.
+  EXPECT_EQ(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                           R"({"type": "point", "position": [3, 10, 4]},
+                              {"type": "point", "position": [3, 10, 5]})")),
+            "no error");
+}
+
 // A direction's length may overflow or underflow double; its sense is still well defined.
 TEST_F(SceneFileTest, DirectionsOfAnyMagnitudeKeepTheirSense) {
   const Scene s = load_scene_file(
