@@ -128,6 +128,14 @@ void read_view_keys(const JsonCursor& root, SceneView& view, const Context& ctx,
       view.lights.push_back(read_light(lights[i], ctx, file));
     }
   }
+  const std::int64_t pixels = std::int64_t{view.camera.width} * view.camera.height;
+  if (std::int64_t(view.lights.size()) * pixels > limits::kMaskPixels) {
+    const JsonCursor at = root.has("lights") ? root["lights"] : root["camera"];
+    at.fail(std::to_string(view.lights.size()) + " lights of " + std::to_string(pixels) +
+            " pixels each make more than " + std::to_string(limits::kMaskPixels) +
+            " mask pixels; at most " + std::to_string(limits::kMaskPixels / pixels) +
+            " lights fit this image");
+  }
 }
 
 // The sun study's site (docs/scene-format.md, "Site"), checked here so that a bad value names
