@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace shadowkit {
 namespace {
@@ -21,7 +22,78 @@ std::string brief(const nlohmann::json& v) {
   return v.dump();
 }
 
+// Keys seen per open object, and where each open value lies, to name a repeated key's path.
+class UniqueKeys : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override {
+    open_.push_back({true, {}, {}, 0});
+    return true;
+  }
+  bool key(string_t& key) override {
+    Open& object = open_.back();
+    object.key = key;
+    if (!object.keys.insert(key).second) {
+      repeated_ = path();
+      return false;
+    }
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override {
+    open_.push_back({false, {}, {}, 0});
+    return true;
+  }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+    return false;
+  }
+
+  std::string repeated_;  ///< the first repeated key's path, empty when there is none
+
+ private:
+  struct Open {
+    bool object;
+    std::set<std::string> keys;  // an object's keys so far
+    std::string key;             // an object's current key
+    std::size_t index;           // an array's current element
+  };
+  // A value ends: the array holding it moves to its next element.
+  bool value() {
+    if (!open_.empty() && !open_.back().object) ++open_.back().index;
+    return true;
+  }
+  bool close() {
+    open_.pop_back();
+    return value();
+  }
+  std::string path() const {
+    std::string text;
+    for (const Open& o : open_) {
+      text += o.object ? (text.empty() ? "" : ".") + o.key : "[" + std::to_string(o.index) + "]";
+    }
+    return text;
+  }
+
+  std::vector<Open> open_;
+};
+
 }  // namespace
+
+void check_unique_keys(std::string_view text, const std::string& file) {
+  UniqueKeys keys;
+  nlohmann::json::sax_parse(text, &keys);
+  if (!keys.repeated_.empty()) {
+    throw InputError(file + ": key '" + keys.repeated_ + "'",
+                     "is given twice in one object; JSON would keep only the last");
+  }
+}
 
 JsonCursor JsonCursor::operator[](const std::string& key) const {
   const std::string child = path_.empty() ? key : path_ + "." + key;

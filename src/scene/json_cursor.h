@@ -2,12 +2,18 @@
 // A JSON value together with its key path, so that every type error names the file and key.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "shadowkit/core/error.h"
 #include "shadowkit/core/vec.h"
 
 namespace shadowkit {
+
+/// Throws InputError naming the key path (`file: key 'camera.position'`) of the first key that
+/// one object of \p text holds twice; nlohmann would keep the last value and drop the others
+/// without a word. \p text is well-formed JSON (parsed before).
+void check_unique_keys(std::string_view text, const std::string& file);
 
 class JsonCursor {
  public:

@@ -31,12 +31,32 @@ Vec3 position(const JsonCursor& c) {
   return p;
 }
 
+// A direction: only its sense matters, so it is brought to a largest component of 1 before
+// anything squares it; [1e300, -1e300, 0] and [3e-170, -1e-170, 0] are as good as [1, -1, 0]
+// and [3, -1, 0], where a length would overflow to infinity or underflow to 0.
+Vec3 direction(const JsonCursor& c) {
+  const Vec3 d = c.vec3();
+  const double largest = max_abs_component(d);
+  if (largest == 0) c.fail("is the zero vector");
+  return d / largest;
+}
+
+// A key whose value must be an object: has() finds nothing in any other value, which would
+// skip every key under it without a word.
+void require_object(const JsonCursor& c, const std::string& what) {
+  if (!c.value().is_object()) {
+    c.fail("expected an object" + what + ", got " + std::string(c.value().type_name()));
+  }
+}
+
 nlohmann::json parse_json(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path.string(), "cannot open scene file");
   std::stringstream text;
   text << in.rdbuf();
-  return parse_json_text(text.str(), path.string());
+  nlohmann::json json = parse_json_text(text.str(), path.string());
+  check_unique_keys(text.str(), path.string());
+  return json;
 }
 
 void warn_unknown(const JsonCursor& c, const std::vector<std::string>& known, const Context& ctx,
@@ -48,10 +68,11 @@ void warn_unknown(const JsonCursor& c, const std::vector<std::string>& known, co
 
 Camera read_camera(const JsonCursor& c, Camera camera, const Context& ctx,
                    const std::string& file) {
+  require_object(c, "");
   warn_unknown(c, {"position", "look_at", "up", "fov_y_deg", "width", "height"}, ctx, file);
   if (c.has("position")) camera.position = position(c["position"]);
   if (c.has("look_at")) camera.look_at = position(c["look_at"]);
-  if (c.has("up")) camera.up = c["up"].vec3();
+  if (c.has("up")) camera.up = direction(c["up"]);
   if (c.has("fov_y_deg")) camera.fov_y_deg = c["fov_y_deg"].number();
   if (c.has("width")) camera.width = c["width"].integer(1, limits::kImageSide);
   if (c.has("height")) camera.height = c["height"].integer(1, limits::kImageSide);
@@ -89,9 +110,7 @@ Light read_light(const JsonCursor& c, const Context& ctx, const std::string& fil
   } else if (type == "directional") {
     warn_unknown(c, {"type", "direction"}, ctx, file);
     light.type = Light::Type::directional;
-    const Vec3 d = c["direction"].vec3();
-    if (!(length(d) > 0)) c["direction"].fail("is the zero vector");
-    light.direction = normalize(d);
+    light.direction = normalize(direction(c["direction"]));
   } else {
     c["type"].fail("unknown light type '" + type + "' (expected \"point\" or \"directional\")");
   }
@@ -109,6 +128,14 @@ void read_view_keys(const JsonCursor& root, SceneView& view, const Context& ctx,
       view.lights.push_back(read_light(lights[i], ctx, file));
     }
   }
+  const std::int64_t pixels = std::int64_t{view.camera.width} * view.camera.height;
+  if (std::int64_t(view.lights.size()) * pixels > limits::kMaskPixels) {
+    const JsonCursor at = root.has("lights") ? root["lights"] : root["camera"];
+    at.fail(std::to_string(view.lights.size()) + " lights of " + std::to_string(pixels) +
+            " pixels each make more than " + std::to_string(limits::kMaskPixels) +
+            " mask pixels; at most " + std::to_string(limits::kMaskPixels / pixels) +
+            " lights fit this image");
+  }
 }
 
 // The sun study's site (docs/scene-format.md, "Site"), checked here so that a bad value names
@@ -123,16 +150,28 @@ sun::Site read_site(const JsonCursor& c, const Context& ctx, const std::string& 
   return site;
 }
 
-void apply_object_transform(const JsonCursor& c, std::vector<Vec3>& positions) {
-  if (!c.has("transform")) return;
+// An object's `transform`, the identity when absent.
+struct ObjectTransform {
+  Vec3 scale{1, 1, 1};
+  Vec3 rotate_deg;
+  Vec3 translate;
+};
+
+ObjectTransform read_transform(const JsonCursor& c, const Context& ctx, const std::string& file) {
+  ObjectTransform transform;
+  if (!c.has("transform")) return transform;
   const JsonCursor t = c["transform"];
-  const Vec3 scale = t.has("scale") ? t["scale"].scale3() : Vec3{1, 1, 1};
-  if (scale.x == 0 || scale.y == 0 || scale.z == 0) {
+  // A transform of another type, or a misspelt key in it, would otherwise leave the object
+  // silently where its mesh put it.
+  require_object(t, " with \"scale\", \"rotate_deg\" or \"translate\"");
+  warn_unknown(t, {"scale", "rotate_deg", "translate"}, ctx, file);
+  if (t.has("scale")) transform.scale = t["scale"].scale3();
+  if (const Vec3 scale = transform.scale; scale.x == 0 || scale.y == 0 || scale.z == 0) {
     t["scale"].fail("a zero scale flattens the object to nothing");
   }
-  const Vec3 rotate = t.has("rotate_deg") ? t["rotate_deg"].vec3() : Vec3{};
-  const Vec3 translate = t.has("translate") ? t["translate"].vec3() : Vec3{};
-  apply_transform(positions, scale, rotate, translate);
+  if (t.has("rotate_deg")) transform.rotate_deg = t["rotate_deg"].vec3();
+  if (t.has("translate")) transform.translate = t["translate"].vec3();
+  return transform;
 }
 
 // Segments per patch edge of a Catmull-Clark object's tessellation, kTessellationForView
@@ -168,7 +207,9 @@ void read_objects(const JsonCursor& list, const fs::path& dir, SceneSource& scen
     std::vector<GeneratedObject> parts;
     if (c.has("mesh")) {
       warn_unknown(c, {"mesh", "transform", "name", "subdivision", "tessellation"}, ctx, file);
-      const fs::path mesh_path = dir / c["mesh"].string();
+      const std::string mesh = c["mesh"].string();
+      if (mesh.empty()) c["mesh"].fail("is an empty path");
+      const fs::path mesh_path = dir / mesh;
       parts.push_back({mesh_path.stem().string(), read_mesh_file(mesh_path, ctx).soup});
     } else if (c.has("generator")) {
       parts = generate_objects(c.value(), c.where());
@@ -177,9 +218,11 @@ void read_objects(const JsonCursor& list, const fs::path& dir, SceneSource& scen
     }
     const int segments = tessellation_segments(c);
     const std::string name = c.has("name") ? c["name"].string() : "";
+    const ObjectTransform transform = read_transform(c, ctx, file);
     std::uint32_t first_face = 0;
     for (GeneratedObject& part : parts) {
-      apply_object_transform(c, part.soup.positions);
+      apply_transform(part.soup.positions, transform.scale, transform.rotate_deg,
+                      transform.translate);
       const auto faces = std::uint32_t(part.soup.face_count());
       scene.objects.push_back({name.empty() ? part.name : name, std::move(part.soup), segments,
                                c.where(), first_entry + std::uint32_t(i), first_face});
@@ -218,8 +261,14 @@ Scene load_scene_file(const fs::path& path, const Context& ctx) {
   SceneSource scene;
   if (root.has("generator")) {
     scene = generated_scene(root, file);
-  } else if (!root.has("camera")) {
-    throw InputError(file + ": key 'camera'", "is missing");
+  } else {
+    // Without a built-in scene's camera to start from, the view must be given; the other
+    // camera keys have defaults (docs/scene-format.md, "Defaults").
+    const JsonCursor camera = root["camera"];
+    require_object(camera, "");
+    for (const std::string key : {"position", "look_at"}) {
+      if (!camera.has(key)) throw InputError(file + ": key 'camera." + key + "'", "is missing");
+    }
   }
   scene.name = path.stem().string();
   scene.where = file;

@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "scene_file_test_fixture.h"
@@ -101,6 +102,74 @@ TEST_F(SceneFileTest, OverflowingTransformIsRejected) {
   EXPECT_THAT(
       error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0], "fov_y_deg": 1e-300)")),
       HasSubstr("key 'camera.fov_y_deg': must lie between"));
+}
+
+// Values that would otherwise be skipped, leaving a default camera or an untransformed
+// object where the file meant something else.
+TEST_F(SceneFileTest, ValuesOfTheWrongKindAreRejectedNotSkipped) {
+  EXPECT_THAT(error_of(scene(R"("look_at": [0, 0, 0])")),
+              HasSubstr("key 'camera.position': is missing"));
+  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12])")),
+              HasSubstr("key 'camera.look_at': is missing"));
+  EXPECT_THAT(error_of(R"({"camera": 5, "lights": []})"),
+              HasSubstr("key 'camera': expected an object, got number"));
+  for (const std::string transform : {"[1]", "null", "2"}) {
+    EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                               R"({"type": "point", "position": [3, 10, 4]})",
+                               R"({"mesh": "ground.obj", "transform": )" + transform + "}")),
+                HasSubstr("key 'objects[0].transform': expected an object"));
+  }
+  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                             R"({"type": "point", "position": [3, 10, 4]})", R"({"mesh": ""})")),
+              HasSubstr("key 'objects[0].mesh': is an empty path"));
+}
+
+TEST_F(SceneFileTest, MisspeltTransformKeysAreWarnedAbout) {
+  std::vector<std::string> warnings;
+  const Context ctx{0, [&](const std::string& m) { warnings.push_back(m); }};
+  const Scene s = load_scene_file(
+      write("scene.json", scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                                R"({"type": "point", "position": [3, 10, 4]})",
+                                R"({"mesh": "ground.obj", "transform": {"rotate": [90, 0, 0],
+                                                  "translate": [0, 1, 0]}})")),
+      ctx);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_THAT(warnings[0], HasSubstr("key 'objects[0].transform.rotate' is not part of the "
+                                     "scene format; ignored"));
+  EXPECT_DOUBLE_EQ(s.world_bounds().lo.y, 1);
+  EXPECT_DOUBLE_EQ(s.world_bounds().hi.x, 5);
+}
+
+// nlohmann keeps the last of two equal keys; the first would be dropped unseen.
+TEST_F(SceneFileTest, AKeyGivenTwiceInOneObjectIsRejectedByItsPath) {
+  EXPECT_THAT(error_of(R"({"camera": {"position": [0, 4, 12], "look_at": [0, 0, 0]},
+                           "camera": {"position": [0, 1, 12], "look_at": [0, 0, 0]}})"),
+              HasSubstr("scene.json: key 'camera': is given twice in one object"));
+  EXPECT_THAT(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                             R"({"type": "point", "position": [3, 10, 4]},
+                                {"type": "directional", "direction": [0, -1, 0], "type": "point"})")),
+              HasSubstr("key 'lights[1].type': is given twice in one object"));
+  // Equal keys in different objects are no repetition.
+  EXPECT_EQ(error_of(scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0])",
+                           R"({"type": "point", "position": [3, 10, 4]},
+                              {"type": "point", "position": [3, 10, 5]})")),
+            "no error");
+}
+
+// A direction's length may overflow or underflow double; its sense is still well defined.
+TEST_F(SceneFileTest, DirectionsOfAnyMagnitudeKeepTheirSense) {
+  const Scene s = load_scene_file(
+      write("scene.json",
+            scene(R"("position": [0, 4, 12], "look_at": [0, 0, 0], "up": [0, 1e-300, 0])",
+                  R"({"type": "directional", "direction": [1e300, -1e300, 0]},
+                     {"type": "directional", "direction": [3e-170, -1e-170, 0]})")),
+      quiet_);
+  ASSERT_EQ(s.lights.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.lights[0].direction.x, std::sqrt(0.5));
+  EXPECT_DOUBLE_EQ(s.lights[0].direction.y, -std::sqrt(0.5));
+  EXPECT_DOUBLE_EQ(s.lights[1].direction.x, 3 / std::sqrt(10.0));
+  EXPECT_DOUBLE_EQ(s.lights[1].direction.y, -1 / std::sqrt(10.0));
+  EXPECT_DOUBLE_EQ(s.camera.right().x, 1);
 }
 
 // The cube [0, 1]^3 as an OBJ control mesh, faces outward.

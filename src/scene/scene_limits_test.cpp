@@ -72,6 +72,23 @@ TEST_F(SceneFileTest, ImagesAreBoundedInPixels) {
               HasSubstr("key 'camera.width': expected a whole number from 1 to 16384, got 16385"));
 }
 
+// Every light's mask is held at once: a short file of many lights asked for gigabytes.
+TEST_F(SceneFileTest, LightsAreBoundedByTheirMasksPixels) {
+  auto with_lights = [](int count) {
+    std::string lights;
+    for (int i = 0; i < count; ++i) {
+      lights += std::string(i ? ", " : "") + R"({"type": "directional", "direction": [0, -1, 0]})";
+    }
+    // The default image, 1920x1080.
+    return R"({"camera": {"position": [0, 4, 12], "look_at": [0, 0, 0]}, "lights": [)" + lights +
+           "]}";
+  };
+  EXPECT_THAT(error_of(with_lights(1036)),
+              HasSubstr("key 'lights': 1036 lights of 2073600 pixels each make more than "
+                        "2147483648 mask pixels; at most 1035 lights fit this image"));
+  EXPECT_EQ(error_of(with_lights(1035)), "no error");
+}
+
 // A fine tessellation of a large control mesh once asked for 108 million triangles and ran
 // out of memory after two minutes, naming the wrong setting.
 TEST_F(SceneFileTest, TessellationIsRefusedBeforeItIsBuilt) {

@@ -18,6 +18,11 @@ inline constexpr std::size_t kPolygons = std::size_t{1} << 24;
 inline constexpr int kImageSide = 16384;
 inline constexpr std::int64_t kPixels = std::int64_t{1} << 25;  // 8K UHD fits
 
+/// Mask pixels of all lights together: every light's mask is held at once (`render --image`
+/// and `compare` shade and compare them all), one byte a pixel. 64 lights of 8K UHD, or 1,035
+/// of 1920x1080, fit.
+inline constexpr std::int64_t kMaskPixels = std::int64_t{1} << 31;
+
 /// Largest absolute coordinate of a vertex, camera or light.
 inline constexpr double kCoordinate = 1e15;
 

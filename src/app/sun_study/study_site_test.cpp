@@ -167,6 +167,51 @@ TEST_F(StudySite, OptionsGivenAreCheckedBeforeTheScene) {
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
 
+// A step whose seconds overflow int64_t would make a step of negative length, which the
+// fraction plot's check stops on after the contract's files are half written.
+TEST_F(StudySite, AStepLongerThanAnyStudyIsAnErrorBeforeTheFolderIsMade) {
+  SunStudyOptions o = at(study(scene("plain.json", ""), "out"), 48.85, 2.35, 1, 0);
+  o.step_minutes = 1e300;
+  EXPECT_EQ(error_of(o),
+            "--step: must be at most 1e10 minutes (19,000 years), longer than any study");
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  o.step_minutes = 1e10;  // the longest: one step
+  run(o);
+  EXPECT_EQ(settings("out")["steps"], 1);
+  EXPECT_EQ(settings("out")["step_seconds"], 600'000'000'000);
+}
+
+// Local times in the years 0000 and 9999 may fall outside them in UTC, where times.csv has
+// no four-digit year to write; the scene's own offset counts as much as --utc-offset.
+TEST_F(StudySite, StepsOutsideTheYears0000To9999InUtcAreAnError) {
+  SunStudyOptions o = at(study(scene("plain.json", ""), "out"), 48.85, 2.35, 5, 0);
+  o.from = "0000-01-01T04:00";
+  o.to = "0000-01-01T08:00";
+  EXPECT_EQ(error_of(o),
+            "--from '0000-01-01T04:00': lies before the year 0000 in UTC, which times.csv "
+            "cannot write");
+  o.from = "9999-12-31T20:00";
+  o.to = "9999-12-31T23:59";
+  o.utc_offset_hours = -5;
+  EXPECT_EQ(error_of(o),
+            "--to '9999-12-31T23:59': lies after the year 9999 in UTC, which times.csv "
+            "cannot write");
+  o.utc_offset_hours.reset();  // the scene's offset, 1, moves the steps back into range
+  o.scene = scene("site.json", kSceneSite);
+  o.from = "0000-01-01T00:00";
+  o.to = "0000-01-01T02:00";
+  EXPECT_EQ(error_of(o),
+            "--from '0000-01-01T00:00': lies before the year 0000 in UTC, which times.csv "
+            "cannot write");
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+  o.from = "0000-01-01T01:00";  // 0000-01-01T00:00:00Z
+  o.to = "0000-01-01T03:00";    // two-hour steps
+  run(o);
+  const std::string times = slurp(dir_ / "out" / "times.csv");
+  EXPECT_NE(times.find("\n0,0000-01-01T00:00:00Z,"), std::string::npos) << times;
+  EXPECT_NE(times.find("\n1,0000-01-01T02:00:00Z,"), std::string::npos) << times;
+}
+
 TEST(StudySiteOf, OptionsTakeThePlaceOfTheScenesKeys) {
   const sun::Site scene_site{48.85, 2.35, 1, 20};
   SunStudyOptions o;

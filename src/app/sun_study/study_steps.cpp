@@ -12,6 +12,15 @@ namespace {
 // The study's size in steps is bounded so that indices and the file of fractions stay in
 // reach: 19 years at one-minute steps.
 constexpr std::int64_t kMaxSteps = 10'000'000;
+// The longest step, 1e10 minutes (19,000 years), is longer than any study (its years have
+// four digits), so a longer one would change nothing; it keeps the step's seconds, and every
+// sum of steps, within int64_t.
+constexpr double kMaxStepMinutes = 1e10;
+// times.csv writes UTC with four-digit years (the contract's YYYY-MM-DDTHH:MM:SSZ), which
+// a local time in year 0000 or 9999 can leave.
+constexpr sun::Instant kFirstWritable = std::chrono::sys_days{std::chrono::year{0} / 1 / 1};
+constexpr sun::Instant kLastWritable =
+    std::chrono::sys_days{std::chrono::year{9999} / 12 / 31} + std::chrono::seconds{86399};
 // The most shards a study is cut into.
 constexpr std::int64_t kMaxShards = 1'000'000;
 
@@ -24,6 +33,10 @@ Steps study_steps(const SunStudyOptions& options, double utc_offset_hours) {
   const double seconds = options.step_minutes * 60;
   if (!(options.step_minutes > 0) || !std::isfinite(seconds)) {
     throw InputError("--step", "must be a positive number of minutes");
+  }
+  if (options.step_minutes > kMaxStepMinutes) {
+    throw InputError("--step",
+                     "must be at most 1e10 minutes (19,000 years), longer than any study");
   }
   if (seconds != std::round(seconds)) {
     throw InputError("--step",
@@ -38,6 +51,14 @@ Steps study_steps(const SunStudyOptions& options, double utc_offset_hours) {
   }
   steps.step_seconds = std::int64_t(seconds);
   steps.count = span / steps.step_seconds + 1;
+  if (steps.from < kFirstWritable) {
+    throw InputError("--from '" + options.from + "'",
+                     "lies before the year 0000 in UTC, which times.csv cannot write");
+  }
+  if (steps.at(steps.count - 1) > kLastWritable) {
+    throw InputError("--to '" + options.to + "'",
+                     "lies after the year 9999 in UTC, which times.csv cannot write");
+  }
   return steps;
 }
 

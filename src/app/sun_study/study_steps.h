@@ -20,7 +20,8 @@ struct Steps {
 
 /// The steps of \p options at a site whose local standard time is UTC + \p utc_offset_hours;
 /// InputError naming the option when they make no study. The offset moves every step alike,
-/// so whether they make a study, and how many steps, does not depend on it.
+/// so how many steps there are does not depend on it; only whether the first and last
+/// steps lie within the years 0000 to 9999 in UTC, as times.csv writes them, does.
 Steps study_steps(const SunStudyOptions& options, double utc_offset_hours);
 
 /// \brief The I-th of N contiguous blocks of steps whose sizes differ by one at most.

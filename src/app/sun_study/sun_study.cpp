@@ -100,7 +100,8 @@ void refuse_subdivision(const Scene& scene, const std::string& where) {
 
 int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
   // Every option is checked before the scene is read, and the site the scene completes right
-  // after it, all before DIR is touched. The steps' checks hold at any UTC offset.
+  // after it, all before DIR is touched. The steps' checks hold at any UTC offset but for
+  // the years of the first and last step in UTC, checked again once the site's offset is known.
   check_site_options(options);
   if (!options.settings.empty()) {
     throw InputError("--set",
@@ -111,7 +112,8 @@ int run_sun_study(const SunStudyOptions& options, const Context& ctx) {
     throw InputError("--heat-map-width",
                      "must be 0 (none) to " + std::to_string(kMaxHeatMapWidth) + " pixels");
   }
-  const Shard shard = study_shard(options.shard, study_steps(options, 0).count);
+  const Shard shard =
+      study_shard(options.shard, study_steps(options, options.utc_offset_hours.value_or(0)).count);
   if (options.out.empty()) throw InputError("--out", "needs a folder");
 
   const Clock::time_point load_start = Clock::now();

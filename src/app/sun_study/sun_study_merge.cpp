@@ -147,7 +147,15 @@ int merge_shards(const SunStudyMergeOptions& options, const Context& ctx) {
       if (!in.read(reinterpret_cast<char*>(raw.data()), std::streamsize(raw.size()))) {
         throw InputError(f32.string(), "cannot read");
       }
-      for (std::size_t p = 0; p < P; ++p) row[p] = read_float32_le(&raw[4 * p]);
+      for (std::size_t p = 0; p < P; ++p) {
+        row[p] = read_float32_le(&raw[4 * p]);
+        // A damaged file's NaN would be summed into sun_hours.csv as "nan".
+        if (!(row[p] >= 0 && row[p] <= 1)) {
+          throw InputError(f32.string(), "step " + std::to_string(k) + ", polygon " +
+                                             std::to_string(p) + ": " + std::to_string(row[p]) +
+                                             " is not a fraction from 0 to 1");
+        }
+      }
       add_sun_hours(row.data(), step_hours, hours);
       fractions_file.stream().write(reinterpret_cast<const char*>(raw.data()),
                                     std::streamsize(raw.size()));

@@ -9,12 +9,14 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "shadowkit/app/commands.h"
+#include "shadowkit/core/error.h"
 #include "shadowkit/methods/raytrace.h"
 #include "shadowkit/scene/scene_file.h"
 #include "shadowkit/scene/sun_position.h"
@@ -267,6 +269,34 @@ TEST_F(SunStudy, MergedShardsEqualOneRun) {
     EXPECT_TRUE(x == y) << report << " differs";
     EXPECT_FALSE(fs::exists(dir_ / "shard0" / report)) << "a shard writes no " << report;
   }
+}
+
+// A damaged shard's NaN would otherwise reach sun_hours.csv as "nan".
+TEST_F(SunStudy, MergeRefusesAShardValueThatIsNoFraction) {
+  SunStudyMergeOptions merge{{}, (dir_ / "merged").string()};
+  for (const int i : {0, 1}) {
+    SunStudyOptions shard =
+        study("table", 48, "2025-06-01T10:00", "2025-06-01T12:00", 60, "shard" + std::to_string(i));
+    shard.shard = std::to_string(i) + "/2";
+    run(shard);
+    merge.shards.push_back(shard.out);
+  }
+  const fs::path f32 = dir_ / "shard1" / "sunlit_fraction.f32";
+  {
+    std::fstream file(f32, std::ios::binary | std::ios::in | std::ios::out);
+    file.seekp(4 * 2);  // step 0, polygon 2
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    file.write(reinterpret_cast<const char*>(&nan), 4);
+  }
+  try {
+    run_sun_study_merge(merge, {});
+    FAIL() << "merged";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(f32.string() + ": step 0, polygon 2: "), std::string::npos) << what;
+    EXPECT_NE(what.find("is not a fraction from 0 to 1"), std::string::npos) << what;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "merged" / "sun_hours.csv"));
 }
 
 // Fractions against an independent estimate (testing/sampled_shadow.h), toward the
