@@ -120,8 +120,11 @@ std::map<std::string, MethodOptions> parse_settings(const std::vector<std::strin
   }
   std::map<std::string, MethodOptions> out;
   for (auto& [method, kv] : values) {
-    make_method(method, {});  // an unknown method name is an error here, not silently ignored
-    out.emplace(method, MethodOptions(method, std::move(kv)));
+    MethodOptions options(method, std::move(kv));
+    // An unknown method, key or value is an error here, also for a method the command does
+    // not run, rather than silently ignored.
+    make_method(method, options);
+    out.emplace(method, std::move(options));
   }
   return out;
 }

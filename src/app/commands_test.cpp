@@ -22,9 +22,12 @@ TEST(Settings, RejectsMalformedAndUnknown) {
               ::testing::ThrowsMessage<InputError>(HasSubstr("expected METHOD.KEY=VALUE")));
   EXPECT_THAT([] { parse_settings({"nosuch.key=1"}); },
               ::testing::ThrowsMessage<InputError>(HasSubstr("unknown method")));
-  const auto s = parse_settings({"shadowmap.resolution=big"});
-  EXPECT_THAT([&] { s.at("shadowmap").number("resolution", 0); },
+  EXPECT_THAT([] { parse_settings({"shadowmap.resolution=big"}); },
               ::testing::ThrowsMessage<InputError>(HasSubstr("expected a number, got 'big'")));
+  EXPECT_THAT([] { parse_settings({"volume.nosuch=1"}); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr("volume.nosuch")));
+  EXPECT_THAT([] { parse_settings({"angular.resolution=-3"}); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr("angular.resolution")));
 }
 
 }  // namespace

@@ -346,7 +346,7 @@ TEST_F(Cli, SunStudyBadOptionsExitWith2NamingTheOption) {
   expect_bad_input(study("45", day, noon, "60") + " --north 400", "--north");
   expect_bad_input(study("45", day, noon, "60") + " --heat-map-width -1", "--heat-map-width");
   expect_bad_input(study("45", day, noon, "60") + " --heat-map-width 9000", "--heat-map-width");
-  expect_bad_input(study("45", day, noon, "60") + " --set svbsp.merge=0", "--set");
+  expect_bad_input(study("45", day, noon, "60") + " --set svbsp.paper=1", "--set");
   expect_bad_input(
       study("45", day, noon, "60").substr(0, study("45", day, noon, "60").find(" --out")), "--out");
   EXPECT_FALSE(fs::exists(dir_ / "out"));  // refused before the folder is made

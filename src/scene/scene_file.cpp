@@ -358,6 +358,10 @@ Scene load_scene(const std::string& spec, const Context& ctx) {
   if (std::find(builtins.begin(), builtins.end(), name) != builtins.end()) {
     return make_builtin_scene(spec, ctx);
   }
+  if (fs::is_directory(spec, ec)) throw InputError(spec, "is a directory, not a scene file");
+  if (fs::exists(spec, ec)) {
+    throw InputError(spec, "is not a regular file (a device or a pipe), not a scene file");
+  }
   std::string list;
   for (const std::string& b : builtins) list += (list.empty() ? "" : ", ") + b;
   throw InputError(spec, "no such scene file or built-in scene (built-in scenes: " + list + ")");

@@ -276,6 +276,14 @@ TEST_F(SceneFileTest, UnknownSceneNameListsTheBuiltIns) {
   }
 }
 
+TEST_F(SceneFileTest, ADirectoryOrADeviceIsNoSceneFile) {
+  EXPECT_THAT([&] { load_scene(dir_.string(), quiet_); },
+              ::testing::ThrowsMessage<InputError>(HasSubstr("is a directory, not a scene file")));
+  EXPECT_THAT([&] { load_scene("/dev/null", quiet_); },
+              ::testing::ThrowsMessage<InputError>(
+                  HasSubstr("/dev/null: is not a regular file (a device or a pipe)")));
+}
+
 TEST_F(SceneFileTest, UnknownKeysAreWarnedAbout) {
   std::vector<std::string> warnings;
   const Context ctx{0, [&](const std::string& m) { warnings.push_back(m); }};
