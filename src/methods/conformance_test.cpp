@@ -140,7 +140,9 @@ const std::vector<SceneEntry>& scene_catalog() {
           "angular-light-axis-along-box-top.json", "angular-light-in-the-plane-of-box-bottoms.json",
           "angular-light-inside-touching-boxes.json", "angular-low-sun-along-a-torus.json",
           "angular-open-box-face-steep-to-the-light.json", "angular-prism-on-a-large-ground.json",
-          "angular-resolution-grazing-light.json", "angular-saturation-grazing-light.json",
+          "angular-resolution-grazing-light.json",
+          "angular-run-starting-on-an-occluders-plane.json",
+          "angular-saturation-grazing-light.json",
           "light-in-the-plane-of-a-ground-of-triangles.json",
           "raytrace-light-in-ceiling-plane.json", "svbsp-cut-point-snapped-off-a-knot-face.json",
           "volume-light-inside-box.json"}) {
@@ -425,6 +427,10 @@ const SceneTolerances kTolerances[] = {
                                                     4.5,    kExact, kExact, kAngular, kVoxelWideBand},
     {"sweep/angular-prism-on-a-large-ground.json",  0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-resolution-grazing-light.json", 0,      kExact, kExact, kAngular, kVoxelBand},
+    // A ground's scan line whose first lookup lies within the tolerance of the open box's
+    // wall plane, not behind it yet: the lit answer held to the pair's end (a row, 0.63%).
+    {"sweep/angular-run-starting-on-an-occluders-plane.json",
+                                                    0,      kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-saturation-grazing-light.json", 0,      kExact, kExact, kAngular, kVoxelBand},
     // A point light in the ground's plane, which in working coordinates lies a rounding
     // off the plane of the ground's triangles: the ground fails condition 1 in every method.
@@ -474,6 +480,9 @@ const struct {
     {"subdivision.json", 2.5},
     // Two fins, open non-manifold meshes, lit from their back around the light (1.9%).
     {"sweep/angular-fins-around-a-light-full-turn.json", 2.0},
+    // The light sees the inside of the open box, the back of the wall that shadows the
+    // ground: it casts nothing (21%).
+    {"sweep/angular-run-starting-on-an-occluders-plane.json", 21.5},
     // A point light in the plane of the ground and of the boxes' bottom faces (5.2%, not
     // examined).
     {"sweep/angular-light-in-the-plane-of-box-bottoms.json", 5.5},
@@ -750,8 +759,10 @@ INSTANTIATE_TEST_SUITE_P(Conformance, Table, ::testing::ValuesIn(table_rows()),
 // is in the catalog: a new one cannot be left out of the table silently.
 TEST(SceneCatalog, HoldsEveryBuiltInAndExampleSceneWithARowPerMethod) {
   const auto in_catalog = [](const std::string& name) {
-    // The 584k-triangle knot is a benchmark scene: scale_test holds it to the same bars.
+    // The 584k-triangle knot is a benchmark scene: scale_test holds it to the same bars. The
+    // fold scene shows 153 pixels, too few for the table: angular's scenes_test holds it.
     return name == "knot-600k.json" ||
+           name == "sweep/angular-visible-point-past-a-fold-edge.json" ||
            std::any_of(scene_catalog().begin(), scene_catalog().end(),
                        [&](const SceneEntry& e) { return e.name == name; });
   };

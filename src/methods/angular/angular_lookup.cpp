@@ -9,6 +9,24 @@
 namespace shadowkit::angular {
 namespace {
 
+// How far beyond a pair's face a point may lie for the test against its own face's outline
+// (OwnFace) to be made, in depth tolerances: the scan converter's rounding puts a point
+// outside its face by far less, and the test is rare.
+constexpr double kOffFaceReach = 1000;
+
+// Whether \p h passes no farther beyond the queried point than the point lies outside its
+// own face, and the camera sees it from the light's side: the neighbour across the edge,
+// truly seen there, is then lit by condition 1, not a shadow on the point. Seen from the
+// other side, it stays a shadow, as condition 1 would have it.
+bool within_off_face_rounding(const HiddenFace& h, const LookupQuery& query) {
+  if (!query.own_face) return false;
+  const double beyond = -h.plane.at(query.local) * h.light_side;  // in |a| units
+  const double reach = kOffFaceReach * query.depth_tolerance;
+  if (!(beyond * beyond < reach * reach * dot(h.plane.a, h.plane.a))) return false;
+  if (!(h.plane.at(query.own_face->eye) * h.light_side > 0)) return false;
+  return beyond / length(h.plane.a) <= query.own_face->outside(query.local) + query.depth_tolerance;
+}
+
 // Sec. 7's lookup in list \p k of \p lists (an entry of the table, or a block of entries).
 LookupResult lookup_in(const AngularTable& table, const PairLists& lists, int k,
                        const ScanLineRun& run, const LookupQuery& query) {
@@ -25,16 +43,20 @@ LookupResult lookup_in(const AngularTable& table, const PairLists& lists, int k,
     // Sec. 5: the pair is one hidden face's cut, so its depth is the face's plane.
     const HiddenFace& h = table.hidden(pair.hidden);
     if (h.face == query.face) return false;  // a planar face never shadows itself
-    const double change = run.crossing(h.plane, query.column);
     if (h.behind(query.local, query.depth_tolerance) &&
         (!query.cull_faces_behind ||
          table.reaches_front_of(pair.hidden, query.face_plane, query.face_light_side,
-                                query.depth_tolerance))) {
+                                query.depth_tolerance)) &&
+        !within_off_face_rounding(h, query)) {
       const double end = run.phi_crossing(up ? pair.phi_end : pair.phi_begin, query.column);
-      next_x = std::min(end, change);
+      next_x = std::min(end, run.crossing(h.plane, query.column));
       return true;
     }
-    next_x = std::min(next_x, change);  // the run may pass behind this face in the pair
+    // The run may pass behind this face in the pair: where it gets beyond the plane by the
+    // tolerance, which a point within it, not behind yet, has passed the plane itself.
+    const FrameAffine behind_by_tolerance{h.plane.a,
+                                          h.plane.b + h.light_side * query.depth_tolerance};
+    next_x = std::min(next_x, run.crossing(behind_by_tolerance, query.column));
     return false;
   };
   // Shadow is a logical OR: the first pair that shadows the point answers (Sec. 7).

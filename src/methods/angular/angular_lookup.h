@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "angular_table.h"
+#include "own_face.h"
 #include "scan_line_run.h"
 
 namespace shadowkit::angular {
@@ -30,6 +31,10 @@ struct LookupQuery {
   /// Skip faces wholly behind the point's face (AngularTable::reaches_front_of), an exact
   /// assist the papers do not have (angular.exact).
   bool cull_faces_behind = true;
+  /// Its face as the scan converter chose it: a pair's face that passes nearer the point
+  /// than the point lies outside its own face shadows it only by the scan converter's
+  /// rounding, and does not (angular.exact; none: every pair counts).
+  const OwnFace* own_face = nullptr;
 };
 
 /// Sec. 7: scans entry theta's pairs holding phi, stops at the first pair that shadows the

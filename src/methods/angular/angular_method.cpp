@@ -161,6 +161,7 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
                                      ShadowMask& mask, int row) const {
   const Camera& cam = scene.camera;
   const ThetaQuantization& quant = table_.theta();
+  const Vec3 eye = frame_->local(cam.position);
   std::size_t lookups = 0;
   BlockTries tries;
   int x = 0;
@@ -183,6 +184,8 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
       continue;
     }
     const ScanLineRun run(*frame_, cam, plane, row);
+    const SceneObject& object = scene.objects[scene.object_of_face(face)];
+    const OwnFace own_face{&object.mesh, scene.local_face(face), &*frame_, eye};
     const FrameAffine face_plane = frame_->plane(plane);
     const double face_light_side = light_side(plane, light_) > 0 ? 1 : -1;
     int k = -2;  // the entry of the previous run, unknown at the start of the stretch
@@ -201,6 +204,7 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
       query.phi_increasing = run.phi_increasing(x);
       query.depth_tolerance = depth_tolerance_;
       query.cull_faces_behind = exact_;
+      query.own_face = exact_ ? &own_face : nullptr;
       const LookupResult result = exact_ && grazed(query, frame_->point_light())
                                       ? lookup_grazing(table_, *frame_, run, query, k)
                                       : lookup(table_, run, query);

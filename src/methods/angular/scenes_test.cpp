@@ -148,6 +148,17 @@ TEST(AngularScenes, TheGrazedFaceRecheckFindsFacesBetweenTheSlices) {
   }
 }
 
+// A pixel centre on the edge between two faces of the open sheet, at a fold of about a
+// degree: the scan converter's snapped edges give it the farther face, and its point on that
+// face's plane lies 1e-7 of the sheet past the edge, just beyond the plane of the nearer face,
+// the one truly seen there. That face, lit, shadowed it: one pixel of the view's 28 interior
+// ones, at any R. The exact assists (OwnFace) leave it lit.
+TEST(AngularScenes, APointPastAFoldEdgeIsNotShadowedByTheFaceSeenThere) {
+  const Scene scene = sweep("angular-visible-point-past-a-fold-edge.json");
+  EXPECT_EQ(worst_interior_mismatch(scene), 0);
+  EXPECT_GT(worst_interior_mismatch(scene, MethodOptions("angular", {{"exact", "0"}})), 1.0);
+}
+
 // A point light in the plane of the boxes' bottom faces, on the bottom of the lower box:
 // the box's walls shadow everything above that plane. The bottom edges that the light's X
 // axis passes through cross every slice on the axis, and run half a turn in theta; rounding
