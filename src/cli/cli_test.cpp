@@ -157,6 +157,8 @@ TEST_F(Cli, VoxelRenderWritesBothViews) {
       "--image " +
           (dir_ / "c.png").string() + " --turned-image " + (dir_ / "d.png").string(),
       "--turned-image");
+  expect_bad_input("voxel-render square --image " + (dir_ / "c.png").string() + " --turn 30",
+                   "--turn requires --turned-image");
 }
 
 TEST_F(Cli, VoxelRenderRefusesATurnThatIsNoNumber) {

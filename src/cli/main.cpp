@@ -99,10 +99,14 @@ int main(int argc, char** argv) {
       "voxel.framebuffer=0 (Lai & Cheng §5)");
   add_shared(voxel_render_cmd, voxel_render, shared);
   voxel_render_cmd->add_option("--image", voxel_render.image, "PNG file")->required();
-  voxel_render_cmd->add_option("--turned-image", voxel_render.turned_image,
-                               "PNG file of a second view, with no new shadow work");
-  voxel_render_cmd->add_option("--turn", voxel_render.turn_deg,
-                               "degrees the second view turns around the camera's target");
+  auto* turned_image =
+      voxel_render_cmd->add_option("--turned-image", voxel_render.turned_image,
+                                   "PNG file of a second view, with no new shadow work");
+  // Without the second view the turn would be silently ignored.
+  voxel_render_cmd
+      ->add_option("--turn", voxel_render.turn_deg,
+                   "degrees the second view turns around the camera's target")
+      ->needs(turned_image);
 
   SunStudyOptions sun_study;
   auto* sun_study_cmd = app.add_subcommand(

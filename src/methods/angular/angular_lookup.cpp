@@ -52,8 +52,8 @@ LookupResult lookup_in(const AngularTable& table, const PairLists& lists, int k,
       next_x = std::min(end, run.crossing(h.plane, query.column));
       return true;
     }
-    // The run may pass behind this face in the pair: where it gets beyond the plane by the
-    // tolerance, which a point within it, not behind yet, has passed the plane itself.
+    // The run may pass behind this face in the pair, where it gets beyond the plane by the
+    // tolerance: a point within the tolerance, not behind yet, may have passed the plane.
     const FrameAffine behind_by_tolerance{h.plane.a,
                                           h.plane.b + h.light_side * query.depth_tolerance};
     next_x = std::min(next_x, run.crossing(behind_by_tolerance, query.column));
