@@ -523,11 +523,8 @@ void place_nodes(const GltfSource& src, GltfMeshes& meshes, MeshFile& file) {
 // Files tinygltf may open: only those the glTF names, read by us with errors we word.
 bool read_referenced_file(std::vector<unsigned char>* out, std::string* err,
                           const std::string& path, void* /*user*/) {
-  // A device or a pipe may never end (/dev/zero, a FIFO that no one writes to).
-  std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::status(path, error);
-  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
-    *err += "it is not a regular file";
+  if (const std::string why = why_not_a_file(path); !why.empty()) {
+    *err += why;
     return false;
   }
   std::ifstream in(path, std::ios::binary);

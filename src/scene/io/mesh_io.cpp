@@ -12,19 +12,24 @@
 #include "shadowkit/core/error.h"
 
 namespace shadowkit {
+
+std::string mesh_io::why_not_a_file(const std::filesystem::path& path) {
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (std::filesystem::is_directory(status)) return "it is a directory";
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    return "it is not a regular file";
+  }
+  return "";
+}
+
 namespace {
 
 using File = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
 
 File open_file(const std::filesystem::path& path, const std::string& where) {
-  std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::status(path, error);
-  if (std::filesystem::is_directory(status)) {
-    throw InputError(where, "cannot read the file: it is a directory");
-  }
-  // A device or a pipe may never end (/dev/zero, a FIFO that no one writes to).
-  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
-    throw InputError(where, "cannot read the file: it is not a regular file");
+  if (const std::string why = mesh_io::why_not_a_file(path); !why.empty()) {
+    throw InputError(where, "cannot read the file: " + why);
   }
   // stdio rather than iostreams: errno then says why opening failed.
   File file(std::fopen(path.c_str(), "rb"), &std::fclose);
