@@ -2,6 +2,7 @@
 /// \brief Chin & Feiner 1989 shadow-volume BSP trees: the scene's faces split into lit and
 /// shadowed fragments in object space, one SVBSP tree per light.
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <vector>
@@ -44,9 +45,10 @@ class SunlitAreas {
   /// arriving from \p toward_light (a unit vector toward the light) reaches, in world units
   /// (scene units squared). Surfaces are two-sided: every face casts shadows, whichever side
   /// the light sees, and the lit area is that of the side facing the light; a face whose
-  /// plane holds the light has none. The sum runs over the face's lit fragments in a fixed
-  /// order, so the result does not depend on threads. Thread-safe: calls share the scene
-  /// BSP tree read-only.
+  /// plane holds the light has none. The sun study's polygons never shade themselves: the
+  /// triangles of a warped input polygon (Mesh::input_faces) cast no shadow on one another. The sum
+  /// runs over the face's lit fragments in a fixed order, so the result does not depend on threads.
+  /// Thread-safe: calls share the scene BSP tree read-only.
   std::vector<double> lit_areas(Vec3 toward_light) const;
 
   /// The same, and in \p mask the light's shadow mask for \p surfaces (the scene camera's
@@ -61,7 +63,8 @@ class SunlitAreas {
 
   const Scene& scene_;
   std::unique_ptr<const SceneBsp> bsp_;
-  std::vector<char> outward_solid_faces_;  ///< per face: skipped when turned from the light
+  std::vector<std::int32_t> split_polygons_;  ///< per face: SplitPolygons (svbsp_tree.h)
+  std::vector<char> outward_solid_faces_;     ///< per face: skipped when turned from the light
 };
 
 }  // namespace shadowkit::svbsp

@@ -238,6 +238,24 @@ TEST_F(SunStudy, UnobstructedRoofSunHoursAreTheDaylightSteps) {
   EXPECT_GT(roof, 100u);
 }
 
+// "A polygon never shades itself", also when it is warped: a saddle roof, kept as two
+// triangles folded along a diagonal that hide each other from a low sun, is wholly sunlit
+// while the sun is up (its Newell normal is +y).
+TEST_F(SunStudy, AWarpedRoofDoesNotShadeItself) {
+  const fs::path scene = obj_scene("v 0 2 -3\nv 3 4 0\nv 0 2 3\nv -3 4 0\nf 1 4 3 2\n");
+  run(study(scene.string(), 40, "2025-06-21T00:00", "2025-06-21T23:45", 15, "out"));
+  const Table times = read_csv(dir_ / "out" / "times.csv");
+  const std::vector<float> f = read_fractions(dir_ / "out" / "sunlit_fraction.f32");
+  ASSERT_EQ(f.size(), 96u);
+  int low = 0;
+  for (std::size_t k = 0; k < 96; ++k) {
+    const double elevation = std::stod(times[k + 1][3]);
+    EXPECT_NEAR(f[k], elevation > 0 ? 1.0 : 0.0, 1e-6) << "step " << k;
+    low += elevation > 0 && elevation < 20;
+  }
+  EXPECT_GT(low, 8);  // suns low enough for the fold to hide one triangle from them
+}
+
 TEST_F(SunStudy, FilesDoNotDependOnThreads) {
   const SunStudyOptions one = study("table", 48, "2025-06-01T04:00", "2025-06-01T20:00", 60, "one");
   SunStudyOptions two = one;

@@ -59,7 +59,8 @@ FrontFacing front_facing(const Scene& scene, const Light& light) {
 
 ShadowGenerator::ShadowGenerator(const Scene& scene, const Light& light,
                                  const GeneratorSettings& settings, ShadowedWhole shadowed_whole,
-                                 const ConvexSolids* solids)
+                                 const ConvexSolids* solids,
+                                 std::span<const std::int32_t> split_polygons)
     : scene_(scene),
       light_(light),
       settings_(settings),
@@ -67,7 +68,7 @@ ShadowGenerator::ShadowGenerator(const Scene& scene, const Light& light,
       solids_(solids),
       in_plane_(in_plane_tolerance(scene, light)),
       tree_(light, plane_tolerance(scene, light), settings.merge_siblings,
-            settings.skip_edges_in_tree) {}
+            settings.skip_edges_in_tree, split_polygons) {}
 
 void ShadowGenerator::divide(std::span<const ConvexPolygon> pieces) {
   std::size_t levels = 0;

@@ -65,9 +65,11 @@ class ShadowGenerator {
   static constexpr std::size_t kPiecesPerCell = 1024;
 
   /// \p solids: the convex solids of the scene BSP tree's solid leaves (§6, contour edges);
-  /// null when it has none.
+  /// null when it has none. \p split_polygons: the polygons that do not shadow themselves
+  /// (SplitPolygons), kept by the caller while the generator lives.
   ShadowGenerator(const Scene& scene, const Light& light, const GeneratorSettings& settings = {},
-                  ShadowedWhole shadowed_whole = {}, const ConvexSolids* solids = nullptr);
+                  ShadowedWhole shadowed_whole = {}, const ConvexSolids* solids = nullptr,
+                  std::span<const std::int32_t> split_polygons = {});
 
   /// Whether the light lies in the plane of \p piece's face: the piece is shadowed and
   /// casts nothing (Fig. 3).

@@ -1,5 +1,6 @@
 // The lit area of every face for a sequence of directional lights (the sun study): one
 // scene BSP tree (§3), one SVBSP tree per light (§4), areas summed as fragments come.
+#include <algorithm>
 #include <span>
 
 #include "fragment_raster.h"
@@ -10,12 +11,34 @@
 namespace shadowkit::svbsp {
 namespace {
 
+// SplitPolygons: a polygon is named by its first face.
+SplitPolygons split_polygons(const Scene& scene) {
+  SplitPolygons polygon(scene.face_count(), -1);
+  for (const SceneObject& object : scene.objects) {
+    const std::vector<std::uint32_t>& input = object.mesh.input_faces;
+    for (std::size_t f = 0, end = 0; f < input.size(); f = end) {
+      for (end = f + 1; end < input.size() && input[end] == input[f];) ++end;
+      if (end - f < 2) continue;
+      std::fill(polygon.begin() + std::ptrdiff_t(object.first_face + f),
+                polygon.begin() + std::ptrdiff_t(object.first_face + end),
+                std::int32_t(object.first_face + f));
+    }
+  }
+  return polygon;
+}
+
 // Per global face: 1 when it bounds an outward solid (OutwardSolids): turned from the sun,
-// it neither receives light nor casts a shadow that the solid does not.
-std::vector<char> outward_solid_faces(const Scene& scene) {
+// it neither receives light nor casts a shadow that the solid does not. Not for a solid with
+// a split polygon: its far side may see the sun through its own polygon's near side.
+std::vector<char> outward_solid_faces(const Scene& scene, const SplitPolygons& split) {
+  const OutwardSolids& solids = scene.outward_solids();
+  std::vector<char> split_solid(solids.size());
+  for (std::uint32_t f = 0; f < scene.face_count(); ++f) {
+    if (split[f] >= 0 && solids.bounds_solid(f)) split_solid[std::size_t(solids.solid_of(f))] = 1;
+  }
   std::vector<char> outward(scene.face_count());
   for (std::uint32_t f = 0; f < scene.face_count(); ++f) {
-    outward[f] = scene.outward_solids().bounds_solid(f);
+    outward[f] = solids.bounds_solid(f) && !split_solid[std::size_t(solids.solid_of(f))];
   }
   return outward;
 }
@@ -25,7 +48,8 @@ std::vector<char> outward_solid_faces(const Scene& scene) {
 SunlitAreas::SunlitAreas(const Scene& scene)
     : scene_(scene),
       bsp_(std::make_unique<const SceneBsp>(SceneBsp::build(scene))),
-      outward_solid_faces_(outward_solid_faces(scene)) {}
+      split_polygons_(split_polygons(scene)),
+      outward_solid_faces_(outward_solid_faces(scene, split_polygons_)) {}
 
 SunlitAreas::~SunlitAreas() = default;
 
@@ -45,9 +69,10 @@ std::vector<double> SunlitAreas::filter(Vec3 toward_light, std::vector<Fragment>
   const Light light = Light::directional(-toward_light);
   std::vector<double> lit(scene_.face_count(), 0.0);
   // The sun is outside every solid: a face of one is on its far side when turned away.
-  ShadowGenerator generator(scene_, light, {}, [&](std::uint32_t face) {
+  const auto far_side = [&](std::uint32_t face) {
     return outward_solid_faces_[face] && dot(scene_.face_plane(face).normal, toward_light) < 0;
-  });
+  };
+  ShadowGenerator generator(scene_, light, {}, far_side, nullptr, split_polygons_);
   generator.divide(bsp_->pieces());
   // Fragments are summed node by node and dropped: only the tree must grow (§4), not the
   // list of every fragment the fragments command keeps.

@@ -25,11 +25,12 @@ bool make_shadow_plane(const Light& light, Vec3 a, Vec3 b, Vec3 inside, ShadowPl
   return true;
 }
 
-std::int32_t SvbspTree::chain(std::span<const ShadowPlane> planes) {
-  std::int32_t first = kIn, last = -1;
+std::int32_t SvbspTree::chain(std::span<const ShadowPlane> planes, std::int32_t outside,
+                              std::int32_t inside) {
+  std::int32_t first = inside, last = -1;
   for (const ShadowPlane& s : planes) {
     const std::int32_t index = std::int32_t(nodes_.size());
-    nodes_.push_back({s, kOut, kIn});
+    nodes_.push_back({s, outside, inside});
     if (last >= 0)
       nodes_[last].positive = index;
     else
@@ -41,8 +42,9 @@ std::int32_t SvbspTree::chain(std::span<const ShadowPlane> planes) {
 
 // The shadow volume of a lit fragment as a chain of its shadow planes (buildSVBSPtree of
 // Fig. 4 for a convex polygon).
-std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p) {
-  const Vec3 inside = centroid(p);
+std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p, std::int32_t outside,
+                                      std::int32_t inside) {
+  const Vec3 centre = centroid(p);
   const std::size_t n = p.vertices.size();
   absl::InlinedVector<ShadowPlane, ConvexPolygon::kInlineCorners> planes;
   bool undefined = false;
@@ -50,7 +52,7 @@ std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p) {
     // §6: an edge in a plane that already bounds this cell needs no plane of its own.
     if (skip_edges_in_tree_ && p.edge_in_tree[i]) continue;
     ShadowPlane s;
-    if (make_shadow_plane(light_, p.vertices[i], p.vertices[(i + 1) % n], inside, s)) {
+    if (make_shadow_plane(light_, p.vertices[i], p.vertices[(i + 1) % n], centre, s)) {
       planes.push_back(s);
     } else {
       undefined = true;
@@ -58,7 +60,16 @@ std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p) {
   }
   // Every edge on the cell's walls: the volume fills the cell. No plane at all because the
   // fragment is degenerate: it casts nothing.
-  return planes.empty() && undefined ? kOut : chain(planes);
+  return planes.empty() && undefined ? outside : chain(planes, outside, inside);
+}
+
+SvbspTree::Verdict SvbspTree::verdict(const ConvexPolygon& p, std::int32_t leaf) const {
+  const std::int32_t polygon = split_polygons_.empty() ? -1 : split_polygons_[p.face];
+  if (leaf == kOut) return {true, polygon < 0 ? kIn : shadow_of(polygon)};
+  if (leaf == kIn) return {false, kIn};
+  // In the shadow of one split polygon alone: lit if it is p's own, which adds no shadow
+  // there; else shadowed, and in p's volume two polygons shadow.
+  return leaf == shadow_of(polygon) ? Verdict{true, leaf} : Verdict{false, kIn};
 }
 
 void SvbspTree::enlarge_by_contour(std::vector<Landing> landings,
@@ -162,10 +173,10 @@ void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive, con
     }
     return;
   }
-  const bool lit = at == kOut;
-  if (lit && sinks.enlarge) slot(parent, positive) = shadow_volume(p);
-  if (lit && sinks.landings) sinks.landings->push_back({parent, positive, p});
-  if (sinks.out) sinks.out->push_back({std::move(p), lit});
+  const Verdict v = verdict(p, at);
+  if (sinks.enlarge && v.inside != at) slot(parent, positive) = shadow_volume(p, at, v.inside);
+  if (at == kOut && sinks.landings) sinks.landings->push_back({parent, positive, p});
+  if (sinks.out) sinks.out->push_back({std::move(p), v.lit});
 }
 
 }  // namespace shadowkit::svbsp

@@ -1,6 +1,7 @@
 #pragma once
 // The shadow volume BSP tree of one light (§4): internal nodes are shadow planes, leaves are
-// IN (inside the merged shadow volume) and OUT cells.
+// IN (inside the merged shadow volume) and OUT cells, and for polygons that must not shadow
+// themselves, cells in the shadow of one such polygon alone.
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -24,6 +25,12 @@ struct ShadowPlane {
   Plane plane;
 };
 
+/// Per global face, an id of the input polygon it is part of when that polygon became several
+/// faces (Mesh::build keeps a warped polygon as triangles), -1 otherwise. Such a polygon never
+/// shadows itself (sun-study.md): its faces see past one another, and the tree keeps, apart
+/// from IN, the cells in the shadow of one of them alone.
+using SplitPolygons = std::vector<std::int32_t>;
+
 /// \brief A lit fragment and the OUT leaf it reached, named by its parent node (-1: the root)
 /// and side, as they stood before any volume replaced a leaf.
 struct Landing {
@@ -46,12 +53,14 @@ class SvbspTree {
   /// polygon (convex, and their union: they share the cut edge).
   /// \p skip_edges_in_tree (§6): an edge lying in a plane that already bounds the cell gets
   /// no plane of its own.
+  /// \p split_polygons: see SplitPolygons; empty, every face may shadow every other.
   SvbspTree(const Light& light, double eps, bool merge_siblings = true,
-            bool skip_edges_in_tree = true)
+            bool skip_edges_in_tree = true, std::span<const std::int32_t> split_polygons = {})
       : light_(light),
         eps_(eps),
         merge_siblings_(merge_siblings),
-        skip_edges_in_tree_(skip_edges_in_tree) {}
+        skip_edges_in_tree_(skip_edges_in_tree),
+        split_polygons_(split_polygons) {}
 
   /// determineShadow of Fig. 4: filters \p p down the tree, appends its shadowed (IN) and
   /// lit (OUT) fragments to \p out, and replaces each OUT cell reached by the shadow volume
@@ -86,7 +95,10 @@ class SvbspTree {
   std::size_t memory_bytes() const { return nodes_.capacity() * sizeof(Node); }
 
  private:
+  // Leaves: IN, OUT, and below kOut the cells in the shadow of split polygon `kOut - 1 - leaf`
+  // alone, IN for every other polygon and OUT for that one.
   static constexpr std::int32_t kIn = -1, kOut = -2;
+  static constexpr std::int32_t shadow_of(std::int32_t polygon) { return kOut - 1 - polygon; }
   struct Node {
     ShadowPlane shadow_plane;
     std::int32_t negative = kOut, positive = kOut;
@@ -104,14 +116,23 @@ class SvbspTree {
   // The cells of divide() over \p points: a subtree of OUT leaves.
   std::int32_t cells(const LightView& view, std::span<LightView::Coordinates> points,
                      std::size_t levels);
-  std::int32_t shadow_volume(const ConvexPolygon& p);
-  // Links \p planes into one volume: outside any of them OUT, inside all of them IN.
-  std::int32_t chain(std::span<const ShadowPlane> planes);
+  // Where fragment \p p reached \p leaf: whether it is lit, and the leaf after its volume.
+  struct Verdict {
+    bool lit;
+    std::int32_t inside;  ///< the leaf inside p's volume; \p leaf itself when it adds nothing
+  };
+  Verdict verdict(const ConvexPolygon& p, std::int32_t leaf) const;
+  // The volume of \p p in a cell that was leaf \p outside, with leaf \p inside within it.
+  std::int32_t shadow_volume(const ConvexPolygon& p, std::int32_t outside, std::int32_t inside);
+  // Links \p planes into one volume: outside any of them \p outside, inside all \p inside.
+  std::int32_t chain(std::span<const ShadowPlane> planes, std::int32_t outside = kOut,
+                     std::int32_t inside = kIn);
 
   Light light_;
   double eps_;
   bool merge_siblings_;
   bool skip_edges_in_tree_;
+  std::span<const std::int32_t> split_polygons_;
   std::int32_t root_ = kOut;
   std::vector<Node> nodes_;
 };
