@@ -216,8 +216,14 @@ int run_compare(const CompareOptions& options, const Context& ctx) {
 int run_bench(const BenchOptions& options, const Context& ctx) {
   const std::vector<std::string> methods = checked_methods(options.methods);
   for (const std::string& m : methods) make_method(m, settings_for(options, m));
-  if (options.repeats < 1) throw InputError("--repeats", "needs at least one timed run");
-  if (options.warmup < 0) throw InputError("--warmup", "cannot be negative");
+  // Each timed run keeps its times: a bound keeps a mistyped count from filling memory.
+  constexpr int kMostRuns = 100000;
+  if (options.repeats < 1 || options.repeats > kMostRuns) {
+    throw InputError("--repeats", "needs 1 to 100000 timed runs");
+  }
+  if (options.warmup < 0 || options.warmup > kMostRuns) {
+    throw InputError("--warmup", "needs 0 to 100000 untimed runs");
+  }
   const LoadedScene loaded = timed_load(options.scene, ctx);
   const Scene& scene = loaded.scene;
   const Repetitions reps{options.warmup, options.repeats};

@@ -134,6 +134,8 @@ TEST_F(Cli, BadInputIsOneLineAndExitStatusTwo) {
                        (dir_ / "m").string(),
                    "shadowmap.nosuch");
   expect_bad_input("bench", "SCENE");
+  expect_bad_input("bench tetra:1 --repeats 1000000000", "--repeats: needs 1 to 100000 timed runs");
+  expect_bad_input("bench tetra:1 --warmup -1", "--warmup: needs 0 to 100000 untimed runs");
 }
 
 TEST_F(Cli, VoxelRenderWritesBothViews) {

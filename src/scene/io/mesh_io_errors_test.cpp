@@ -131,6 +131,37 @@ TEST_F(MeshIoErrorTest, NonFiniteCoordinatesInTextFormats) {
               HasSubstr(at("inf.stl", 4) + "facet 0 has a non-finite coordinate (infinity)"));
 }
 
+// Beyond limits::kCoordinate a scene cannot hold a vertex: the reader names its line.
+TEST_F(MeshIoErrorTest, CoordinatesBeyondTheRangeNameTheirLine) {
+  EXPECT_THAT(error("far.obj", "v 0 0 0\nv 1 2e15 0\nv 0 1 0\nf 1 2 3\n"),
+              HasSubstr(at("far.obj", 2) +
+                        "vertex 2 has a coordinate beyond +-1e15 (2e15), which is not supported"));
+  EXPECT_THAT(error("far.off", "OFF\n3 1 0\n0 0 0\n-1.5e300 0 0\n0 1 0\n3 0 1 2\n"),
+              HasSubstr(at("far.off", 4) + "vertex 1 has a coordinate beyond +-1e15 (-1.5e300)"));
+  EXPECT_NO_THROW(
+      read_mesh_file(write("edge.obj", "v 0 0 0\nv 1e15 0 0\nv 0 -1e15 0\nf 1 2 3\n"), ctx_));
+  std::string ply = cube_ply_binary(false);
+  const double far = 3e20;
+  std::memcpy(&ply[ply.find("end_header\n") + 11 + 3 * 31 + 8 + 2], &far, 8);  // vertex 3's y
+  EXPECT_THAT(error("far.ply", ply),
+              HasSubstr(at("far.ply") + "vertex 3 has a coordinate beyond +-1e15 (3e+20)"));
+}
+
+// After a face's indices OFF allows its colour, at most four numbers, and nothing else.
+TEST_F(MeshIoErrorTest, OffFaceLinesEndWithAColourOrNothing) {
+  const std::string head = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n";
+  EXPECT_THAT(error("junk.off", head + "3 0 1 2 junk\n"),
+              HasSubstr(at("junk.off", 6) + "face 0: expected at most a colour (up to 4 numbers) "
+                                            "after its vertex indices, found 'junk'"));
+  EXPECT_THAT(error("five.off", head + "3 0 1 2 0.1 0.2 0.3 1 7\n"), HasSubstr("found '7'"));
+  for (const char* colour : {"", " 4", " 255 0 0", " 0.5 0.5 0.5 1"}) {
+    EXPECT_EQ(read_mesh_file(write("colour.off", head + "3 0 1 2" + colour + "\n"), ctx_)
+                  .soup.face_count(),
+              1u)
+        << colour;
+  }
+}
+
 TEST_F(MeshIoErrorTest, NonFiniteCoordinatesInBinaryFormats) {
   std::string ply = cube_ply_binary(false);
   const std::size_t body = ply.find("end_header\n") + 11;

@@ -98,7 +98,15 @@ MeshFile read_off(std::string_view data, const std::string& path, const Context&
       }
       face.push_back(static_cast<std::uint32_t>(index));
     }
-    // Any values left on the line are the face's colour.
+    // What is left on the line is the face's colour: an index, or 3 or 4 components.
+    for (int component = 0; !in.line_done(); ++component) {
+      const std::string_view text = in.token();
+      double value = 0;
+      if (component == 4 || !parse_double(text, value)) {
+        in.fail("face " + std::to_string(f) + ": expected at most a colour (up to 4 numbers) " +
+                "after its vertex indices, found " + quote(text));
+      }
+    }
     if (!face.empty()) soup.add_face(face);
   }
   file.stored_polygons = soup.face_count();

@@ -382,9 +382,9 @@ void read_body(const Header& header, Source& in, MeshFile& file) {
       in.end_item(element);
       if (is_vertex) {
         for (int axis = 0; axis < 3; ++axis) {
-          if (!std::isfinite(point[axis])) {
-            in.fail("vertex " + std::to_string(i) + " has a non-finite coordinate (" +
-                    format_number(point[axis]) + ")");
+          if (const std::string fault = coordinate_fault(point[axis], format_number(point[axis]));
+              !fault.empty()) {
+            in.fail("vertex " + std::to_string(i) + " has " + fault);
           }
         }
         soup.positions.push_back(point);

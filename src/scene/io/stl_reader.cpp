@@ -74,9 +74,9 @@ PolygonSoup read_binary(std::string_view data, const std::string& path) {
       Vec3 p;
       for (int axis = 0; axis < 3; ++axis) {
         const auto value = load_little_endian<float>(record + 12 * (corner + 1) + 4 * axis);
-        if (!std::isfinite(value)) {
-          throw InputError(path, "triangle " + std::to_string(t) +
-                                     " has a non-finite coordinate (" + format_number(value) + ")");
+        if (const std::string fault = coordinate_fault(value, format_number(value));
+            !fault.empty()) {
+          throw InputError(path, "triangle " + std::to_string(t) + " has " + fault);
         }
         p[axis] = value;
       }

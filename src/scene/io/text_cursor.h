@@ -11,6 +11,7 @@
 
 #include "shadowkit/core/error.h"
 #include "shadowkit/core/vec.h"
+#include "shadowkit/scene/limits.h"
 
 namespace shadowkit::mesh_io {
 
@@ -52,6 +53,15 @@ inline std::string printable(std::string_view text, std::size_t longest) {
     shown += u < 0x20 || u == 0x7f ? '?' : c;
   }
   return shown + (text.size() > longest ? "..." : "");
+}
+
+/// What is wrong with \p value, written \p shown, as a vertex coordinate ("a non-finite
+/// coordinate (nan)"), or nothing: a scene's coordinates lie within +-limits::kCoordinate.
+inline std::string coordinate_fault(double value, std::string_view shown) {
+  if (std::abs(value) <= limits::kCoordinate) return {};
+  const std::string written = " (" + printable(shown, 40) + ")";
+  return std::isfinite(value) ? "a coordinate beyond +-1e15" + written + ", which is not supported"
+                              : "a non-finite coordinate" + written;
 }
 
 /// A token quoted for a message, cut short and with control bytes masked.
@@ -165,8 +175,8 @@ class TextCursor {
     return value;
   }
 
-  /// Reads "x y z" and insists on finite values; \p noun and \p number name the point in the
-  /// message ("vertex 3 has a non-finite coordinate (nan)").
+  /// Reads "x y z" and insists on coordinates (coordinate_fault); \p noun and \p number name
+  /// the point in the message ("vertex 3 has a non-finite coordinate (nan)").
   Vec3 read_point(std::string_view noun, std::int64_t number) {
     static constexpr std::string_view kAxes[] = {"an x coordinate", "a y coordinate",
                                                  "a z coordinate"};
@@ -174,9 +184,8 @@ class TextCursor {
     for (int axis = 0; axis < 3; ++axis) {
       std::string_view text = token();
       if (!parse_double(text, point[axis])) fail_expected(kAxes[axis], text);
-      if (!std::isfinite(point[axis])) {
-        fail(std::string(noun) + " " + std::to_string(number) + " has a non-finite coordinate (" +
-             std::string(text) + ")");
+      if (const std::string fault = coordinate_fault(point[axis], text); !fault.empty()) {
+        fail(std::string(noun) + " " + std::to_string(number) + " has " + fault);
       }
     }
     return point;
