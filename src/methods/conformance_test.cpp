@@ -483,8 +483,9 @@ const struct {
     // The light sees the inside of the open box, the back of the wall that shadows the
     // ground: it casts nothing (21%).
     {"sweep/angular-run-starting-on-an-occluders-plane.json", 21.5},
-    // A point light in the plane of the ground and of the boxes' bottom faces (5.2%, not
-    // examined).
+    // A point light on the bottom face of one of the boxes, in its plane and within it: every
+    // other face of that box is turned from it, so the box casts nothing, and the side of
+    // the box stacked above, which it hides from the light, is lit (5.2%).
     {"sweep/angular-light-in-the-plane-of-box-bottoms.json", 5.5},
     // A light inside a closed box: every wall is turned from it, so nothing casts and the
     // ground around the box is lit (14%, 95%, 80%).

@@ -136,9 +136,9 @@ int isolated_shadowed_voxels(const VoxelMethod& method) {
 
 // §4.2 on the paper's Fig. 5 objects (examples/subdivision.json). A sample on the curved
 // surface lies below the flat side of a coarser neighbouring subpatch where the surface is
-// concave (the torus's inner side): tested from the surface, its ray hits that chord a few
-// thousandths of a voxel away. It once left 45 isolated shadowed voxels at M = 256 and 179
-// at M = 512, and 3 and 33 dark specks in the mask. The few dark specks left at M = 512 lie on
+// concave (the torus's inner side): tested from the surface, as the paper writes it, its ray
+// hits that chord a few thousandths of a voxel away, and the voxel is shadowed alone among
+// lit ones (16 at M = 256). The few dark specks left at M = 512 lie on
 // terminators, where the limit surface the voxels sample and the tessellation raytrace sees
 // turn from the light at slightly different places.
 TEST(VoxelSpecks, TopologyTestLeavesNoneOnTheFigure5Objects) {
@@ -157,7 +157,7 @@ TEST(VoxelSpecks, TopologyTestLeavesNoneOnTheFigure5Objects) {
   // As the paper writes it (voxel.paper=1: every hit from the sample on), they are back.
   VoxelMethod paper(voxel_options({{"resolution", "256"}, {"paper", "1"}}));
   testing::method_mask(paper, scene, vsb, 0);
-  EXPECT_GT(isolated_shadowed_voxels(paper), 10);  // 16
+  EXPECT_GT(isolated_shadowed_voxels(paper), 10);
 }
 
 // One subpatch more than voxel.max_subpatches allows is refused in prepare(), with the

@@ -139,10 +139,10 @@ double distance_to(const PolygonSoup& soup, Vec3 p) {
   return best;
 }
 
-// The limit surface at random points lies within a pixel of the tessellation for the view
-// (the cells are held to half a pixel at their centres and side midpoints), where the
-// uniform 8 x 8 of the same torus, seen from close, is more than a pixel off.
-TEST(ViewTessellation, TheLimitSurfaceStaysWithinAPixel) {
+// The limit surface at random points lies within half a pixel of the tessellation for the
+// view (the cells are held to it at their centres and side midpoints, and measure 0.42 pixel
+// here), where the uniform 8 x 8 of the same torus, seen from close, is more than a pixel off.
+TEST(ViewTessellation, TheLimitSurfaceStaysWithinHalfAPixel) {
   const auto surface = SubdivisionSurface::build(test::torus_control(), "torus");
   const ViewTolerance view = view_from({0.5, 3, 0.2});
   const PolygonSoup soup = surface->tessellate_for_view(view, std::size_t(1) << 22).soup;
@@ -159,7 +159,7 @@ TEST(ViewTessellation, TheLimitSurfaceStaysWithinAPixel) {
   }
   std::printf("the limit surface within %.3f pixels of the view's tessellation, %.3f of 8 x 8\n",
               worst, worst_uniform);
-  EXPECT_LE(worst, 1.0);
+  EXPECT_LE(worst, 0.5);
   EXPECT_GT(worst_uniform, 1.0);
 }
 
