@@ -5,8 +5,8 @@ the exact assists (angular.exact=1, the default) and without them (exact=0, the 
 method as published); R from eq. 4 as written (resolution=eq4) against the automatic R; and,
 with the light inside the room, one table over the turn against Sec. 11.2's two hemispheres
 (angular.light_inside); the RE-loops paper's own pairing against the far-sheet walk
-(angular.pairing), with the R sweep redone for each; and each of these settings on every
-built-in, example and sweep scene.
+(angular.pairing, and its rules alone: angular.fallback=0), with the R sweep redone for each;
+and each of these settings on every built-in, example and sweep scene.
 
     python3 scripts/papers/angular_r_sweep.py [--repeats N] [--out FILE]
 
@@ -34,7 +34,10 @@ SWEEP_SCENES = ["table", "coil", "holed", "cubes:500", "examples/default.json"]
 # 1080-row image, and beyond.
 RESOLUTIONS = ["99", "299", "599", "1080", "2160", "4320"]
 ROOM_SCENES = ["room", "examples/room.json"]
-PAIRINGS = ["walk", "paper"]
+# Each pairing's settings: the walk, the paper's rules checked against the far sheet (walked
+# where they fail), and its rules alone.
+PAIRINGS = {"walk": {"pairing": "walk"}, "paper": {"pairing": "paper"},
+            "paper, `fallback=0`": {"pairing": "paper", "fallback": 0}}
 PAIRING_SCENES = ["coil", "holed", "hole-like", "table", "cubes:500", "examples/house.json",
                   "examples/subdivision.json"]
 
@@ -82,7 +85,7 @@ def bench(scene, settings, repeats):
     return total
 
 
-def r_sweep(pairing):
+def r_sweep(pairing_settings):
     head = "| R |" + "".join(f" `{s}` exact=1 | exact=0 |" for s in SWEEP_SCENES)
     lines = [head, "|---|" + "---:|---:|" * len(SWEEP_SCENES)]
     for r in RESOLUTIONS + ["0", "eq4"]:
@@ -90,7 +93,7 @@ def r_sweep(pairing):
         for scene in SWEEP_SCENES:
             for exact in ("1", "0"):
                 pct, resolution = compare(scene, {"resolution": r, "exact": exact,
-                                                  "pairing": pairing})
+                                                  **pairing_settings})
                 shown = f"{pct:.4f}" if r in RESOLUTIONS else f"{pct:.4f} (R {resolution})"
                 cells.append(f" {shown} |")
         lines.append(f"| {label} |" + "".join(cells))
@@ -125,10 +128,10 @@ def pairings(repeats):
              "build ms | shade ms | mismatch % |",
              "|---|---|---:|---:|---:|---:|---:|---|---:|---:|---:|"]
     for scene in PAIRING_SCENES:
-        for pairing in PAIRINGS:
-            b = bench(scene, {"pairing": pairing}, repeats)
-            pct, resolution = compare(scene, {"pairing": pairing})
-            paper = pairing == "paper"
+        for pairing, settings in PAIRINGS.items():
+            b = bench(scene, settings, repeats)
+            pct, resolution = compare(scene, settings)
+            paper = settings["pairing"] == "paper"
             counts = (f"{b['re_pairs']:.0f} | {b['pairing_fallbacks']:.0f} | {b['vrepips']:.0f} | "
                       f"{b['paper_objects']:.0f}/{b['walked_objects']:.0f}") if paper else "– | – | – | –"
             lines.append(f"| `{scene}` | {pairing} | {resolution} | {b['table_pairs']:.0f} | "
@@ -140,7 +143,8 @@ def pairings(repeats):
 MODES = {"default": {}, "`exact=0`": {"exact": 0}, "`resolution=eq4`": {"resolution": "eq4"},
          "`light_inside=hemispheres`": {"light_inside": "hemispheres"},
          "all three": {"exact": 0, "resolution": "eq4", "light_inside": "hemispheres"},
-         "`pairing=paper`": {"pairing": "paper"}}
+         "`pairing=paper`": {"pairing": "paper"},
+         "`pairing=paper`, `fallback=0`": {"pairing": "paper", "fallback": 0}}
 
 
 def modes_everywhere():
@@ -164,12 +168,15 @@ def main():
     parser.add_argument("--out", default=str(PAGE))
     args = parser.parse_args()
     body = ["Interior mismatch (%) against raytrace, worst light, each scene at its own image "
-            "size; for the automatic R and eq4, each light's R:", ""] + r_sweep("walk")
+            "size; for the automatic R and eq4, each light's R:", ""] + r_sweep(PAIRINGS["walk"])
     body += ["", "The same with the RE-loops paper's pairing (`pairing=paper`):", ""]
-    body += r_sweep("paper")
+    body += r_sweep(PAIRINGS["paper"])
+    body += ["", "The same with the paper's rules alone (`pairing=paper`, `fallback=0`):", ""]
+    body += r_sweep(PAIRINGS["paper, `fallback=0`"])
     body += ["", "Paper pairing against the walk at the automatic R, summed over the lights "
              f"(times: medians of {args.repeats} runs; RE pairs, walked and objects are paper "
-             "pairing's counters):", ""] + pairings(args.repeats)
+             "pairing's counters; with `fallback=0`, walked counts the pairs left as the rules "
+             "made them):", ""] + pairings(args.repeats)
     body += ["", "The light inside the room, summed over its lights (times: medians of "
              f"{args.repeats} runs):", ""] + light_inside(args.repeats)
     body += ["", "Each setting on every built-in, example and sweep scene, worst light, at the "

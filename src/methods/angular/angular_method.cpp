@@ -65,14 +65,25 @@ bool paper_pairing(const MethodOptions& options) {
   return value == "paper";
 }
 
+// angular.fallback: with paper pairing, whether the pairs its rules cannot make are walked.
+bool walk_fallback(const MethodOptions& options, bool paper) {
+  const bool fallback = flag(options, "fallback", true);
+  if (!fallback && !paper) {
+    throw InputError("option 'angular.fallback'", "0 applies to pairing=paper only");
+  }
+  return fallback;
+}
+
 }  // namespace
 
 AngularMethod::AngularMethod(const MethodOptions& options) {
-  options.expect_only("angular", {"resolution", "saturated", "exact", "light_inside", "pairing"});
+  options.expect_only("angular",
+                      {"resolution", "saturated", "exact", "light_inside", "pairing", "fallback"});
   parse_resolution(options, table_options_);
   table_options_.saturated = flag(options, "saturated", true);
   table_options_.hemispheres = hemispheres(options);
   table_options_.paper_pairing = paper_pairing(options);
+  table_options_.walk_fallback = walk_fallback(options, table_options_.paper_pairing);
   exact_ = flag(options, "exact", true);
 }
 

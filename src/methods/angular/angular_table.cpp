@@ -540,7 +540,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
                          loops.hidden_id};
       if (work[i].whole_object) {
         pair_re_loops(m, loops.ridges, loops.loops, table.theta_, slices, local, lists[c],
-                      pairing.local());
+                      pairing.local(), options.walk_fallback);
       } else if (l < loops.loops.size()) {
         slice_loop(m, loops.ridges, loops.loops[l], table.theta_, slices, local, lists[c]);
       } else {

@@ -84,6 +84,9 @@ struct AngularTableOptions {
   /// RE-loops paper, Secs. 3.2-3.3 as written: branch pairs from local peaks, not the walk of
   /// the far sheets (which still pairs the objects the paper's scheme does not cover).
   bool paper_pairing = false;
+  /// With paper_pairing: a pair the rules leave without a partner, or whose hidden edges do
+  /// not lead to it, is walked instead. Off, the rules' pairs stand (insert_hidden_edges).
+  bool walk_fallback = true;
 };
 
 /// \brief How the pairs of a table were made, with paper pairing.
@@ -91,7 +94,7 @@ struct PairingCounts {
   double paper_objects = 0;   ///< objects paired by the paper's scheme
   double walked_objects = 0;  ///< objects it does not cover (open, thin, around the light)
   double re_pairs = 0;        ///< begin-end pairs of ridge edges it made
-  double fallbacks = 0;       ///< of those, the begins walked instead
+  double fallbacks = 0;       ///< of those, the begins walked instead (kept, without the walk)
   double vrepips = 0;         ///< VREPIPs the loops were split at (RE-loops paper, Sec. 2.2)
 };
 

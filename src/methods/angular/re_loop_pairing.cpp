@@ -325,9 +325,8 @@ bool fill_pair(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const ReP
     phi = c->phi;
     f = std::uint32_t(next);
   }
-  if (ridges[std::size_t(p.end)].face != f) return false;
   out.push_back({p.entry, m.hidden_id[f], phi, p.to.phi});
-  return true;
+  return ridges[std::size_t(p.end)].face == f;
 }
 
 // Entries whose centre may lie in [lo, hi], one more at each end against rounding.
@@ -397,23 +396,24 @@ SplitLoops split_loops(const SlicedMesh& m, std::span<const RidgeEdge> ridges, c
 void pair_loops(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
                 std::span<const RidgeEdgeLoop> loops, const ThetaQuantization& q,
                 std::span<const ThetaSlice> slices, SliceScratch& scratch,
-                std::vector<EntryPair>& out, PairingStats& stats) {
+                std::vector<EntryPair>& out, PairingStats& stats, bool walk_fallback) {
   const LoopBranches branches = split_into_branches(m, ridges, loops, slices[0].point_light);
   const std::vector<RePair> pairs = pair_branches(m, ridges, branches, q, slices);
   const std::vector<std::uint32_t> hidden = hidden_edges(m.mesh, m.sheets);
-  insert_hidden_edges(m, ridges, hidden, pairs, slices, scratch, out, stats);
+  insert_hidden_edges(m, ridges, hidden, pairs, slices, scratch, out, stats, walk_fallback);
 }
 
 // Secs. 2.2 and 3.2-3.3: the loops split at \p v's VREPIPs, their pieces paired.
 void pair_split_loops(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
                       std::span<const RidgeEdgeLoop> loops, const Vrepips& v,
                       const ThetaQuantization& q, std::span<const ThetaSlice> slices,
-                      SliceScratch& scratch, std::vector<EntryPair>& out, PairingStats& stats) {
+                      SliceScratch& scratch, std::vector<EntryPair>& out, PairingStats& stats,
+                      bool walk_fallback) {
   const bool point_light = slices[0].point_light;
   const SplitLoops split = split_loops(
       m, ridges, v, split_at_vrepips(m.local, ridges, loops, v, point_light), point_light);
   const SlicedMesh in_pieces{m.mesh, m.sheets, split.local, split.theta, m.hidden_id};
-  pair_loops(in_pieces, split.ridges, split.loops, q, slices, scratch, out, stats);
+  pair_loops(in_pieces, split.ridges, split.loops, q, slices, scratch, out, stats, walk_fallback);
 }
 
 }  // namespace
@@ -475,7 +475,7 @@ std::vector<std::uint32_t> hidden_edges(const Mesh& mesh, const FarSheets& sheet
 void insert_hidden_edges(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
                          std::span<const std::uint32_t> hidden, std::span<const RePair> pairs,
                          std::span<const ThetaSlice> slices, SliceScratch& scratch,
-                         std::vector<EntryPair>& out, PairingStats& stats) {
+                         std::vector<EntryPair>& out, PairingStats& stats, bool walk_fallback) {
   if (slices.empty()) return;
   HiddenEdgeSweep sweep(m, hidden, slices[0].point_light);
   std::vector<Crossing> at_slice;
@@ -490,8 +490,11 @@ void insert_hidden_edges(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
     const std::size_t mark = out.size();
     if (p.end >= 0 && fill_pair(m, ridges, p, at_slice, out)) continue;
     // Hazard: no partner, or faces that do not lead to it: walked instead, and counted.
-    out.resize(mark);
+    // Without the walk, the rules' pairs stay as they are: a begin without a partner shadows
+    // nothing, and the last face the hidden edges led to ends the pair.
     ++stats.fallbacks;
+    if (!walk_fallback) continue;
+    out.resize(mark);
     scratch.path.clear();
     walk(m, s, ridges[p.begin].face, p.from, scratch, out);
   }
@@ -506,11 +509,11 @@ bool paper_pairing_applies(const FarSheets& sheets, std::span<const RidgeEdgeLoo
 void pair_re_loops(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
                    std::span<const RidgeEdgeLoop> loops, const ThetaQuantization& q,
                    std::span<const ThetaSlice> slices, SliceScratch& scratch,
-                   std::vector<EntryPair>& out, PairingStats& stats) {
+                   std::vector<EntryPair>& out, PairingStats& stats, bool walk_fallback) {
   if (slices.empty()) return;
   const std::size_t mark = out.size();
   PairingStats whole;
-  pair_loops(m, ridges, loops, q, slices, scratch, out, whole);
+  pair_loops(m, ridges, loops, q, slices, scratch, out, whole, walk_fallback);
   const bool point_light = slices[0].point_light;
   const Vrepips v =
       whole.fallbacks == 0
@@ -519,7 +522,7 @@ void pair_re_loops(const SlicedMesh& m, std::span<const RidgeEdge> ridges,
   if (!v.points.empty()) {
     std::vector<EntryPair> split_out;
     PairingStats split{0, 0, v.points.size()};
-    pair_split_loops(m, ridges, loops, v, q, slices, scratch, split_out, split);
+    pair_split_loops(m, ridges, loops, v, q, slices, scratch, split_out, split, walk_fallback);
     // Hazard: a split at a VREPIP can pair what the far sheet does not join (the split loops
     // are the shadow polygons' outlines, not the far sheet's layers): it is kept only where
     // its pairs fall back less.

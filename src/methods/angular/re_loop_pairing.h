@@ -63,7 +63,8 @@ std::vector<RePair> pair_branches(const SlicedMesh& mesh, std::span<const RidgeE
 /// \brief What paper pairing did: its pairs, and the ones it could not make on its own.
 struct PairingStats {
   std::size_t re_pairs = 0;
-  std::size_t fallbacks = 0;  ///< begins walked instead: no partner, or an inconsistent one
+  std::size_t fallbacks = 0;  ///< begins with no partner, or an inconsistent one: walked
+                              ///< instead, unless the walk is off
   std::size_t vrepips = 0;    ///< VREPIPs the loops were split at (Sec. 2.2)
 };
 
@@ -78,11 +79,14 @@ std::vector<std::uint32_t> hidden_edges(const Mesh& mesh, const FarSheets& sheet
 /// duplicate: a pair per hidden face. Of the crossings between the ends, those not on the
 /// current face are another layer's (a coil's) and are passed over. A begin whose crossings
 /// do not lead face by face to its partner (a hole inserted into the wrong pair, a vertex on
-/// the slice) is walked across its far sheet instead and counted in \p stats.
+/// the slice) is counted in \p stats and, with \p walk_fallback, walked across its far sheet
+/// instead. Without it the rules' pairs stand: a begin without a partner pairs nothing, and a
+/// pair whose hidden edges lead elsewhere ends on the face they lead to.
 void insert_hidden_edges(const SlicedMesh& mesh, std::span<const RidgeEdge> ridges,
                          std::span<const std::uint32_t> hidden, std::span<const RePair> pairs,
                          std::span<const ThetaSlice> slices, SliceScratch& scratch,
-                         std::vector<EntryPair>& out, PairingStats& stats);
+                         std::vector<EntryPair>& out, PairingStats& stats,
+                         bool walk_fallback = true);
 
 /// The paper's pairing applies to one object: a closed, consistently oriented solid whose RE
 /// loops are closed and stay on one side of the light's back (no theta wrap, no piercing of
@@ -93,10 +97,10 @@ bool paper_pairing_applies(const FarSheets& sheets, std::span<const RidgeEdgeLoo
 /// Secs. 3.2-3.3 for all of one object's RE loops: split_into_branches, pair_branches,
 /// insert_hidden_edges. Where pairs fall back, the loops are also split (Sec. 2.2) at the
 /// VREPIPs where their VREs go opposite ways in theta and paired again in pieces; the split
-/// is kept when fewer of its pairs fall back.
+/// is kept when fewer of its pairs fall back. \p walk_fallback: see insert_hidden_edges.
 void pair_re_loops(const SlicedMesh& mesh, std::span<const RidgeEdge> ridges,
                    std::span<const RidgeEdgeLoop> loops, const ThetaQuantization& q,
                    std::span<const ThetaSlice> slices, SliceScratch& scratch,
-                   std::vector<EntryPair>& out, PairingStats& stats);
+                   std::vector<EntryPair>& out, PairingStats& stats, bool walk_fallback = true);
 
 }  // namespace shadowkit::angular

@@ -261,6 +261,35 @@ TEST(AngularScenes, PaperPairingShadowsThePapersObjectsAsTheWalkDoes) {
   }
 }
 
+// Without the walk (angular.fallback=0) the rules' own pairs stand. On the paper's hole-like
+// object, the pairs of the band below the notch floor end on the face their hidden edges
+// lead to, not their partner's: that band loses most of its shadow. Where the rules pair all
+// (the coil), nothing changes.
+TEST(AngularScenes, WithoutTheWalkThePapersRulesLoseTheBandBelowTheNotch) {
+  const auto pixels_differing = [](const char* spec) {
+    const Scene scene = reduced(load_scene(spec, {}));
+    const VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+    AngularMethod walked(MethodOptions("angular", {{"pairing", "paper"}}));
+    AngularMethod alone(MethodOptions("angular", {{"pairing", "paper"}, {"fallback", "0"}}));
+    const ShadowMask a = testing::method_mask(walked, scene, vsb, 0);
+    const ShadowMask b = testing::method_mask(alone, scene, vsb, 0);
+    EXPECT_EQ(testing::counter(alone, "pairing_fallbacks"),
+              testing::counter(walked, "pairing_fallbacks"));
+    std::size_t lost = 0, differ = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      differ += a.pixels[i] != b.pixels[i];
+      lost += a.pixels[i] == kMaskShadow && b.pixels[i] == kMaskLit;
+    }
+    EXPECT_GE(lost * 10, differ * 9) << spec;  // the rules' pairs mostly miss shadow here
+    return differ;
+  };
+  EXPECT_GT(pixels_differing("hole-like"), 20u);
+  EXPECT_EQ(pixels_differing("coil"), 0u);
+  EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"fallback", "0"}})), InputError);
+  EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"pairing", "paper"}, {"fallback", "2"}})),
+               InputError);
+}
+
 TEST(AngularScenes, RejectsAResolutionThatIsNotAWholeNumber) {
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"resolution", "2.5"}})), InputError);
   EXPECT_THROW(AngularMethod(MethodOptions("angular", {{"bias", "1"}})), InputError);
