@@ -28,7 +28,8 @@ std::vector<SettingInfo> method_settings(std::string_view method) {
             {"saturated", "1", flag, ""},
             {"exact", "1", flag, ""},
             {"light_inside", "turn", {"turn", "hemispheres"}, ""},
-            {"pairing", "walk", {"walk", "paper"}, ""}};
+            {"pairing", "walk", {"walk", "paper"}, ""},
+            {"fallback", "1", flag, ""}};
   }
   if (method == "svbsp") {  // "": 1, or 0 with paper=1
     return {{"paper", "0", flag, ""},         {"contour_planes", "0", flag, ""},

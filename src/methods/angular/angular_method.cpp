@@ -69,7 +69,7 @@ bool paper_pairing(const MethodOptions& options) {
 bool walk_fallback(const MethodOptions& options, bool paper) {
   const bool fallback = flag(options, "fallback", true);
   if (!fallback && !paper) {
-    throw InputError("option 'angular.fallback'", "0 applies to pairing=paper only");
+    throw InputError("option 'angular.fallback'", "0 needs angular.pairing=paper");
   }
   return fallback;
 }
