@@ -2,7 +2,6 @@
 /// \brief Chin & Feiner 1989 shadow-volume BSP trees: the scene's faces split into lit and
 /// shadowed fragments in object space, one SVBSP tree per light.
 #include <cstddef>
-#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <vector>
@@ -30,6 +29,7 @@ FragmentsWritten write_fragments(const Scene& scene, const std::filesystem::path
 
 class SceneBsp;
 struct Fragment;
+struct SplitPolygons;
 
 /// \brief The lit area of every scene face for one directional light after another, as the
 /// sun study needs it: the scene BSP tree is built once (Chin & Feiner §3: its front-to-back
@@ -63,8 +63,8 @@ class SunlitAreas {
 
   const Scene& scene_;
   std::unique_ptr<const SceneBsp> bsp_;
-  std::vector<std::int32_t> split_polygons_;  ///< per face: SplitPolygons (svbsp_tree.h)
-  std::vector<char> outward_solid_faces_;     ///< per face: skipped when turned from the light
+  std::unique_ptr<const SplitPolygons> split_;  ///< warped polygons (svbsp_tree.h)
+  std::vector<char> outward_solid_faces_;       ///< per face: skipped when turned from the light
 };
 
 }  // namespace shadowkit::svbsp

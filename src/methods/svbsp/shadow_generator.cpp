@@ -59,8 +59,7 @@ FrontFacing front_facing(const Scene& scene, const Light& light) {
 
 ShadowGenerator::ShadowGenerator(const Scene& scene, const Light& light,
                                  const GeneratorSettings& settings, ShadowedWhole shadowed_whole,
-                                 const ConvexSolids* solids,
-                                 std::span<const std::int32_t> split_polygons)
+                                 const ConvexSolids* solids, const SplitPolygons* split)
     : scene_(scene),
       light_(light),
       settings_(settings),
@@ -68,7 +67,7 @@ ShadowGenerator::ShadowGenerator(const Scene& scene, const Light& light,
       solids_(solids),
       in_plane_(in_plane_tolerance(scene, light)),
       tree_(light, plane_tolerance(scene, light), settings.merge_siblings,
-            settings.skip_edges_in_tree, split_polygons) {}
+            settings.skip_edges_in_tree, split) {}
 
 void ShadowGenerator::divide(std::span<const ConvexPolygon> pieces) {
   std::size_t levels = 0;
@@ -109,6 +108,11 @@ void ShadowGenerator::keep_whole_if_uniform(const ConvexPolygon& piece, std::siz
 }
 
 void ShadowGenerator::process(NodePieces node, std::vector<Fragment>& out) {
+  process_node(node, out);
+  for (const ConvexPolygon& piece : node.pieces) tree_.piece_done(piece);
+}
+
+void ShadowGenerator::process_node(NodePieces node, std::vector<Fragment>& out) {
   if (node.solid < 0) return process_coplanar(node.pieces, out);
   const std::size_t solid = std::size_t(node.solid);
   // A convex solid is a unit only for a light outside it, which some face then turns to.

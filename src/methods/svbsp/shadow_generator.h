@@ -65,11 +65,11 @@ class ShadowGenerator {
   static constexpr std::size_t kPiecesPerCell = 1024;
 
   /// \p solids: the convex solids of the scene BSP tree's solid leaves (§6, contour edges);
-  /// null when it has none. \p split_polygons: the polygons that do not shadow themselves
-  /// (SplitPolygons), kept by the caller while the generator lives.
+  /// null when it has none. \p split: the polygons that do not shadow themselves
+  /// (SplitPolygons), kept by the caller while the generator lives; null for none.
   ShadowGenerator(const Scene& scene, const Light& light, const GeneratorSettings& settings = {},
                   ShadowedWhole shadowed_whole = {}, const ConvexSolids* solids = nullptr,
-                  std::span<const std::int32_t> split_polygons = {});
+                  const SplitPolygons* split = nullptr);
 
   /// Whether the light lies in the plane of \p piece's face: the piece is shadowed and
   /// casts nothing (Fig. 3).
@@ -100,6 +100,7 @@ class ShadowGenerator {
   // Whether \p piece is filtered: the light is off its plane, and with one-sided surfaces in
   // front of it (Fig. 3).
   bool facing(const ConvexPolygon& piece) const;
+  void process_node(NodePieces node, std::vector<Fragment>& out);
   void process_coplanar(std::span<const ConvexPolygon> coplanar, std::vector<Fragment>& out);
   void process_solid(std::span<const ConvexPolygon> faces, std::size_t solid,
                      std::vector<Fragment>& out);

@@ -64,12 +64,14 @@ std::int32_t SvbspTree::shadow_volume(const ConvexPolygon& p, std::int32_t outsi
 }
 
 SvbspTree::Verdict SvbspTree::verdict(const ConvexPolygon& p, std::int32_t leaf) const {
-  const std::int32_t polygon = split_polygons_.empty() ? -1 : split_polygons_[p.face];
+  const std::int32_t polygon = split_ ? split_->of_face[p.face] : -1;
   if (leaf == kOut) return {true, polygon < 0 ? kIn : shadow_of(polygon)};
   if (leaf == kIn) return {false, kIn};
   // In the shadow of one split polygon alone: lit if it is p's own, which adds no shadow
-  // there; else shadowed, and in p's volume two polygons shadow.
-  return leaf == shadow_of(polygon) ? Verdict{true, leaf} : Verdict{false, kIn};
+  // there; else shadowed, and in p's volume two polygons shadow, which matters only to that
+  // polygon's pieces still to come.
+  if (leaf == shadow_of(polygon)) return {true, leaf};
+  return {false, pending_pieces_[std::size_t(kOut - 1 - leaf)] > 0 ? kIn : leaf};
 }
 
 void SvbspTree::enlarge_by_contour(std::vector<Landing> landings,

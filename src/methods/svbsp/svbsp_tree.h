@@ -25,11 +25,17 @@ struct ShadowPlane {
   Plane plane;
 };
 
-/// Per global face, an id of the input polygon it is part of when that polygon became several
-/// faces (Mesh::build keeps a warped polygon as triangles), -1 otherwise. Such a polygon never
-/// shadows itself (sun-study.md): its faces see past one another, and the tree keeps, apart
-/// from IN, the cells in the shadow of one of them alone.
-using SplitPolygons = std::vector<std::int32_t>;
+/// \brief The input polygons that became several faces (Mesh::build keeps a warped polygon as
+/// triangles). Such a polygon never shadows itself (sun-study.md): its faces see past one
+/// another, and the tree keeps, apart from IN, the cells in the shadow of one of them alone.
+struct SplitPolygons {
+  /// Per global face: the id of its polygon (the polygon's first face), -1 when its polygon
+  /// is that face alone.
+  std::vector<std::int32_t> of_face;
+  /// Per polygon id: the scene pieces of its faces. Once the last of them is filtered, the
+  /// cells in its shadow alone are as IN for every piece after.
+  std::vector<std::uint32_t> pieces;
+};
 
 /// \brief A lit fragment and the OUT leaf it reached, named by its parent node (-1: the root)
 /// and side, as they stood before any volume replaced a leaf.
@@ -53,14 +59,16 @@ class SvbspTree {
   /// polygon (convex, and their union: they share the cut edge).
   /// \p skip_edges_in_tree (§6): an edge lying in a plane that already bounds the cell gets
   /// no plane of its own.
-  /// \p split_polygons: see SplitPolygons; empty, every face may shadow every other.
+  /// \p split: see SplitPolygons, kept by the caller while the tree lives; null, every face
+  /// may shadow every other.
   SvbspTree(const Light& light, double eps, bool merge_siblings = true,
-            bool skip_edges_in_tree = true, std::span<const std::int32_t> split_polygons = {})
+            bool skip_edges_in_tree = true, const SplitPolygons* split = nullptr)
       : light_(light),
         eps_(eps),
         merge_siblings_(merge_siblings),
         skip_edges_in_tree_(skip_edges_in_tree),
-        split_polygons_(split_polygons) {}
+        split_(split),
+        pending_pieces_(split ? split->pieces : std::vector<std::uint32_t>{}) {}
 
   /// determineShadow of Fig. 4: filters \p p down the tree, appends its shadowed (IN) and
   /// lit (OUT) fragments to \p out, and replaces each OUT cell reached by the shadow volume
@@ -81,6 +89,10 @@ class SvbspTree {
   /// volumes of every polygon before it. The planes bound no volume: a polygon they split
   /// gets the verdicts of its whole, and its edges in them no plane (skip_edges_in_tree).
   void divide(const LightView& view, std::span<LightView::Coordinates> points, std::size_t levels);
+  /// Scene piece \p piece is done with: filtered, or left out as shadowed.
+  void piece_done(const ConvexPolygon& piece) {
+    if (split_ && split_->of_face[piece.face] >= 0) --pending_pieces_[split_->of_face[piece.face]];
+  }
   /// Enlarging only: unions the shadow volume of \p p into the tree.
   void enlarge(const ConvexPolygon& p) { descend(p, -1, false, {nullptr, true, nullptr}); }
   /// §6, contour edges only: replaces the OUT leaf of each landing by the volume bounded by
@@ -132,7 +144,8 @@ class SvbspTree {
   double eps_;
   bool merge_siblings_;
   bool skip_edges_in_tree_;
-  std::span<const std::int32_t> split_polygons_;
+  const SplitPolygons* split_;
+  std::vector<std::uint32_t> pending_pieces_;  ///< per split polygon: its pieces still to come
   std::int32_t root_ = kOut;
   std::vector<Node> nodes_;
 };
