@@ -177,8 +177,7 @@ def contour(repeats):
 def exactness_scenes():
     builtin = ["cubes:2000", "tetra:3", "tetra:4", "room", "table", "three-lights", "square",
                "coil", "holed", "hole-like"]
-    examples = sorted(str(p.relative_to(ROOT)) for p in (ROOT / "examples").glob("*.json")
-                      if p.name != "knot-600k.json")
+    examples = sorted(str(p.relative_to(ROOT)) for p in (ROOT / "examples").glob("*.json"))
     sweep = sorted(str(p.relative_to(ROOT)) for p in (ROOT / "examples" / "sweep").glob("*.json"))
     return builtin + examples + sweep
 
