@@ -311,7 +311,8 @@ void hidden_crossings(const SlicedMesh& m, std::span<const std::uint32_t> hidden
 
 // One RePair with the hidden edges between its ends inserted in duplicate (Sec. 3.3): a pair
 // per face, from the begin's face on, each hidden crossing of the current face leading into
-// the next. False when the faces do not lead to the partner's.
+// the next, the last one ending at the partner's crossing. False when the faces do not lead
+// to the partner's face: the last pair is then on another face.
 bool fill_pair(const SlicedMesh& m, std::span<const RidgeEdge> ridges, const RePair& p,
                std::span<const Crossing> hidden, std::vector<EntryPair>& out) {
   std::uint32_t f = ridges[p.begin].face;
