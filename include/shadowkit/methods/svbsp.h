@@ -63,7 +63,7 @@ class SunlitAreas {
 
   const Scene& scene_;
   std::unique_ptr<const SceneBsp> bsp_;
-  std::unique_ptr<const SplitPolygons> split_;  ///< warped polygons (svbsp_tree.h)
+  std::unique_ptr<const SplitPolygons> split_;  ///< warped polygons (svbsp_tree.h), or null
   std::vector<char> outward_solid_faces_;       ///< per face: skipped when turned from the light
 };
 

@@ -11,23 +11,29 @@
 namespace shadowkit::svbsp {
 namespace {
 
-// SplitPolygons of \p scene as \p bsp cuts it into pieces.
-SplitPolygons split_polygons(const Scene& scene, const SceneBsp& bsp) {
-  SplitPolygons split{std::vector<std::int32_t>(scene.face_count(), -1), {}};
+// SplitPolygons of \p scene as \p bsp cuts it into pieces; null when no polygon was split.
+std::unique_ptr<const SplitPolygons> split_polygons(const Scene& scene, const SceneBsp& bsp) {
+  if (std::ranges::none_of(scene.objects, [](const SceneObject& object) {
+        return object.mesh.split_face_count() > 0;
+      })) {
+    return nullptr;
+  }
+  auto split = std::make_unique<SplitPolygons>();
+  split->of_face.assign(scene.face_count(), -1);
   for (const SceneObject& object : scene.objects) {
     const std::vector<std::uint32_t>& input = object.mesh.input_faces;
     for (std::size_t f = 0, end = 0; f < input.size(); f = end) {
       for (end = f + 1; end < input.size() && input[end] == input[f];) ++end;
       if (end - f < 2) continue;
-      std::fill(split.of_face.begin() + std::ptrdiff_t(object.first_face + f),
-                split.of_face.begin() + std::ptrdiff_t(object.first_face + end),
+      std::fill(split->of_face.begin() + std::ptrdiff_t(object.first_face + f),
+                split->of_face.begin() + std::ptrdiff_t(object.first_face + end),
                 std::int32_t(object.first_face + f));
     }
   }
-  if (std::ranges::all_of(split.of_face, [](std::int32_t p) { return p < 0; })) return {};
-  split.pieces.assign(scene.face_count(), 0);
+  split->pieces.assign(scene.face_count(), 0);
   for (const ConvexPolygon& piece : bsp.pieces()) {
-    if (split.of_face[piece.face] >= 0) ++split.pieces[std::size_t(split.of_face[piece.face])];
+    const std::int32_t polygon = split->of_face[piece.face];
+    if (polygon >= 0) ++split->pieces[std::size_t(polygon)];
   }
   return split;
 }
@@ -35,11 +41,11 @@ SplitPolygons split_polygons(const Scene& scene, const SceneBsp& bsp) {
 // Per global face: 1 when it bounds an outward solid (OutwardSolids): turned from the sun,
 // it neither receives light nor casts a shadow that the solid does not. Not for a solid with
 // a split polygon: its far side may see the sun through its own polygon's near side.
-std::vector<char> outward_solid_faces(const Scene& scene, const SplitPolygons& split) {
+std::vector<char> outward_solid_faces(const Scene& scene, const SplitPolygons* split) {
   const OutwardSolids& solids = scene.outward_solids();
   std::vector<char> split_solid(solids.size());
-  for (std::uint32_t f = 0; f < split.of_face.size(); ++f) {
-    if (split.of_face[f] >= 0 && solids.bounds_solid(f)) {
+  for (std::uint32_t f = 0; split && f < scene.face_count(); ++f) {
+    if (split->of_face[f] >= 0 && solids.bounds_solid(f)) {
       split_solid[std::size_t(solids.solid_of(f))] = 1;
     }
   }
@@ -55,8 +61,8 @@ std::vector<char> outward_solid_faces(const Scene& scene, const SplitPolygons& s
 SunlitAreas::SunlitAreas(const Scene& scene)
     : scene_(scene),
       bsp_(std::make_unique<const SceneBsp>(SceneBsp::build(scene))),
-      split_(std::make_unique<const SplitPolygons>(split_polygons(scene, *bsp_))),
-      outward_solid_faces_(outward_solid_faces(scene, *split_)) {}
+      split_(split_polygons(scene, *bsp_)),
+      outward_solid_faces_(outward_solid_faces(scene, split_.get())) {}
 
 SunlitAreas::~SunlitAreas() = default;
 
@@ -79,8 +85,7 @@ std::vector<double> SunlitAreas::filter(Vec3 toward_light, std::vector<Fragment>
   const auto far_side = [&](std::uint32_t face) {
     return outward_solid_faces_[face] && dot(scene_.face_plane(face).normal, toward_light) < 0;
   };
-  ShadowGenerator generator(scene_, light, {}, far_side, nullptr,
-                            split_->of_face.empty() ? nullptr : split_.get());
+  ShadowGenerator generator(scene_, light, {}, far_side, nullptr, split_.get());
   generator.divide(bsp_->pieces());
   // Fragments are summed node by node and dropped: only the tree must grow (§4), not the
   // list of every fragment the fragments command keeps.
