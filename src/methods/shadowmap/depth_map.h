@@ -51,8 +51,12 @@ class DepthMap {
   /// Stored linear depth of texel (x, y); +infinity where nothing was drawn.
   const float& depth(int x, int y) const {
     const unsigned ux = unsigned(x), uy = unsigned(y);
-    const std::size_t tile = std::size_t(uy / kTile) * tiles_x_ + ux / kTile;
-    return texels_[std::size_t(slot_[tile]) * kTileTexels + (uy % kTile) * kTile + ux % kTile];
+    return tile_texels(std::size_t(uy / kTile) * tiles_x_ +
+                       ux / kTile)[(uy % kTile) * kTile + ux % kTile];
+  }
+  /// The texels of map tile \p tile (rows of kTile, tiles row by row), as depth() finds them.
+  const float* tile_texels(std::size_t tile) const {
+    return texels_.get() + std::size_t(slot_[tile]) * kTileTexels;
   }
 
   /// \brief The view's projection onto texels, in float for the lookups (texel_batch.h):

@@ -63,6 +63,10 @@ class ShadowMapMethod final : public ShadowMethod {
  private:
   struct Receiver;
   struct TileRow;
+  /// The column parts of the camera's pixel rays, forward + x right, coordinate by coordinate.
+  struct ColumnRays {
+    std::vector<double> x, y, z;
+  };
   /// What the camera pass keeps of the receiving \p face with \p plane, seen from \p eye.
   Receiver receiver_of(const Plane& plane, Vec3 eye, std::uint32_t face) const;
   /// The bias terms of the depth tests on a receiver with \p plane (Williams's
@@ -70,6 +74,11 @@ class ShadowMapMethod final : public ShadowMethod {
   shadowmap::ReceiverBias bias_of(const Plane& plane) const;
   /// Adds the point \p p on a receiver with \p bias to \p points.
   void add_point(Vec3 p, const shadowmap::ReceiverBias& bias, shadowmap::PointBatch& points) const;
+  /// Adds the visible points of columns [\p xa, \p xb) of a row, whose rays are the columns'
+  /// plus \p row, on one \p receiver, seen from \p eye, with the light a point or not.
+  template <bool kPointLight>
+  void add_points(const ColumnRays& columns, Vec3 row, int xa, int xb, Vec3 eye,
+                  const Receiver& receiver, shadowmap::PointBatch& points) const;
   /// Where each of \p points is tested, in the maps of the last build().
   void locate(const shadowmap::PointBatch& points, shadowmap::TexelBatch& texels) const;
   /// The map of point \p k of a located batch, and its texel's stored depth.

@@ -443,32 +443,67 @@ TEST(ShadowMap, DirectionalMapHoldsTheScanConvertersDepths) {
   EXPECT_GT(covered, 9000);  // the ground fills most of the view fitted to the scene's box
 }
 
-// The camera pass, in screen tiles with a face's data kept along runs of pixels and the
-// texel loads of a row made together, decides every pixel as the test of one point does.
+// Counts the covered pixels of \p r where the camera pass decides otherwise than the test of
+// one point, and checks that some pixels are lit and some shadowed.
+int camera_pass_disagreements(const Scene& scene, const ShadowMapMethod& method,
+                              const Rendered& r) {
+  const Light& light = scene.lights.at(0);
+  int lit = 0, shadowed = 0, differ = 0;
+  for (std::size_t i = 0; i < r.mask.pixels.size(); ++i) {
+    if (!r.surfaces.covered(i)) {
+      EXPECT_EQ(r.mask.pixels[i], kMaskBackground);
+      continue;
+    }
+    const Plane& plane = scene.face_plane(r.surfaces.face[i]);
+    const bool expected = faces_light(plane, scene.camera.position, light) &&
+                          method.passes_depth_test(plane, r.surfaces.point(i));
+    differ += (r.mask.pixels[i] == kMaskLit) != expected;
+    (expected ? lit : shadowed)++;
+  }
+  EXPECT_GT(lit, 1000);
+  EXPECT_GT(shadowed, 100);
+  return differ;
+}
+
+const Light kPassLights[] = {Light::point({-1, 1.5, -1}), Light::point({0.3, 0.5, 0.2}),
+                             Light::directional({0.3, -1, 0.2})};
+
+// The camera pass, in screen tiles with a face's points set up a stretch of pixels at a time
+// and the texel loads of a row made together, decides every pixel as the test of one point
+// does.
 TEST(ShadowMap, CameraPassAgreesWithThePointTest) {
-  for (const Light& light : {Light::point({-1, 1.5, -1}), Light::point({0.3, 0.5, 0.2}),
-                             Light::directional({0.3, -1, 0.2})}) {
+  for (const Light& light : kPassLights) {
     for (const int pcf : {1, 3}) {
       SCOPED_TRACE(std::to_string(light.position.x) + " pcf " + std::to_string(pcf));
       const Scene scene = square_scene(light, kTopCamera);
       ShadowMapMethod method = make({{"resolution", "128"}, {"pcf", std::to_string(pcf)}});
-      const Rendered r = render(scene, method);
-      int lit = 0, shadowed = 0, differ = 0;
-      for (std::size_t i = 0; i < r.mask.pixels.size(); ++i) {
-        if (!r.surfaces.covered(i)) {
-          EXPECT_EQ(r.mask.pixels[i], kMaskBackground);
-          continue;
-        }
-        const Plane& plane = scene.face_plane(r.surfaces.face[i]);
-        const bool expected = faces_light(plane, scene.camera.position, light) &&
-                              method.passes_depth_test(plane, r.surfaces.point(i));
-        differ += (r.mask.pixels[i] == kMaskLit) != expected;
-        (expected ? lit : shadowed)++;
-      }
-      EXPECT_EQ(differ, 0);
-      EXPECT_GT(lit, 1000);
-      EXPECT_GT(shadowed, 100);
+      EXPECT_EQ(camera_pass_disagreements(scene, method, render(scene, method)), 0);
     }
+  }
+}
+
+// The same where a row of pixels crosses a face every few pixels: a field of small pyramids,
+// whose sides turned from the light are shadowed stretches between lit ones, and sky between
+// the ground's edge and the top of the image.
+TEST(ShadowMap, CameraPassAgreesWithThePointTestAcrossManySmallFaces) {
+  for (const Light& light : kPassLights) {
+    SCOPED_TRACE(std::to_string(light.position.x));
+    Scene scene = square_scene(light, small_camera({0, 4, 9}, {0, 0, 0}, 70), false);
+    for (int i = -6; i <= 6; ++i) {
+      for (int j = -6; j <= 6; ++j) {
+        const double x = 0.7 * i, z = 0.7 * j, h = 0.6 + 0.1 * ((i + j) & 3);
+        add_object(scene, "pyramid",
+                   {{x - 0.25, 0, z - 0.25},
+                    {x + 0.25, 0, z - 0.25},
+                    {x + 0.25, 0, z + 0.25},
+                    {x - 0.25, 0, z + 0.25},
+                    {x, h, z}},
+                   {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}});
+      }
+    }
+    scene.finalize();
+    ShadowMapMethod method = make({{"resolution", "256"}});
+    EXPECT_EQ(camera_pass_disagreements(scene, method, render(scene, method)), 0);
   }
 }
 

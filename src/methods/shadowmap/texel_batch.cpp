@@ -1,5 +1,6 @@
 #include "texel_batch.h"
 
+#include <bit>
 #include <cstring>
 
 namespace shadowkit::shadowmap {
@@ -40,6 +41,15 @@ Ints clamped(Floats x, int n) {
   return __builtin_convertvector(min(x > 0 ? x : Floats{}, splat(float(n - 1))), Ints);
 }
 
+// The tile of texels (x, y) and their place in it, as DepthMap::depth() finds them.
+void store_tile(TexelBatch& out, std::size_t k, Ints x, Ints y, int width) {
+  constexpr int kShift = std::countr_zero(unsigned(DepthMap::kTile));
+  static_assert(DepthMap::kTile == 1 << kShift);
+  const int tiles_x = (width + DepthMap::kTile - 1) / DepthMap::kTile;
+  store(&out.tile[k], (y >> kShift) * tiles_x + (x >> kShift));
+  store(&out.in_tile[k], ((y & (DepthMap::kTile - 1)) << kShift) + (x & (DepthMap::kTile - 1)));
+}
+
 }  // namespace
 
 // The face of the dominant axis (CubeMap::face_of, ties to x, then y) and the view
@@ -58,8 +68,11 @@ void cube_texels(const CubeMap& cube, const PointBatch& points, TexelBatch& out)
     const Floats inverse = 1.0f / zv;
     const Ints axis = on_x ? Ints{} : (y_over_z ? Ints{} + 1 : Ints{} + 2);
     store(&out.map[k], 2 * axis + (major < 0 ? Ints{} + 1 : Ints{}));
-    store(&out.texel_x[k], clamped(grid.offset_x + grid.scale_x * (xv * inverse), grid.width));
-    store(&out.texel_y[k], clamped(grid.offset_y - grid.scale_y * (yv * inverse), grid.height));
+    const Ints x = clamped(grid.offset_x + grid.scale_x * (xv * inverse), grid.width);
+    const Ints y = clamped(grid.offset_y - grid.scale_y * (yv * inverse), grid.height);
+    store(&out.texel_x[k], x);
+    store(&out.texel_y[k], y);
+    store_tile(out, k, x, y, grid.width);
     const Floats slope = on_x ? load(&points.slope_x[k])
                               : (y_over_z ? load(&points.slope_y[k]) : load(&points.slope_z[k]));
     // How fast the face's depth zv of the receiver's plane changes per unit of lateral
@@ -77,8 +90,11 @@ void orthographic_texels(const DepthMap& map, const PointBatch& points, TexelBat
   const DepthMap::TexelGrid grid = map.texel_grid();
   for (std::size_t k = 0; k < points.size; k += kLanes) {
     store(&out.map[k], Ints{});
-    store(&out.texel_x[k], clamped(grid.offset_x + grid.scale_x * load(&points.x[k]), grid.width));
-    store(&out.texel_y[k], clamped(grid.offset_y - grid.scale_y * load(&points.y[k]), grid.height));
+    const Ints x = clamped(grid.offset_x + grid.scale_x * load(&points.x[k]), grid.width);
+    const Ints y = clamped(grid.offset_y - grid.scale_y * load(&points.y[k]), grid.height);
+    store(&out.texel_x[k], x);
+    store(&out.texel_y[k], y);
+    store_tile(out, k, x, y, grid.width);
     store(&out.depth[k], load(&points.z[k]) - load(&points.constant[k]));
   }
 }

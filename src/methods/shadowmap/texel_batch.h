@@ -42,6 +42,8 @@ struct PointBatch {
 /// and the point's depth less its bias, which a lit point's texel must not be nearer than.
 struct TexelBatch {
   std::array<std::int32_t, PointBatch::kSize> map, texel_x, texel_y;
+  /// The texel's map tile and its place in the tile (DepthMap::tile_texels).
+  std::array<std::int32_t, PointBatch::kSize> tile, in_tile;
   std::array<float, PointBatch::kSize> depth;
 };
 
