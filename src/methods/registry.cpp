@@ -20,7 +20,8 @@ std::vector<SettingInfo> method_settings(std::string_view method) {
     return {{"resolution", "2048", {}, "16..16384"},
             {"bias", "", {}, ">= 0, world units (automatic: 1e-3 x scene diagonal)"},
             {"slope_bias", "1", {}, ">= 0"},
-            {"pcf", "1", {}, "odd kernel width"}};
+            {"pcf", "1", {}, "odd kernel width"},
+            {"tiles", "looked_up", {"looked_up", "all"}, ""}};
   }
   if (method == "volume") return {{"count", "auto", {"auto", "pass", "fail"}, ""}};
   if (method == "angular") {

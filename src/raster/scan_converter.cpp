@@ -56,6 +56,16 @@ FrameBufferPool& pool() {
   return frames;
 }
 
+// Whether cluster \p c can draw into a tile that \p wanted (rows of \p tiles_x) marks.
+bool reaches(const ClusterInView& c, ScanConverter::TileMask wanted, int tiles_x) {
+  for (int ty = c.y0 / kTile; ty <= c.y1 / kTile; ++ty) {
+    for (int tx = c.x0 / kTile; tx <= c.x1 / kTile; ++tx) {
+      if (wanted[std::size_t(ty) * tiles_x + tx]) return true;
+    }
+  }
+  return false;
+}
+
 // Every tile of the raster, drawn into batch after batch: with several batches each in its
 // own kTile x kTile slot of the pool's buffers.
 class TileFrame {
@@ -85,15 +95,18 @@ class TileFrame {
 
   int tile_count() const { return tiles_x_ * tiles_y_; }
 
-  // Whether what is drawn already hides every pixel \p c can draw.
+  bool wanted(std::size_t tile) const { return output_.wanted.empty() || output_.wanted[tile]; }
+
+  // Whether what is drawn already hides every pixel \p c can draw in wanted tiles.
   bool hides(const ClusterInView& c) const {
     if (!started_) return false;
     for (int ty = c.y0 / kTile; ty <= c.y1 / kTile; ++ty) {
       for (int tx = c.x0 / kTile; tx <= c.x1 / kTile; ++tx) {
         const int x0 = tx * kTile, y0 = ty * kTile;
-        if (!depth_[std::size_t(ty) * tiles_x_ + tx].hidden(
-                std::max(x0, c.x0), std::min(x0 + kTile - 1, c.x1), std::max(y0, c.y0),
-                std::min(y0 + kTile - 1, c.y1), c.nearest)) {
+        const std::size_t t = std::size_t(ty) * tiles_x_ + tx;
+        if (!wanted(t)) continue;
+        if (!depth_[t].hidden(std::max(x0, c.x0), std::min(x0 + kTile - 1, c.x1),
+                              std::max(y0, c.y0), std::min(y0 + kTile - 1, c.y1), c.nearest)) {
           return false;
         }
       }
@@ -107,6 +120,7 @@ class TileFrame {
             const std::function<void(const RasterTile&)>& fn) {
     const TileBins bins(tris, width_, height_);
     tbb::parallel_for(0, tile_count(), [&](int t) {
+      if (!wanted(std::size_t(t))) return;
       struct Scratch {
         double key[kTilePixels];
         std::uint32_t face[kTilePixels];
@@ -223,13 +237,19 @@ void ScanConverter::rasterize_tiles(const RasterProjection& view, const Context&
 }
 
 void ScanConverter::rasterize_depth_tiles(const RasterProjection& view, const Context& /*ctx*/,
-                                          const std::function<void(const RasterTile&)>& fn) const {
-  draw_clusters(view, {.faces = false, .empty_tiles = false}, fn);
+                                          const std::function<void(const RasterTile&)>& fn,
+                                          TileMask wanted) const {
+  draw_clusters(view, {.faces = false, .empty_tiles = false, .wanted = wanted}, fn);
 }
 
 void ScanConverter::draw_clusters(const RasterProjection& view, TileOutput output,
                                   const std::function<void(const RasterTile&)>& fn) const {
-  const std::vector<ClusterInView> order = raster::clusters_in_view(scene_, view);
+  std::vector<ClusterInView> order = raster::clusters_in_view(scene_, view);
+  if (!output.wanted.empty()) {
+    const int tiles_x = (view.width + kTile - 1) / kTile;
+    std::erase_if(order,
+                  [&](const ClusterInView& c) { return !reaches(c, output.wanted, tiles_x); });
+  }
   std::vector<std::size_t> batch_start{0};
   if (order.size() < kCulledClusters) batch_start.push_back(order.size());
   for (std::size_t size = std::max(kFirstBatch, order.size() / 64);

@@ -214,37 +214,58 @@ TEST(ScanConverter, HiddenTrianglesDroppedWholeChangeNoPixel) {
 }
 
 // A light's depth tiles hold the keys of the full pass, in the tiles that some triangle
-// reaches, and only those, with one batch and with several.
+// reaches, and only those, with one batch and with several; with a mask of wanted tiles (a
+// checkerboard, one tile), only the wanted ones, with the same keys.
 TEST(ScanConverter, DepthTilesAreTheReachedTilesOfTheFullPass) {
+  constexpr int kTile = ScanConverter::kTileSize;
   for (const int boxes : {3, 300, 4000}) {
-    SCOPED_TRACE(std::to_string(boxes) + " boxes");
     const Scene scene = random_boxes(boxes, 5);
     const RasterProjection view = RasterProjection::from_camera(scene.camera, 1e-3);
     const DepthFaceBuffer full = ScanConverter(scene).rasterize(view, {});
-    std::vector<double> key(full.depth_key.size(), -INFINITY);
-    std::vector<int> handed(full.depth_key.size(), 0);
-    std::mutex mutex;
-    ScanConverter(scene).rasterize_depth_tiles(view, {}, [&](const RasterTile& tile) {
-      EXPECT_EQ(tile.face, nullptr);
-      std::lock_guard lock(mutex);
-      for (int y = 0; y < tile.height; ++y) {
-        for (int x = 0; x < tile.width; ++x) {
-          const std::size_t i = std::size_t(tile.y0 + y) * view.width + tile.x0 + x;
-          key[i] = tile.depth_key[y * tile.width + x];
-          ++handed[i];
+    const int tiles_x = (view.width + kTile - 1) / kTile;
+    const int tiles = tiles_x * ((view.height + kTile - 1) / kTile);
+    std::vector<std::uint8_t> checkerboard(std::size_t(tiles), 0), one(std::size_t(tiles), 0);
+    for (int t = 0; t < tiles; ++t) checkerboard[t] = (t % tiles_x + t / tiles_x) % 2;
+    one[std::size_t(tiles / 2)] = 1;
+    for (const std::vector<std::uint8_t>& wanted :
+         {std::vector<std::uint8_t>{}, checkerboard, one}) {
+      SCOPED_TRACE(std::to_string(boxes) + " boxes, " + std::to_string(wanted.size()) + " tiles");
+      const auto is_wanted = [&](std::size_t i) {
+        const std::size_t t = i / view.width / kTile * tiles_x + i % view.width / kTile;
+        return wanted.empty() || wanted[t];
+      };
+      std::vector<double> key(full.depth_key.size(), -INFINITY);
+      std::vector<int> handed(full.depth_key.size(), 0);
+      std::mutex mutex;
+      ScanConverter(scene).rasterize_depth_tiles(
+          view, {},
+          [&](const RasterTile& tile) {
+            EXPECT_EQ(tile.face, nullptr);
+            std::lock_guard lock(mutex);
+            for (int y = 0; y < tile.height; ++y) {
+              for (int x = 0; x < tile.width; ++x) {
+                const std::size_t i = std::size_t(tile.y0 + y) * view.width + tile.x0 + x;
+                key[i] = tile.depth_key[y * tile.width + x];
+                ++handed[i];
+              }
+            }
+          },
+          wanted);
+      std::size_t drawn = 0, left_out = 0;
+      for (std::size_t i = 0; i < key.size(); ++i) {
+        ASSERT_LE(handed[i], 1) << "pixel " << i;
+        if (!is_wanted(i)) {
+          ASSERT_EQ(handed[i], 0) << "pixel " << i;
+          continue;
         }
+        ASSERT_EQ(float(key[i]), full.depth_key[i]) << "pixel " << i;
+        drawn += full.face[i] != kNoFace;
+        left_out += handed[i] == 0;
       }
-    });
-    std::size_t drawn = 0, left_out = 0;
-    for (std::size_t i = 0; i < key.size(); ++i) {
-      ASSERT_EQ(float(key[i]), full.depth_key[i]) << "pixel " << i;
-      ASSERT_LE(handed[i], 1) << "pixel " << i;
-      drawn += full.face[i] != kNoFace;
-      left_out += handed[i] == 0;
-    }
-    EXPECT_GT(drawn, key.size() / 10);
-    if (boxes == 3) {
-      EXPECT_GE(left_out, 64u * 64);  // a tile of sky at least
+      if (wanted.empty()) EXPECT_GT(drawn, key.size() / 10);
+      if (wanted.empty() && boxes == 3) {
+        EXPECT_GE(left_out, 64u * 64);  // a tile of sky at least
+      }
     }
   }
 }

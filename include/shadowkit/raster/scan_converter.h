@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "shadowkit/core/context.h"
@@ -53,15 +54,21 @@ class ScanConverter {
   /// not start parallel work itself: the tile's buffer is the worker thread's own.
   void rasterize_tiles(const RasterProjection& view, const Context& ctx,
                        const std::function<void(const RasterTile&)>& fn) const;
+  /// Per tile of a raster (row by row, kTileSize pixels a side), whether it is wanted.
+  using TileMask = std::span<const std::uint8_t>;
+
   /// As rasterize_tiles, for a light's depth map: keys only (RasterTile::face is null), and
-  /// only the tiles that some triangle reaches; the others hold nothing.
+  /// only the tiles that some triangle reaches; the others hold nothing. With \p wanted, only
+  /// the tiles it marks: no triangle is set up whose cluster reaches none of them.
   void rasterize_depth_tiles(const RasterProjection& view, const Context& ctx,
-                             const std::function<void(const RasterTile&)>& fn) const;
+                             const std::function<void(const RasterTile&)>& fn,
+                             TileMask wanted = {}) const;
 
   /// What the drawing of the clusters hands on.
   struct TileOutput {
     bool faces;        ///< the nearest face per pixel, beside its key
     bool empty_tiles;  ///< tiles no triangle reaches, too
+    TileMask wanted;   ///< the tiles drawn; empty: all
   };
 
  private:

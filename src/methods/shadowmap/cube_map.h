@@ -37,10 +37,17 @@ class CubeMap {
   /// The view of face \p face for a light at \p eye: a square 90° perspective view.
   static RasterProjection face_view(int face, Vec3 eye, int resolution, double near);
 
-  /// Renders all six faces of \p scene for a point light at \p light_position.
+  /// Renders all six faces of \p scene for a point light at \p light_position: start(), then
+  /// draw() of every tile.
   void render(const Scene& scene, Vec3 light_position, int resolution, const Context& ctx);
+  /// Sets the six faces up for a point light at \p light_position with no tile drawn.
+  void start(const Scene& scene, Vec3 light_position, int resolution);
+  /// Renders \p scene into the tiles of each face that \p wanted marks (DepthMap::draw).
+  void draw(const Scene& scene, const Context& ctx,
+            const std::array<ScanConverter::TileMask, kFaces>& wanted);
 
   const DepthMap& face(int f) const { return faces_[f]; }
+  DepthMap& face(int f) { return faces_[f]; }
   std::size_t texel_count() const;
   std::size_t covered_texels() const;
   /// The maps' bytes.

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "shadowkit/core/error.h"
+
 namespace shadowkit::shadowmap {
 namespace {
 
@@ -15,20 +17,33 @@ constexpr float kEmpty = std::numeric_limits<float>::infinity();
 }  // namespace
 
 void DepthMap::render(const Scene& scene, const RasterProjection& view, const Context& ctx) {
-  allocate(view);
-  std::atomic<std::uint32_t> slots{1};
-  std::atomic<std::size_t> covered{0};
+  start(view);
+  draw(scene, ctx);
+}
+
+void DepthMap::draw(const Scene& scene, const Context& ctx, ScanConverter::TileMask wanted) {
+  if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), 1) == wanted.end()) return;
+  for (std::size_t t = 0; t < drawn_.size(); ++t) {
+    if (!wanted.empty() && !wanted[t]) continue;
+    SHADOWKIT_CHECK(!drawn_[t]);  // each tile has room for one slot
+    drawn_[t] = 1;
+  }
+  std::atomic<std::uint32_t> slots{std::uint32_t(slots_)};
+  std::atomic<std::size_t> covered{covered_};
   // Williams 1978, first pass: a z-buffer rendering of the scene from the light, keeping only
   // depth; the scan converter's own, so that what a nearer surface hides is never drawn.
-  ScanConverter(scene).rasterize_depth_tiles(view, ctx, [&](const RasterTile& tile) {
-    covered.fetch_add(store(tile, slots.fetch_add(1, std::memory_order_relaxed)),
-                      std::memory_order_relaxed);
-  });
+  ScanConverter(scene).rasterize_depth_tiles(
+      view_, ctx,
+      [&](const RasterTile& tile) {
+        covered.fetch_add(store(tile, slots.fetch_add(1, std::memory_order_relaxed)),
+                          std::memory_order_relaxed);
+      },
+      wanted);
   slots_ = slots.load();
   covered_ = covered.load();
 }
 
-void DepthMap::allocate(const RasterProjection& view) {
+void DepthMap::start(const RasterProjection& view) {
   view_ = view;
   texel_side_ = std::max(1.0 / view.scale_x, 1.0 / view.scale_y);
   grid_ = {float(view.offset_x), float(view.offset_y), float(view.scale_x),
@@ -36,11 +51,14 @@ void DepthMap::allocate(const RasterProjection& view) {
   tiles_x_ = (view.width + kTile - 1) / kTile;
   const int tiles_y = (view.height + kTile - 1) / kTile;
   slot_.assign(std::size_t(tiles_x_) * tiles_y, 0);
+  drawn_.assign(slot_.size(), 0);
   if (capacity_ < slot_.size() + 1) {
     capacity_ = slot_.size() + 1;
     texels_ = make_huge_page_array<float>(capacity_ * kTileTexels);
   }
   std::fill_n(texels_.get(), kTileTexels, kEmpty);
+  slots_ = 1;
+  covered_ = 0;
 }
 
 // Stores a drawn tile's keys as linear depth in \p slot; returns how many texels were drawn.
@@ -65,8 +83,13 @@ int DepthMap::store_row(const double* key, int n, float* depth) {
   return int(std::count_if(key, key + n, [](double k) { return k != -INFINITY; }));
 }
 
+std::size_t DepthMap::drawn_tiles() const {
+  return std::size_t(std::count(drawn_.begin(), drawn_.end(), 1));
+}
+
 std::size_t DepthMap::memory_bytes() const {
-  return slots_ * kTileTexels * sizeof(float) + slot_.capacity() * sizeof(std::uint32_t);
+  return slots_ * kTileTexels * sizeof(float) + slot_.capacity() * sizeof(std::uint32_t) +
+         drawn_.capacity();
 }
 
 }  // namespace shadowkit::shadowmap

@@ -30,15 +30,29 @@ inline constexpr double kMaxSlope = 10.0;
 ///
 /// The texels are stored in square tiles, each contiguous, so that the few texels a run of
 /// neighbouring visible points looks up share cache lines and pages. A tile that no triangle
-/// reaches is not stored: it refers to one shared tile of +infinity.
+/// reaches is not stored: it refers to one shared tile of +infinity. Tiles may be drawn only
+/// where the lookups need them (draw()); the others are not drawn at all.
 class DepthMap {
  public:
   /// Texels per side of a tile, the unit in which the map is drawn and stored.
   static constexpr int kTile = 64;
   static constexpr std::size_t kTileTexels = std::size_t(kTile) * kTile;
 
-  /// Renders \p scene through \p view with the scan converter (its depth tiles).
+  /// Renders \p scene through \p view with the scan converter (its depth tiles): start(),
+  /// then draw() of every tile.
   void render(const Scene& scene, const RasterProjection& view, const Context& ctx);
+  /// Sets the map up for \p view with no tile drawn.
+  void start(const RasterProjection& view);
+  /// Renders \p scene into the tiles \p wanted marks (every tile when it is empty), each
+  /// drawn at most once since start().
+  void draw(const Scene& scene, const Context& ctx, ScanConverter::TileMask wanted = {});
+  /// Tiles per row and in all (rows of tiles_x()), the units of draw()'s \p wanted.
+  int tiles_x() const { return tiles_x_; }
+  std::size_t tile_count() const { return slot_.size(); }
+  /// Whether the tile of texel (x, y) has been drawn since start().
+  bool drawn(int x, int y) const {
+    return drawn_[std::size_t(unsigned(y) / kTile) * tiles_x_ + unsigned(x) / kTile] != 0;
+  }
 
   const RasterProjection& view() const { return view_; }
   int width() const { return view_.width; }
@@ -46,6 +60,8 @@ class DepthMap {
   std::size_t texel_count() const { return std::size_t(view_.width) * view_.height; }
   /// Texels where some surface was drawn.
   std::size_t covered_texels() const { return covered_; }
+  /// Tiles drawn since start().
+  std::size_t drawn_tiles() const;
   std::size_t memory_bytes() const;
 
   /// Stored linear depth of texel (x, y); +infinity where nothing was drawn.
@@ -111,7 +127,6 @@ class DepthMap {
   }
 
  private:
-  void allocate(const RasterProjection& view);
   std::size_t store(const RasterTile& tile, std::uint32_t slot);
   template <bool kOrthographic>
   static int store_row(const double* key, int n, float* depth);
@@ -121,6 +136,7 @@ class DepthMap {
   TexelGrid grid_{};
   int tiles_x_ = 0;
   std::vector<std::uint32_t> slot_;  ///< storage tile per map tile; slot 0 is all +infinity
+  std::vector<std::uint8_t> drawn_;  ///< per map tile, whether draw() has drawn it
   /// kTileTexels per slot, room for a slot per map tile: left uninitialized, so only the
   /// slots drawn take memory. On huge pages: the lookups land all over a point light's six
   /// faces. Only grows, to be reused.

@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <numeric>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/shadowmap.h"
@@ -92,7 +94,7 @@ RasterProjection directional_light_view(const Bounds3& bounds, Vec3 direction, i
 }
 
 ShadowMapMethod::ShadowMapMethod(const MethodOptions& options) {
-  options.expect_only("shadowmap", {"resolution", "bias", "slope_bias", "pcf"});
+  options.expect_only("shadowmap", {"resolution", "bias", "slope_bias", "pcf", "tiles"});
   resolution_ = integer_option(options, "resolution", 2048, kMinResolution, kMaxResolution);
   const double bias = options.number("bias", std::nan(""));
   if (bias < 0) bad_option("bias", "expected a depth bias >= 0 in world units");
@@ -101,6 +103,11 @@ ShadowMapMethod::ShadowMapMethod(const MethodOptions& options) {
   if (slope_bias_ < 0) bad_option("slope_bias", "expected a slope bias factor >= 0");
   pcf_ = integer_option(options, "pcf", 1, 1, kMaxPcf);
   if (pcf_ % 2 == 0) bad_option("pcf", "expected an odd kernel width (1 = off, 3, 5, ...)");
+  const std::string tiles = options.text("tiles", "looked_up");
+  if (tiles != "looked_up" && tiles != "all") {
+    bad_option("tiles", "expected looked_up or all, got " + tiles);
+  }
+  all_tiles_ = tiles == "all";
 }
 
 void ShadowMapMethod::build(const Scene& scene, std::size_t light, const Context& ctx) {
@@ -111,12 +118,29 @@ void ShadowMapMethod::build(const Scene& scene, std::size_t light, const Context
   // same kind of light.
   if (light_.type == Light::Type::point) {
     ortho_ = {};
-    cube_.render(scene, light_.position, resolution_, ctx);
+    cube_.start(scene, light_.position, resolution_);
   } else {
     cube_ = {};
-    ortho_.render(scene, directional_light_view(scene.bounds(), light_.direction, resolution_),
-                  ctx);
+    ortho_.start(directional_light_view(scene.bounds(), light_.direction, resolution_));
   }
+  for (int m = 0; m < map_count(); ++m) wanted_[m].clear();
+  if (all_tiles_) draw_maps(scene, ctx);
+}
+
+int ShadowMapMethod::map_count() const {
+  return light_.type == Light::Type::point ? CubeMap::kFaces : 1;
+}
+
+const DepthMap& ShadowMapMethod::map(int m) const {
+  return light_.type == Light::Type::point ? cube_.face(m) : ortho_;
+}
+
+DepthMap& ShadowMapMethod::map(int m) {
+  return const_cast<DepthMap&>(std::as_const(*this).map(m));
+}
+
+void ShadowMapMethod::draw_maps(const Scene& scene, const Context& ctx) {
+  for (int m = 0; m < map_count(); ++m) map(m).draw(scene, ctx, wanted_[m]);
 }
 
 // One row of a screen tile in the camera pass: its visible points, where each is tested, and
@@ -138,23 +162,82 @@ struct ShadowMapMethod::Receiver {
   ReceiverBias bias;
 };
 
-void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
-                            ShadowMask& mask, const Context& /*ctx*/) {
-  const bool point_light = light_.type == Light::Type::point;
-  SHADOWKIT_CHECK((point_light ? cube_.texel_count() : ortho_.texel_count()) > 0);  // built
-  // The contract's pixel rays as VisibleSurfaceBuffer::ray() makes them, (forward + x right)
-  // + y up, with the column's part computed once per column and the row's once per row.
-  const Camera& camera = scene.camera;
-  const Vec3 eye = camera.position;
-  const Vec3 forward = camera.forward(), right = camera.right(), up = camera.true_up();
-  const Camera::PixelGrid grid = camera.pixel_grid();
+// The frame the camera pass works on, and the contract's pixel rays as
+// VisibleSurfaceBuffer::ray() makes them, (forward + x right) + y up, with the column's part
+// computed once per column and the row's once per row.
+struct ShadowMapMethod::CameraPass {
+  const Scene& scene;
+  const VisibleSurfaceBuffer& surfaces;
+  ShadowMask& mask;
+  Vec3 eye, up;
+  Camera::PixelGrid grid;
   ColumnRays columns;
-  for (int c = 0; c < surfaces.width; ++c) {
-    const Vec3 ray = forward + (grid.x0 + grid.step * double(c)) * right;
-    columns.x.push_back(ray.x), columns.y.push_back(ray.y), columns.z.push_back(ray.z);
+
+  CameraPass(const Scene& s, const VisibleSurfaceBuffer& v, ShadowMask& m)
+      : scene(s),
+        surfaces(v),
+        mask(m),
+        eye(s.camera.position),
+        up(s.camera.true_up()),
+        grid(s.camera.pixel_grid()) {
+    const Vec3 forward = s.camera.forward(), right = s.camera.right();
+    for (int c = 0; c < v.width; ++c) {
+      const Vec3 ray = forward + (grid.x0 + grid.step * double(c)) * right;
+      columns.x.push_back(ray.x), columns.y.push_back(ray.y), columns.z.push_back(ray.z);
+    }
   }
-  // Screen tiles, so that neighbouring visible points, which look up neighbouring texels, come
-  // one after another; a tile's row is one batch.
+};
+
+// Williams 1978's second pass. With every tile drawn, in one pass over the visible points.
+// Otherwise in three: the points' texels, kept per pixel; the tiles they look up drawn, and
+// only those; then the tests, from the texels kept.
+void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
+                            ShadowMask& mask, const Context& ctx) {
+  SHADOWKIT_CHECK(map(0).texel_count() > 0);  // built
+  const CameraPass pass(scene, surfaces, mask);
+  const auto decide = [&](const TileRow& r) { decide_row(r, mask); };
+  if (all_tiles_) {
+    each_tile_row(
+        surfaces,
+        [&](int y, int x0, int x1, TileRow& r, Receiver& receiver) {
+          set_up_row(pass, y, x0, x1, r, receiver);
+          load_row(r);
+        },
+        decide);
+    return;
+  }
+  // Every camera pass draws its own tiles, as if built for it: a frame costs the same
+  // however many came before it for the same light.
+  for (int m = 0; m < map_count(); ++m) {
+    map(m).start(map(m).view());
+    wanted_[m].assign(map(m).tile_count(), 0);
+  }
+  kept_width_ = std::size_t(surfaces.width);
+  kept_texel_.resize(surfaces.depth.size());
+  kept_depth_.resize(surfaces.depth.size());
+  each_tile_row(
+      surfaces,
+      [&](int y, int x0, int x1, TileRow& r, Receiver& receiver) {
+        set_up_row(pass, y, x0, x1, r, receiver);
+        keep_row(y, x0, x1, r);
+      },
+      [](const TileRow&) {});
+  draw_maps(scene, ctx);
+  each_tile_row(
+      surfaces,
+      [&](int y, int x0, int x1, TileRow& r, Receiver&) {
+        kept_row(y, x0, x1, r);
+        load_row(r);
+      },
+      decide);
+}
+
+// Runs over screen tiles, so that neighbouring visible points, which look up neighbouring
+// texels, come one after another; \p fill sets up a tile's row as one batch and \p finish
+// takes it one row later, so that a row's texels load while the next row is set up.
+template <class Fill, class Finish>
+void ShadowMapMethod::each_tile_row(const VisibleSurfaceBuffer& surfaces, Fill&& fill,
+                                    Finish&& finish) const {
   static_assert(kShadeTileW <= PointBatch::kSize);
   const int tiles_x = (surfaces.width + kShadeTileW - 1) / kShadeTileW;
   const int tiles_y = (surfaces.height + kShadeTileH - 1) / kShadeTileH;
@@ -163,50 +246,121 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
     const int x1 = std::min(x0 + kShadeTileW, surfaces.width);
     const int y1 = std::min(y0 + kShadeTileH, surfaces.height);
     Receiver receiver;
-    // Sets up row y's points, a stretch of pixels on one face at a time, and starts loading
-    // their texels.
-    const auto set_up = [&](int y, TileRow& r) {
-      const Vec3 row = (grid.y0 - grid.step * double(y)) * up;
-      const std::uint32_t* face = surfaces.face.data() + surfaces.index(0, y);
-      r.points.size = 0;
-      for (int x = surfaces.next_covered(x0, x1, y); x < x1;) {
-        const int end = stretch_end(face, x, x1);
-        if (face[x] != receiver.face)
-          receiver = receiver_of(scene.face_plane(face[x]), eye, face[x]);
-        const std::size_t i = surfaces.index(x, y);
-        if (!receiver.faces_light) {
-          std::fill_n(mask.pixels.begin() + std::ptrdiff_t(i), end - x, kMaskShadow);
-        } else {
-          std::iota(r.pixel.begin() + std::ptrdiff_t(r.points.size),
-                    r.pixel.begin() + std::ptrdiff_t(r.points.size) + (end - x), i);
-          if (point_light) {
-            add_points<true>(columns, row, x, end, eye, receiver, r.points);
-          } else {
-            add_points<false>(columns, row, x, end, eye, receiver, r.points);
-          }
-        }
-        x = surfaces.next_covered(end, x1, y);
-      }
-      locate(r.points, r.texels);
-      for (std::size_t k = 0; k < r.points.size; ++k) {
-        r.stored[k] = &stored(r.texels, k);
-        __builtin_prefetch(r.stored[k]);
-      }
-    };
-    // Rows in a pipeline: a row's texels load while the next row is set up. The thread's own,
-    // made once (a frame has thousands of tiles): the body starts no parallel work, so no
-    // other tile takes them meanwhile.
+    // The thread's own, made once (a frame has thousands of tiles): the body starts no
+    // parallel work, so no other tile takes them meanwhile.
     thread_local std::array<TileRow, 2> rows;
     for (int y = y0; y <= y1; ++y) {
-      if (y < y1) set_up(y, rows[y % 2]);
-      if (y == y0) continue;
-      const TileRow& r = rows[(y - 1) % 2];
-      for (std::size_t k = 0; k < r.points.size; ++k) {
-        const bool lit_k = pcf_ == 1 ? r.texels.depth[k] <= *r.stored[k] : lit(r.texels, k);
-        mask.pixels[r.pixel[k]] = lit_k ? kMaskLit : kMaskShadow;
-      }
+      if (y < y1) fill(y, x0, x1, rows[y % 2], receiver);
+      if (y > y0) finish(rows[(y - 1) % 2]);
     }
   });
+}
+
+// Sets up the light-facing points of row \p y's columns [x0, x1), a stretch of pixels on one
+// face at a time, and locates them; shadows the pixels whose face is turned from the light.
+void ShadowMapMethod::set_up_row(const CameraPass& pass, int y, int x0, int x1, TileRow& r,
+                                 Receiver& receiver) const {
+  const VisibleSurfaceBuffer& surfaces = pass.surfaces;
+  const Vec3 row = (pass.grid.y0 - pass.grid.step * double(y)) * pass.up;
+  const std::uint32_t* face = surfaces.face.data() + surfaces.index(0, y);
+  r.points.size = 0;
+  for (int x = surfaces.next_covered(x0, x1, y); x < x1;) {
+    const int end = stretch_end(face, x, x1);
+    if (face[x] != receiver.face) {
+      receiver = receiver_of(pass.scene.face_plane(face[x]), pass.eye, face[x]);
+    }
+    const std::size_t i = surfaces.index(x, y);
+    if (!receiver.faces_light) {
+      std::fill_n(pass.mask.pixels.begin() + std::ptrdiff_t(i), end - x, kMaskShadow);
+    } else {
+      std::iota(r.pixel.begin() + std::ptrdiff_t(r.points.size),
+                r.pixel.begin() + std::ptrdiff_t(r.points.size) + (end - x), i);
+      if (light_.type == Light::Type::point) {
+        add_points<true>(pass.columns, row, x, end, pass.eye, receiver, r.points);
+      } else {
+        add_points<false>(pass.columns, row, x, end, pass.eye, receiver, r.points);
+      }
+    }
+    x = surfaces.next_covered(end, x1, y);
+  }
+  locate(r.points, r.texels);
+}
+
+// Starts loading the texels of a located row.
+void ShadowMapMethod::load_row(TileRow& r) const {
+  for (std::size_t k = 0; k < r.points.size; ++k) {
+    r.stored[k] = &stored(r.texels, k);
+    __builtin_prefetch(r.stored[k]);
+  }
+}
+
+void ShadowMapMethod::decide_row(const TileRow& r, ShadowMask& mask) const {
+  for (std::size_t k = 0; k < r.points.size; ++k) {
+    const bool lit_k = pcf_ == 1 ? r.texels.depth[k] <= *r.stored[k] : lit(r.texels, k);
+    mask.pixels[r.pixel[k]] = lit_k ? kMaskLit : kMaskShadow;
+  }
+}
+
+// A texel kept per pixel between the passes: map << 28 | tile << 12 | place in the tile.
+constexpr std::uint32_t kNotKept = ~0u;
+static_assert(kMaxResolution / DepthMap::kTile * (kMaxResolution / DepthMap::kTile) <= 1 << 16 &&
+              DepthMap::kTileTexels <= 1 << 12 && CubeMap::kFaces <= 8);
+
+// Keeps each point's texel and depth at its pixel, and wants the tiles its tests read: with
+// PCF, those of its kernel's corners, which span at most two tiles a side.
+void ShadowMapMethod::keep_row(int y, int x0, int x1, const TileRow& r) {
+  std::fill_n(kept_texel_.begin() + std::ptrdiff_t(std::size_t(y) * kept_width_ + x0), x1 - x0,
+              kNotKept);
+  const auto want = [&](int m, std::size_t tile) {
+    std::atomic_ref<std::uint8_t> w(wanted_[m][tile]);
+    if (!w.load(std::memory_order_relaxed)) w.store(1, std::memory_order_relaxed);
+  };
+  const int reach = pcf_ / 2;
+  static_assert(kMaxPcf / 2 < DepthMap::kTile);
+  std::uint32_t last = kNotKept;  // neighbouring points mostly read one tile
+  for (std::size_t k = 0; k < r.points.size; ++k) {
+    const int m = r.texels.map[k];
+    const std::uint32_t tile = std::uint32_t(m) << 16 | std::uint32_t(r.texels.tile[k]);
+    kept_texel_[r.pixel[k]] = tile << 12 | std::uint32_t(r.texels.in_tile[k]);
+    kept_depth_[r.pixel[k]] = r.texels.depth[k];
+    if (tile == last) continue;
+    last = tile;
+    if (reach == 0) {
+      want(m, std::size_t(r.texels.tile[k]));
+      continue;
+    }
+    const DepthMap& face = map(m);
+    const int x = r.texels.texel_x[k], y_k = r.texels.texel_y[k];
+    const int xa = std::max(x - reach, 0) / DepthMap::kTile,
+              xb = std::min(x + reach, face.width() - 1) / DepthMap::kTile;
+    const int ya = std::max(y_k - reach, 0) / DepthMap::kTile,
+              yb = std::min(y_k + reach, face.height() - 1) / DepthMap::kTile;
+    for (const int ty : {ya, yb}) {
+      for (const int tx : {xa, xb}) want(m, std::size_t(ty) * face.tiles_x() + tx);
+    }
+  }
+}
+
+// The located row keep_row() kept for row \p y's columns [x0, x1).
+void ShadowMapMethod::kept_row(int y, int x0, int x1, TileRow& r) const {
+  const std::size_t row = std::size_t(y) * kept_width_;
+  const std::uint32_t* kept = kept_texel_.data() + row;
+  std::size_t n = 0;
+  for (int x = x0; x < x1; ++x) {
+    const std::uint32_t texel = kept[x];
+    if (texel == kNotKept) continue;
+    const int m = int(texel >> 28), tile = int(texel >> 12 & 0xffff), in_tile = int(texel & 0xfff);
+    r.pixel[n] = row + std::size_t(x);
+    r.texels.map[n] = m, r.texels.tile[n] = tile, r.texels.in_tile[n] = in_tile;
+    r.texels.depth[n] = kept_depth_[row + std::size_t(x)];
+    if (pcf_ > 1) {
+      const int tiles_x = map(m).tiles_x();
+      r.texels.texel_x[n] = tile % tiles_x * DepthMap::kTile + in_tile % DepthMap::kTile;
+      r.texels.texel_y[n] = tile / tiles_x * DepthMap::kTile + in_tile / DepthMap::kTile;
+    }
+    ++n;
+  }
+  r.points.size = n;
 }
 
 ShadowMapMethod::Receiver ShadowMapMethod::receiver_of(const Plane& plane, Vec3 eye,
@@ -302,19 +456,28 @@ bool ShadowMapMethod::passes_depth_test(const Plane& plane, Vec3 p) const {
   add_point(p, bias_of(plane), points);
   TexelBatch texels;
   locate(points, texels);
+  SHADOWKIT_CHECK(map_of(texels, 0).drawn(texels.texel_x[0], texels.texel_y[0]));
   return lit(texels, 0);
 }
 
 std::size_t ShadowMapMethod::memory_bytes() const {
-  return cube_.memory_bytes() + ortho_.memory_bytes();
+  std::size_t wanted = 0;
+  for (const std::vector<std::uint8_t>& w : wanted_) wanted += w.capacity();
+  return cube_.memory_bytes() + ortho_.memory_bytes() + wanted +
+         kept_texel_.capacity() * sizeof(std::uint32_t) + kept_depth_.capacity() * sizeof(float);
 }
 
 MethodCounters ShadowMapMethod::counters() const {
-  const bool point_light = light_.type == Light::Type::point;
-  return {
-      {"map_texels", double(point_light ? cube_.texel_count() : ortho_.texel_count())},
-      {"covered_texels", double(point_light ? cube_.covered_texels() : ortho_.covered_texels())},
-      {"faces", point_light ? 6.0 : 1.0}};
+  double texels = 0, covered = 0, tiles = 0, drawn = 0;
+  for (int m = 0; m < map_count(); ++m) {
+    texels += double(map(m).texel_count()), covered += double(map(m).covered_texels());
+    tiles += double(map(m).tile_count()), drawn += double(map(m).drawn_tiles());
+  }
+  return {{"map_texels", texels},
+          {"covered_texels", covered},
+          {"map_tiles", tiles},
+          {"drawn_tiles", drawn},
+          {"faces", double(map_count())}};
 }
 
 std::unique_ptr<ShadowMethod> make_method(const MethodOptions& options) {

@@ -3,7 +3,9 @@
 // the image-space baseline. A cube map for point lights, one orthographic map for
 // directional lights, a constant plus slope-scaled depth bias and optional percentage-closer
 // filtering.
+#include <array>
 #include <optional>
+#include <vector>
 
 #include "cube_map.h"
 #include "depth_map.h"
@@ -12,10 +14,11 @@
 
 namespace shadowkit::shadowmap {
 
-/// \brief Shadow maps: build() renders the scene's depth from the light with the shared
-/// scan converter (depth only, its clusters culled per cube face and by what nearer ones
-/// hide), shade() transforms each visible point into the light's view and compares its
-/// depth with the stored one, in screen tiles.
+/// \brief Shadow maps: the scene's depth from the light, drawn with the shared scan converter
+/// (depth only, its clusters culled per cube face and by what nearer ones hide); shade()
+/// transforms each visible point into the light's view and compares its depth with the stored
+/// one, in screen tiles. build() sets the maps up and, with `tiles=all`, draws them whole;
+/// by default shade() draws the tiles its points look up, once it has found them.
 ///
 /// Options (`--set shadowmap.KEY=VALUE`):
 /// - `resolution` (default 2048): texels per side of each cube face (point light) or of the
@@ -34,6 +37,8 @@ namespace shadowkit::shadowmap {
 /// - `pcf` (default 1: off): percentage-closer filtering kernel width in texels, odd, 1..31.
 ///   The point is lit when at least half of the kernel's depth tests pass (the mask is
 ///   binary), every test with the same bias; kernels are clamped at the map's (face's) edge.
+/// - `tiles` (default looked_up): `looked_up` draws only the map tiles the camera pass looks
+///   up, `all` the whole maps in build(); the masks are the same.
 ///
 /// A point is lit when it passes condition 1 (faces_light) and its depth from the light is
 /// not greater than the stored depth plus bias. Setting bias and slope_bias to 0 shows
@@ -63,10 +68,28 @@ class ShadowMapMethod final : public ShadowMethod {
  private:
   struct Receiver;
   struct TileRow;
+  struct CameraPass;
   /// The column parts of the camera's pixel rays, forward + x right, coordinate by coordinate.
   struct ColumnRays {
     std::vector<double> x, y, z;
   };
+  /// The maps of the last build(): a cube map's six faces, or the one orthographic map.
+  int map_count() const;
+  const shadowmap::DepthMap& map(int m) const;
+  shadowmap::DepthMap& map(int m);
+  /// Draws the tiles wanted_ marks in every map (all of them where it is empty).
+  void draw_maps(const Scene& scene, const Context& ctx);
+  /// Runs \p fill(y, x0, x1, row, receiver) and then \p finish(row) on every row of every
+  /// screen tile of \p surfaces.
+  template <class Fill, class Finish>
+  void each_tile_row(const VisibleSurfaceBuffer& surfaces, Fill&& fill, Finish&& finish) const;
+  void set_up_row(const CameraPass& pass, int y, int x0, int x1, TileRow& r,
+                  Receiver& receiver) const;
+  void load_row(TileRow& r) const;
+  /// Writes each point of a loaded row lit or shadowed into \p mask.
+  void decide_row(const TileRow& r, ShadowMask& mask) const;
+  void keep_row(int y, int x0, int x1, const TileRow& r);
+  void kept_row(int y, int x0, int x1, TileRow& r) const;
   /// What the camera pass keeps of the receiving \p face with \p plane, seen from \p eye.
   Receiver receiver_of(const Plane& plane, Vec3 eye, std::uint32_t face) const;
   /// The bias terms of the depth tests on a receiver with \p plane (Williams's
@@ -91,11 +114,19 @@ class ShadowMapMethod final : public ShadowMethod {
   std::optional<double> bias_option_;
   double slope_bias_ = 1.0;
   int pcf_ = 1;
+  bool all_tiles_ = false;
 
   Light light_;
   double bias_ = 0;
   shadowmap::CubeMap cube_;
   shadowmap::DepthMap ortho_;
+  /// Per map, the tiles the camera pass looks up; empty: all.
+  std::array<std::vector<std::uint8_t>, shadowmap::CubeMap::kFaces> wanted_;
+  /// Per pixel of the last camera pass (rows of kept_width_), its light-facing point's texel
+  /// and depth less its bias, kept from locating the points to testing them.
+  std::size_t kept_width_ = 0;
+  std::vector<std::uint32_t> kept_texel_;
+  std::vector<float> kept_depth_;
 };
 
 /// The orthographic view along \p direction that covers the 8 corners of \p bounds, with its

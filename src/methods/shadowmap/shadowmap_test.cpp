@@ -228,7 +228,7 @@ TEST(ShadowMap, CubeFaceSelectionCoversAllDirections) {
 // batch's size change nothing.
 TEST(ShadowMap, BatchesPlaceDirectionsAsTheCubeMapDoes) {
   constexpr int kRes = 64;
-  ShadowMapMethod method = make({{"resolution", std::to_string(kRes)}});
+  ShadowMapMethod method = make({{"resolution", std::to_string(kRes)}, {"tiles", "all"}});
   method.build(square_scene(Light::point({0, 1, 0}), kTopCamera), 0, quiet());
   const CubeMap& cube = method.cube_map();
   std::vector<Vec3> dirs;
@@ -344,7 +344,7 @@ TEST(ShadowMap, CubeMapEdgesAndCornersLookUpCorrectly) {
   }
   for (int resolution : {16, 64}) {
     SCOPED_TRACE(resolution);
-    ShadowMapMethod method = make({{"resolution", std::to_string(resolution)}});
+    ShadowMapMethod method = make({{"resolution", std::to_string(resolution)}, {"tiles", "all"}});
     const std::vector<bool> open = depth_tests(box_scene(false), method, pts);
     for (std::size_t k = 0; k < pts.size(); ++k) {
       EXPECT_TRUE(open[k]) << pts[k].x << " " << pts[k].y << " " << pts[k].z;
@@ -432,7 +432,7 @@ TEST(ShadowMap, CubeFacesHoldTheScanConvertersDepths) {
 // The orthographic map of a directional light, drawn from the scan converter's setup.
 TEST(ShadowMap, DirectionalMapHoldsTheScanConvertersDepths) {
   const Scene scene = square_scene(Light::directional({0.3, -1, 0.2}), kTopCamera);
-  ShadowMapMethod method = make({{"resolution", "100"}});
+  ShadowMapMethod method = make({{"resolution", "100"}, {"tiles", "all"}});
   method.build(scene, 0, quiet());
   const DepthMap& map = method.directional_map();
   const std::vector<float> expected = scan_converter_depths(scene, map.view());
@@ -482,28 +482,90 @@ TEST(ShadowMap, CameraPassAgreesWithThePointTest) {
   }
 }
 
+// The ground of square_scene() under 13 x 13 small pyramids of four sides, seen from above at
+// an angle.
+Scene pyramid_field(const Light& light) {
+  Scene scene = square_scene(light, small_camera({0, 4, 9}, {0, 0, 0}, 70), false);
+  for (int i = -6; i <= 6; ++i) {
+    for (int j = -6; j <= 6; ++j) {
+      const double x = 0.7 * i, z = 0.7 * j, h = 0.6 + 0.1 * ((i + j) & 3);
+      add_object(scene, "pyramid",
+                 {{x - 0.25, 0, z - 0.25},
+                  {x + 0.25, 0, z - 0.25},
+                  {x + 0.25, 0, z + 0.25},
+                  {x - 0.25, 0, z + 0.25},
+                  {x, h, z}},
+                 {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}});
+    }
+  }
+  scene.finalize();
+  return scene;
+}
+
 // The same where a row of pixels crosses a face every few pixels: a field of small pyramids,
 // whose sides turned from the light are shadowed stretches between lit ones, and sky between
 // the ground's edge and the top of the image.
 TEST(ShadowMap, CameraPassAgreesWithThePointTestAcrossManySmallFaces) {
   for (const Light& light : kPassLights) {
     SCOPED_TRACE(std::to_string(light.position.x));
-    Scene scene = square_scene(light, small_camera({0, 4, 9}, {0, 0, 0}, 70), false);
-    for (int i = -6; i <= 6; ++i) {
-      for (int j = -6; j <= 6; ++j) {
-        const double x = 0.7 * i, z = 0.7 * j, h = 0.6 + 0.1 * ((i + j) & 3);
-        add_object(scene, "pyramid",
-                   {{x - 0.25, 0, z - 0.25},
-                    {x + 0.25, 0, z - 0.25},
-                    {x + 0.25, 0, z + 0.25},
-                    {x - 0.25, 0, z + 0.25},
-                    {x, h, z}},
-                   {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}});
-      }
-    }
-    scene.finalize();
+    const Scene scene = pyramid_field(light);
     ShadowMapMethod method = make({{"resolution", "256"}});
     EXPECT_EQ(camera_pass_disagreements(scene, method, render(scene, method)), 0);
+  }
+}
+
+double counter(const ShadowMapMethod& method, const std::string& name) {
+  for (const auto& [k, v] : method.counters()) {
+    if (k == name) return v;
+  }
+  ADD_FAILURE() << "no counter " << name;
+  return 0;
+}
+
+// Drawing only the tiles the visible points look up gives the masks of the whole map, PCF
+// kernels across tile borders included, with fewer tiles drawn; a second camera pass draws
+// its own tiles again.
+TEST(ShadowMap, LookedUpTilesGiveTheWholeMapsMasks) {
+  const Camera low = small_camera({0, 0.6, 6}, {0, 0.3, 0}, 50);  // half sky
+  for (const Light& light : kPassLights) {
+    for (const Scene& scene :
+         {square_scene(light, kTopCamera), square_scene(light, low), pyramid_field(light)}) {
+      for (const int pcf : {1, 5, 31}) {
+        SCOPED_TRACE(std::to_string(light.position.x) + " pcf " + std::to_string(pcf));
+        const std::map<std::string, std::string> settings{{"resolution", "256"},
+                                                          {"pcf", std::to_string(pcf)}};
+        std::map<std::string, std::string> all = settings;
+        all["tiles"] = "all";
+        ShadowMapMethod whole = make(all), looked_up = make(settings);
+        const Rendered expected = render(scene, whole);
+        const Rendered got = render(scene, looked_up);
+        EXPECT_EQ(got.mask.pixels, expected.mask.pixels);
+        EXPECT_EQ(counter(whole, "drawn_tiles"), counter(whole, "map_tiles"));
+        EXPECT_GT(counter(looked_up, "drawn_tiles"), 0);
+        if (pcf < 31) {  // a kernel of 31 texels reaches every tile of a 256-texel map
+          EXPECT_LT(counter(looked_up, "drawn_tiles"), counter(looked_up, "map_tiles"));
+        }
+        ShadowMask again(got.mask.width, got.mask.height, kMaskBackground);
+        looked_up.shade(scene, got.surfaces, again, quiet());
+        EXPECT_EQ(again.pixels, expected.mask.pixels);
+      }
+    }
+  }
+}
+
+// Nothing to look up draws nothing: a camera that sees no surface, and one that sees only
+// faces turned from the light.
+TEST(ShadowMap, NoLookupsDrawNoTile) {
+  const Camera sky = small_camera({0, 2, 5}, {0, 12, 4});
+  const Camera below = small_camera({0, -3, 0.5}, {0, 0, 0});
+  for (const Light& light : kPassLights) {
+    for (const Camera& camera : {sky, below}) {
+      const Scene scene = square_scene(light, camera);
+      ShadowMapMethod method = make({{"resolution", "256"}});
+      const Rendered r = render(scene, method);
+      EXPECT_EQ(counter(method, "drawn_tiles"), 0);
+      EXPECT_EQ(count_mask(r, 0, kMaskLit) + count_mask(r, 1, kMaskLit), 0);
+    }
   }
 }
 
@@ -548,6 +610,7 @@ TEST(ShadowMap, RejectsBadOptions) {
   EXPECT_THROW(make({{"slope_bias", "-1"}}), InputError);
   EXPECT_THROW(make({{"pcf", "2"}}), InputError);
   EXPECT_THROW(make({{"pcf", "0"}}), InputError);
+  EXPECT_THROW(make({{"tiles", "some"}}), InputError);
   EXPECT_NO_THROW(make({{"resolution", "16"}, {"bias", "0"}, {"slope_bias", "2"}, {"pcf", "3"}}));
 }
 
@@ -562,28 +625,32 @@ TEST(ShadowMap, UndersideOfOpenSquareIsInShadow) {
 
 TEST(ShadowMap, MemoryAndCounters) {
   const Scene point = square_scene(Light::point({0, 4, 0}), kTopCamera);
-  ShadowMapMethod method = make({{"resolution", "32"}});
+  ShadowMapMethod method = make({{"resolution", "32"}, {"tiles", "all"}});
   render(point, method);
   // A 32 x 32 face is one tile. Nothing is above the light: the +Y face holds only the shared
   // tile of +infinity; the five others hold it and their one drawn tile.
   constexpr std::size_t kTileBytes = DepthMap::kTileTexels * sizeof(float);
   const CubeMap& cube = method.cube_map();
   EXPECT_EQ(cube.face(2).covered_texels(), 0u);
-  EXPECT_EQ(cube.face(2).memory_bytes(), kTileBytes + sizeof(std::uint32_t));
+  // Each tile has a slot (4 bytes) and a flag of whether it is drawn (1 byte).
+  constexpr std::size_t kPerTile = sizeof(std::uint32_t) + 1;
+  EXPECT_EQ(cube.face(2).memory_bytes(), kTileBytes + kPerTile);
   EXPECT_EQ(cube.face(3).covered_texels(), 32u * 32);  // -Y: the ground fills it
   std::size_t maps = 0;
   for (int f = 0; f < CubeMap::kFaces; ++f) maps += cube.face(f).memory_bytes();
-  EXPECT_EQ(maps, 6 * kTileBytes + 5 * kTileBytes + 6 * sizeof(std::uint32_t));
+  EXPECT_EQ(maps, 6 * kTileBytes + 5 * kTileBytes + 6 * kPerTile);
   EXPECT_EQ(method.memory_bytes(), maps);  // the maps are all a light's build keeps
   std::map<std::string, double> c;
   for (const auto& [k, v] : method.counters()) c[k] = v;
   EXPECT_EQ(c["faces"], 6);
   EXPECT_EQ(c["map_texels"], 6 * 32 * 32);
+  EXPECT_EQ(c["map_tiles"], 6);
+  EXPECT_EQ(c["drawn_tiles"], 6);
   EXPECT_GT(c["covered_texels"], 0);
 
   const Scene directional = square_scene(Light::directional({0, -1, 0.1}), kTopCamera);
   render(directional, method);
-  EXPECT_EQ(method.memory_bytes(), 2 * kTileBytes + sizeof(std::uint32_t));
+  EXPECT_EQ(method.memory_bytes(), 2 * kTileBytes + kPerTile);
   c.clear();
   for (const auto& [k, v] : method.counters()) c[k] = v;
   EXPECT_EQ(c["faces"], 1);
