@@ -212,21 +212,26 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
     map(m).start(map(m).view());
     wanted_[m].assign(map(m).tile_count(), 0);
   }
-  kept_width_ = std::size_t(surfaces.width);
-  kept_texel_.resize(surfaces.depth.size());
-  kept_depth_.resize(surfaces.depth.size());
+  kept_columns_ = std::size_t((surfaces.width + kShadeTileW - 1) / kShadeTileW);
+  const std::size_t rows = kept_columns_ * std::size_t(surfaces.height);
+  if (kept_capacity_ < rows) {
+    // Left uninitialized: a row's points are written before they are read.
+    kept_ = std::make_unique_for_overwrite<KeptPoint[]>(rows * kShadeTileW);
+    kept_capacity_ = rows;
+  }
+  kept_count_.resize(rows);
   each_tile_row(
       surfaces,
       [&](int y, int x0, int x1, TileRow& r, Receiver& receiver) {
         set_up_row(pass, y, x0, x1, r, receiver);
-        keep_row(y, x0, x1, r);
+        keep_row(y, x0, r);
       },
       [](const TileRow&) {});
   draw_maps(scene, ctx);
   each_tile_row(
       surfaces,
-      [&](int y, int x0, int x1, TileRow& r, Receiver&) {
-        kept_row(y, x0, x1, r);
+      [&](int y, int x0, int /*x1*/, TileRow& r, Receiver&) {
+        kept_row(y, x0, r);
         load_row(r);
       },
       decide);
@@ -301,28 +306,32 @@ void ShadowMapMethod::decide_row(const TileRow& r, ShadowMask& mask) const {
   }
 }
 
-// A texel kept per pixel between the passes: map << 28 | tile << 12 | place in the tile.
-constexpr std::uint32_t kNotKept = ~0u;
 static_assert(kMaxResolution / DepthMap::kTile * (kMaxResolution / DepthMap::kTile) <= 1 << 16 &&
               DepthMap::kTileTexels <= 1 << 12 && CubeMap::kFaces <= 8);
 
-// Keeps each point's texel and depth at its pixel, and wants the tiles its tests read: with
-// PCF, those of its kernel's corners, which span at most two tiles a side.
-void ShadowMapMethod::keep_row(int y, int x0, int x1, const TileRow& r) {
-  std::fill_n(kept_texel_.begin() + std::ptrdiff_t(std::size_t(y) * kept_width_ + x0), x1 - x0,
-              kNotKept);
+// Where the points of row y of the screen tiles' column starting at x0 are kept.
+std::size_t ShadowMapMethod::kept_row_index(int y, int x0) const {
+  return std::size_t(y) * kept_columns_ + std::size_t(x0 / kShadeTileW);
+}
+
+// Keeps a located row's points, and wants the tiles their tests read: with PCF, those of each
+// kernel's corners, which span at most two tiles a side.
+void ShadowMapMethod::keep_row(int y, int x0, const TileRow& r) {
+  const std::size_t row = kept_row_index(y, x0);
+  kept_count_[row] = std::uint8_t(r.points.size);
+  KeptPoint* kept = kept_.get() + row * kShadeTileW;
   const auto want = [&](int m, std::size_t tile) {
     std::atomic_ref<std::uint8_t> w(wanted_[m][tile]);
     if (!w.load(std::memory_order_relaxed)) w.store(1, std::memory_order_relaxed);
   };
   const int reach = pcf_ / 2;
   static_assert(kMaxPcf / 2 < DepthMap::kTile);
-  std::uint32_t last = kNotKept;  // neighbouring points mostly read one tile
+  std::uint32_t last = ~0u;  // neighbouring points mostly read one tile
   for (std::size_t k = 0; k < r.points.size; ++k) {
     const int m = r.texels.map[k];
     const std::uint32_t tile = std::uint32_t(m) << 16 | std::uint32_t(r.texels.tile[k]);
-    kept_texel_[r.pixel[k]] = tile << 12 | std::uint32_t(r.texels.in_tile[k]);
-    kept_depth_[r.pixel[k]] = r.texels.depth[k];
+    kept[k] = {std::uint32_t(r.pixel[k]), tile << 12 | std::uint32_t(r.texels.in_tile[k]),
+               r.texels.depth[k]};
     if (tile == last) continue;
     last = tile;
     if (reach == 0) {
@@ -341,26 +350,23 @@ void ShadowMapMethod::keep_row(int y, int x0, int x1, const TileRow& r) {
   }
 }
 
-// The located row keep_row() kept for row \p y's columns [x0, x1).
-void ShadowMapMethod::kept_row(int y, int x0, int x1, TileRow& r) const {
-  const std::size_t row = std::size_t(y) * kept_width_;
-  const std::uint32_t* kept = kept_texel_.data() + row;
-  std::size_t n = 0;
-  for (int x = x0; x < x1; ++x) {
-    const std::uint32_t texel = kept[x];
-    if (texel == kNotKept) continue;
+// The located row keep_row() kept.
+void ShadowMapMethod::kept_row(int y, int x0, TileRow& r) const {
+  const std::size_t row = kept_row_index(y, x0);
+  const KeptPoint* kept = kept_.get() + row * kShadeTileW;
+  r.points.size = kept_count_[row];
+  for (std::size_t k = 0; k < r.points.size; ++k) {
+    const std::uint32_t texel = kept[k].texel;
     const int m = int(texel >> 28), tile = int(texel >> 12 & 0xffff), in_tile = int(texel & 0xfff);
-    r.pixel[n] = row + std::size_t(x);
-    r.texels.map[n] = m, r.texels.tile[n] = tile, r.texels.in_tile[n] = in_tile;
-    r.texels.depth[n] = kept_depth_[row + std::size_t(x)];
+    r.pixel[k] = kept[k].pixel;
+    r.texels.map[k] = m, r.texels.tile[k] = tile, r.texels.in_tile[k] = in_tile;
+    r.texels.depth[k] = kept[k].depth;
     if (pcf_ > 1) {
       const int tiles_x = map(m).tiles_x();
-      r.texels.texel_x[n] = tile % tiles_x * DepthMap::kTile + in_tile % DepthMap::kTile;
-      r.texels.texel_y[n] = tile / tiles_x * DepthMap::kTile + in_tile / DepthMap::kTile;
+      r.texels.texel_x[k] = tile % tiles_x * DepthMap::kTile + in_tile % DepthMap::kTile;
+      r.texels.texel_y[k] = tile / tiles_x * DepthMap::kTile + in_tile / DepthMap::kTile;
     }
-    ++n;
   }
-  r.points.size = n;
 }
 
 ShadowMapMethod::Receiver ShadowMapMethod::receiver_of(const Plane& plane, Vec3 eye,
@@ -464,7 +470,7 @@ std::size_t ShadowMapMethod::memory_bytes() const {
   std::size_t wanted = 0;
   for (const std::vector<std::uint8_t>& w : wanted_) wanted += w.capacity();
   return cube_.memory_bytes() + ortho_.memory_bytes() + wanted +
-         kept_texel_.capacity() * sizeof(std::uint32_t) + kept_depth_.capacity() * sizeof(float);
+         kept_capacity_ * kShadeTileW * sizeof(KeptPoint) + kept_count_.capacity();
 }
 
 MethodCounters ShadowMapMethod::counters() const {

@@ -4,6 +4,7 @@
 // directional lights, a constant plus slope-scaled depth bias and optional percentage-closer
 // filtering.
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -69,6 +70,12 @@ class ShadowMapMethod final : public ShadowMethod {
   struct Receiver;
   struct TileRow;
   struct CameraPass;
+  /// A point kept between the passes: its pixel, its texel (map << 28 | tile << 12 | place in
+  /// the tile) and its depth less its bias.
+  struct KeptPoint {
+    std::uint32_t pixel, texel;
+    float depth;
+  };
   /// The column parts of the camera's pixel rays, forward + x right, coordinate by coordinate.
   struct ColumnRays {
     std::vector<double> x, y, z;
@@ -88,8 +95,9 @@ class ShadowMapMethod final : public ShadowMethod {
   void load_row(TileRow& r) const;
   /// Writes each point of a loaded row lit or shadowed into \p mask.
   void decide_row(const TileRow& r, ShadowMask& mask) const;
-  void keep_row(int y, int x0, int x1, const TileRow& r);
-  void kept_row(int y, int x0, int x1, TileRow& r) const;
+  std::size_t kept_row_index(int y, int x0) const;
+  void keep_row(int y, int x0, const TileRow& r);
+  void kept_row(int y, int x0, TileRow& r) const;
   /// What the camera pass keeps of the receiving \p face with \p plane, seen from \p eye.
   Receiver receiver_of(const Plane& plane, Vec3 eye, std::uint32_t face) const;
   /// The bias terms of the depth tests on a receiver with \p plane (Williams's
@@ -122,11 +130,11 @@ class ShadowMapMethod final : public ShadowMethod {
   shadowmap::DepthMap ortho_;
   /// Per map, the tiles the camera pass looks up; empty: all.
   std::array<std::vector<std::uint8_t>, shadowmap::CubeMap::kFaces> wanted_;
-  /// Per pixel of the last camera pass (rows of kept_width_), its light-facing point's texel
-  /// and depth less its bias, kept from locating the points to testing them.
-  std::size_t kept_width_ = 0;
-  std::vector<std::uint32_t> kept_texel_;
-  std::vector<float> kept_depth_;
+  /// The last camera pass's light-facing points, kept from locating them to testing them: a
+  /// row of each screen tile's column after another, each with room for a tile's width.
+  std::size_t kept_columns_ = 0, kept_capacity_ = 0;
+  std::unique_ptr<KeptPoint[]> kept_;
+  std::vector<std::uint8_t> kept_count_;  ///< points per row
 };
 
 /// The orthographic view along \p direction that covers the 8 corners of \p bounds, with its
