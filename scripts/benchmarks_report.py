@@ -26,7 +26,9 @@ METHOD_NOTES = {
     "raytrace": "Embree 3 shadow rays, the exact reference. *prepare* builds the BVH (once per "
                 "scene); *shade* traces one shadow ray per surface pixel facing the light.",
     "shadowmap": "Williams 1978 at its defaults (2048² texels a map, a cube map for a point "
-                 "light): *build* renders the depth maps, *shade* tests every surface pixel.",
+                 "light, `shadowmap.tiles=looked_up`): *build* sets the maps up, *shade* finds "
+                 "every surface pixel's texel, draws the map tiles they look up, then tests "
+                 "them ([methods/shadowmap.md](methods/shadowmap.md)).",
     "volume": "Crow 1977 shadow volumes at their defaults (`volume.count=auto`): *prepare* is "
               "the light-independent set-up, *build* the contour edges and shadow polygons, "
               "*shade* counts them per pixel.",
