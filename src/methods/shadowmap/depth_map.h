@@ -51,8 +51,9 @@ class DepthMap {
   std::size_t tile_count() const { return slot_.size(); }
   /// Whether the tile of texel (x, y) has been drawn since start().
   bool drawn(int x, int y) const {
-    return drawn_[std::size_t(unsigned(y) / kTile) * tiles_x_ + unsigned(x) / kTile] != 0;
+    return tile_drawn(std::size_t(unsigned(y) / kTile) * tiles_x_ + unsigned(x) / kTile);
   }
+  bool tile_drawn(std::size_t tile) const { return drawn_[tile] != 0; }
 
   const RasterProjection& view() const { return view_; }
   int width() const { return view_.width; }
