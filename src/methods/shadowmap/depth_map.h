@@ -51,9 +51,8 @@ class DepthMap {
   std::size_t tile_count() const { return slot_.size(); }
   /// Whether the tile of texel (x, y) has been drawn since start().
   bool drawn(int x, int y) const {
-    return tile_drawn(std::size_t(unsigned(y) / kTile) * tiles_x_ + unsigned(x) / kTile);
+    return drawn_[std::size_t(unsigned(y) / kTile) * tiles_x_ + unsigned(x) / kTile] != 0;
   }
-  bool tile_drawn(std::size_t tile) const { return drawn_[tile] != 0; }
 
   const RasterProjection& view() const { return view_; }
   int width() const { return view_.width; }

@@ -195,33 +195,41 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
                             ShadowMask& mask, const Context& ctx) {
   SHADOWKIT_CHECK(map(0).texel_count() > 0);  // built
   const CameraPass pass(scene, surfaces, mask);
-  if (!all_tiles_) {
-    draw_first_look(pass, ctx);
-    kept_columns_ = std::size_t((surfaces.width + kShadeTileW - 1) / kShadeTileW);
-    const std::size_t rows = kept_columns_ * std::size_t(surfaces.height);
-    if (kept_capacity_ < rows) {
-      // Left uninitialized: a row's points are written before they are read.
-      kept_ = std::make_unique_for_overwrite<KeptPoint[]>(rows * kShadeTileW);
-      kept_capacity_ = rows;
-    }
-    kept_count_.resize(rows);
-  }
   const auto decide = [&](const TileRow& r) { decide_row(r, mask); };
-  std::atomic<bool> kept_any{false};
+  if (all_tiles_) {
+    each_tile_row(
+        surfaces,
+        [&](int y, int x0, int x1, TileRow& r, Receiver& receiver) {
+          set_up_row(pass, y, x0, x1, r, receiver);
+          load_row(r);
+        },
+        decide);
+    return;
+  }
+  // Every camera pass draws its own tiles, as if built for it: a frame costs the same
+  // however many came before it for the same light.
+  for (int m = 0; m < map_count(); ++m) {
+    map(m).start(map(m).view());
+    wanted_[m].assign(map(m).tile_count(), 0);
+  }
+  kept_columns_ = std::size_t((surfaces.width + kShadeTileW - 1) / kShadeTileW);
+  const std::size_t rows = kept_columns_ * std::size_t(surfaces.height);
+  if (kept_capacity_ < rows) {
+    // Left uninitialized: a row's points are written before they are read.
+    kept_ = std::make_unique_for_overwrite<KeptPoint[]>(rows * kShadeTileW);
+    kept_capacity_ = rows;
+  }
+  kept_count_.resize(rows);
   each_tile_row(
-      surfaces, kShadeTileH,
+      surfaces,
       [&](int y, int x0, int x1, TileRow& r, Receiver& receiver) {
         set_up_row(pass, y, x0, x1, r, receiver);
-        if (!all_tiles_ && split_row(y, x0, r)) kept_any.store(true, std::memory_order_relaxed);
-        load_row(r);
+        keep_row(y, x0, r);
       },
-      decide);
-  late_points_ = 0;
-  if (!kept_any.load()) return;
-  for (const std::uint8_t n : kept_count_) late_points_ += n;
+      [](const TileRow&) {});
   draw_maps(scene, ctx);
   each_tile_row(
-      surfaces, kShadeTileH,
+      surfaces,
       [&](int y, int x0, int /*x1*/, TileRow& r, Receiver&) {
         kept_row(y, x0, r);
         load_row(r);
@@ -229,39 +237,19 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
       decide);
 }
 
-// A first look at the points, the first row of every screen tile, and the tiles of the maps
-// they read drawn: in most views they are nearly all the tiles the other rows read. Every
-// camera pass draws its own tiles, as if built for it: a frame costs the same however many
-// came before it for the same light.
-void ShadowMapMethod::draw_first_look(const CameraPass& pass, const Context& ctx) {
-  for (int m = 0; m < map_count(); ++m) {
-    map(m).start(map(m).view());
-    wanted_[m].assign(map(m).tile_count(), 0);
-  }
-  each_tile_row(
-      pass.surfaces, 1,
-      [&](int y, int x0, int x1, TileRow& r, Receiver& receiver) {
-        set_up_row(pass, y, x0, x1, r, receiver);
-        for (std::size_t k = 0; k < r.points.size; ++k) want_tiles_read(r.texels, k);
-      },
-      [](const TileRow&) {});
-  draw_maps(pass.scene, ctx);
-  for (int m = 0; m < map_count(); ++m) std::fill(wanted_[m].begin(), wanted_[m].end(), 0);
-}
-
 // Runs over screen tiles, so that neighbouring visible points, which look up neighbouring
 // texels, come one after another; \p fill sets up a tile's row as one batch and \p finish
 // takes it one row later, so that a row's texels load while the next row is set up.
 template <class Fill, class Finish>
-void ShadowMapMethod::each_tile_row(const VisibleSurfaceBuffer& surfaces, int rows_per_tile,
-                                    Fill&& fill, Finish&& finish) const {
+void ShadowMapMethod::each_tile_row(const VisibleSurfaceBuffer& surfaces, Fill&& fill,
+                                    Finish&& finish) const {
   static_assert(kShadeTileW <= PointBatch::kSize);
   const int tiles_x = (surfaces.width + kShadeTileW - 1) / kShadeTileW;
   const int tiles_y = (surfaces.height + kShadeTileH - 1) / kShadeTileH;
   tbb::parallel_for(0, tiles_x * tiles_y, [&](int tile) {
     const int x0 = (tile % tiles_x) * kShadeTileW, y0 = (tile / tiles_x) * kShadeTileH;
     const int x1 = std::min(x0 + kShadeTileW, surfaces.width);
-    const int y1 = std::min(y0 + rows_per_tile, surfaces.height);
+    const int y1 = std::min(y0 + kShadeTileH, surfaces.height);
     Receiver receiver;
     // The thread's own, made once (a frame has thousands of tiles): the body starts no
     // parallel work, so no other tile takes them meanwhile.
@@ -326,73 +314,43 @@ std::size_t ShadowMapMethod::kept_row_index(int y, int x0) const {
   return std::size_t(y) * kept_columns_ + std::size_t(x0 / kShadeTileW);
 }
 
-// Calls \p fn with each tile of map \p m that the tests of texel (x, y) read: with PCF, those
-// of its kernel's corners, which span at most two tiles a side.
-template <class Fn>
-void ShadowMapMethod::each_tile_read(int m, int x, int y, Fn&& fn) const {
-  static_assert(kMaxPcf / 2 < DepthMap::kTile);
-  const DepthMap& face = map(m);
-  const int reach = pcf_ / 2;
-  const int xa = std::max(x - reach, 0) / DepthMap::kTile,
-            xb = std::min(x + reach, face.width() - 1) / DepthMap::kTile;
-  const int ya = std::max(y - reach, 0) / DepthMap::kTile,
-            yb = std::min(y + reach, face.height() - 1) / DepthMap::kTile;
-  fn(std::size_t(ya) * face.tiles_x() + xa);
-  if (xb != xa) fn(std::size_t(ya) * face.tiles_x() + xb);
-  if (yb != ya) fn(std::size_t(yb) * face.tiles_x() + xa);
-  if (xb != xa && yb != ya) fn(std::size_t(yb) * face.tiles_x() + xb);
-}
-
-void ShadowMapMethod::want_tiles_read(const TexelBatch& texels, std::size_t k) {
-  const int m = texels.map[k];
-  each_tile_read(m, texels.texel_x[k], texels.texel_y[k], [&](std::size_t tile) {
-    if (map(m).tile_drawn(tile)) return;
+// Keeps a located row's points, and wants the tiles their tests read: with PCF, those of each
+// kernel's corners, which span at most two tiles a side.
+void ShadowMapMethod::keep_row(int y, int x0, const TileRow& r) {
+  const std::size_t row = kept_row_index(y, x0);
+  kept_count_[row] = std::uint8_t(r.points.size);
+  KeptPoint* kept = kept_.get() + row * kShadeTileW;
+  const auto want = [&](int m, std::size_t tile) {
     std::atomic_ref<std::uint8_t> w(wanted_[m][tile]);
     if (!w.load(std::memory_order_relaxed)) w.store(1, std::memory_order_relaxed);
-  });
-}
-
-// Leaves in \p r the points whose tests read only drawn tiles; keeps the others, and wants
-// the tiles they read. Whether it kept any.
-bool ShadowMapMethod::split_row(int y, int x0, TileRow& r) {
-  const std::size_t row = kept_row_index(y, x0);
-  KeptPoint* kept = kept_.get() + row * kShadeTileW;
-  TexelBatch& t = r.texels;
-  std::size_t ready = 0, n_kept = 0;
+  };
+  const int reach = pcf_ / 2;
+  static_assert(kMaxPcf / 2 < DepthMap::kTile);
   std::uint32_t last = ~0u;  // neighbouring points mostly read one tile
-  bool drawn = false;
   for (std::size_t k = 0; k < r.points.size; ++k) {
-    const std::uint32_t tile = std::uint32_t(t.map[k]) << 16 | std::uint32_t(t.tile[k]);
-    if (pcf_ > 1) {
-      drawn = true;
-      each_tile_read(t.map[k], t.texel_x[k], t.texel_y[k],
-                     [&](std::size_t read) { drawn = drawn && map(t.map[k]).tile_drawn(read); });
-    } else if (tile != last) {
-      last = tile;
-      drawn = map(t.map[k]).tile_drawn(std::size_t(t.tile[k]));
-    }
-    if (drawn) {
-      if (ready != k) {
-        r.pixel[ready] = r.pixel[k];
-        t.map[ready] = t.map[k], t.texel_x[ready] = t.texel_x[k];
-        t.texel_y[ready] = t.texel_y[k], t.tile[ready] = t.tile[k];
-        t.in_tile[ready] = t.in_tile[k], t.depth[ready] = t.depth[k];
-      }
-      ++ready;
+    const int m = r.texels.map[k];
+    const std::uint32_t tile = std::uint32_t(m) << 16 | std::uint32_t(r.texels.tile[k]);
+    kept[k] = {std::uint32_t(r.pixel[k]), tile << 12 | std::uint32_t(r.texels.in_tile[k]),
+               r.texels.depth[k]};
+    if (tile == last) continue;
+    last = tile;
+    if (reach == 0) {
+      want(m, std::size_t(r.texels.tile[k]));
       continue;
     }
-    kept[n_kept++] = {std::uint32_t(r.pixel[k]),
-                      std::uint32_t(t.map[k]) << 28 | std::uint32_t(t.tile[k]) << 12 |
-                          std::uint32_t(t.in_tile[k]),
-                      t.depth[k]};
-    want_tiles_read(t, k);
+    const DepthMap& face = map(m);
+    const int x = r.texels.texel_x[k], y_k = r.texels.texel_y[k];
+    const int xa = std::max(x - reach, 0) / DepthMap::kTile,
+              xb = std::min(x + reach, face.width() - 1) / DepthMap::kTile;
+    const int ya = std::max(y_k - reach, 0) / DepthMap::kTile,
+              yb = std::min(y_k + reach, face.height() - 1) / DepthMap::kTile;
+    for (const int ty : {ya, yb}) {
+      for (const int tx : {xa, xb}) want(m, std::size_t(ty) * face.tiles_x() + tx);
+    }
   }
-  r.points.size = ready;
-  kept_count_[row] = std::uint8_t(n_kept);
-  return n_kept > 0;
 }
 
-// The located row split_row() kept.
+// The located row keep_row() kept.
 void ShadowMapMethod::kept_row(int y, int x0, TileRow& r) const {
   const std::size_t row = kept_row_index(y, x0);
   const KeptPoint* kept = kept_.get() + row * kShadeTileW;
@@ -525,7 +483,6 @@ MethodCounters ShadowMapMethod::counters() const {
           {"covered_texels", covered},
           {"map_tiles", tiles},
           {"drawn_tiles", drawn},
-          {"late_points", double(late_points_)},
           {"faces", double(map_count())}};
 }
 

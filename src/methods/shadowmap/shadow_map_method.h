@@ -86,22 +86,17 @@ class ShadowMapMethod final : public ShadowMethod {
   shadowmap::DepthMap& map(int m);
   /// Draws the tiles wanted_ marks in every map (all of them where it is empty).
   void draw_maps(const Scene& scene, const Context& ctx);
-  /// Runs \p fill(y, x0, x1, row, receiver) and then \p finish(row) on the first
-  /// \p rows_per_tile rows of every screen tile of \p surfaces.
+  /// Runs \p fill(y, x0, x1, row, receiver) and then \p finish(row) on every row of every
+  /// screen tile of \p surfaces.
   template <class Fill, class Finish>
-  void each_tile_row(const VisibleSurfaceBuffer& surfaces, int rows_per_tile, Fill&& fill,
-                     Finish&& finish) const;
-  void draw_first_look(const CameraPass& pass, const Context& ctx);
+  void each_tile_row(const VisibleSurfaceBuffer& surfaces, Fill&& fill, Finish&& finish) const;
   void set_up_row(const CameraPass& pass, int y, int x0, int x1, TileRow& r,
                   Receiver& receiver) const;
   void load_row(TileRow& r) const;
   /// Writes each point of a loaded row lit or shadowed into \p mask.
   void decide_row(const TileRow& r, ShadowMask& mask) const;
   std::size_t kept_row_index(int y, int x0) const;
-  template <class Fn>
-  void each_tile_read(int m, int x, int y, Fn&& fn) const;
-  void want_tiles_read(const shadowmap::TexelBatch& texels, std::size_t k);
-  bool split_row(int y, int x0, TileRow& r);
+  void keep_row(int y, int x0, const TileRow& r);
   void kept_row(int y, int x0, TileRow& r) const;
   /// What the camera pass keeps of the receiving \p face with \p plane, seen from \p eye.
   Receiver receiver_of(const Plane& plane, Vec3 eye, std::uint32_t face) const;
@@ -140,8 +135,6 @@ class ShadowMapMethod final : public ShadowMethod {
   std::size_t kept_columns_ = 0, kept_capacity_ = 0;
   std::unique_ptr<KeptPoint[]> kept_;
   std::vector<std::uint8_t> kept_count_;  ///< points per row
-  /// Points of the last camera pass whose tiles the first look missed.
-  std::size_t late_points_ = 0;
 };
 
 /// The orthographic view along \p direction that covers the 8 corners of \p bounds, with its
