@@ -233,7 +233,7 @@ std::vector<std::uint32_t> unhidden_triangles(const Scene& scene, const HiddenSi
 // all the triangles, whatever order they are drawn in.
 void ScanConverter::rasterize_tiles(const RasterProjection& view, const Context& /*ctx*/,
                                     const std::function<void(const RasterTile&)>& fn) const {
-  draw_clusters(view, {.faces = true, .empty_tiles = true}, fn);
+  draw_clusters(view, {.faces = true, .empty_tiles = true, .wanted = {}}, fn);
 }
 
 void ScanConverter::rasterize_depth_tiles(const RasterProjection& view, const Context& /*ctx*/,
