@@ -189,8 +189,8 @@ struct ShadowMapMethod::CameraPass {
 };
 
 // Williams 1978's second pass. With every tile drawn, in one pass over the visible points.
-// Otherwise in three: the points' texels, kept per pixel; the tiles they look up drawn, and
-// only those; then the tests, from the texels kept.
+// Otherwise in three: the points located and kept row by row, with the tiles they read; those
+// tiles drawn, and only those; then the tests of the points kept.
 void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
                             ShadowMask& mask, const Context& ctx) {
   SHADOWKIT_CHECK(map(0).texel_count() > 0);  // built
@@ -306,6 +306,7 @@ void ShadowMapMethod::decide_row(const TileRow& r, ShadowMask& mask) const {
   }
 }
 
+// KeptPoint::texel's fields: a map, a tile of it and a texel of the tile.
 static_assert(kMaxResolution / DepthMap::kTile * (kMaxResolution / DepthMap::kTile) <= 1 << 16 &&
               DepthMap::kTileTexels <= 1 << 12 && CubeMap::kFaces <= 8);
 
@@ -447,7 +448,7 @@ inline const float& ShadowMapMethod::stored(const TexelBatch& texels, std::size_
 }
 
 inline const DepthMap& ShadowMapMethod::map_of(const TexelBatch& texels, std::size_t k) const {
-  return light_.type == Light::Type::point ? cube_.face(texels.map[k]) : ortho_;
+  return map(texels.map[k]);
 }
 
 inline bool ShadowMapMethod::lit(const TexelBatch& texels, std::size_t k) const {
