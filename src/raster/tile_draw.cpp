@@ -8,8 +8,6 @@
 namespace shadowkit::raster {
 namespace {
 
-constexpr int kBlock = TileDepth::kBlock, kBlocks = TileDepth::kBlocks;
-
 // The largest key of triangle \p t over pixel centres [xa, xb] x [ya, yb], raised past the
 // rounding of the per-pixel sums: a linear function peaks at a corner.
 double nearest_key(const ScreenTriangle& t, int xa, int xb, int ya, int yb) {
