@@ -30,17 +30,12 @@ RasterProjection CubeMap::face_view(int face, Vec3 eye, int resolution, double n
 
 void CubeMap::render(const Scene& scene, Vec3 light_position, int resolution, const Context& ctx) {
   start(scene, light_position, resolution);
-  draw(scene, ctx, {});
+  for (DepthMap& face : faces_) face.draw(scene, ctx);
 }
 
 void CubeMap::start(const Scene& scene, Vec3 light_position, int resolution) {
   const double near = near_plane_for(scene.bounds(), light_position);
   for (int f = 0; f < kFaces; ++f) faces_[f].start(face_view(f, light_position, resolution, near));
-}
-
-void CubeMap::draw(const Scene& scene, const Context& ctx,
-                   const std::array<ScanConverter::TileMask, kFaces>& wanted) {
-  for (int f = 0; f < kFaces; ++f) faces_[f].draw(scene, ctx, wanted[f]);
 }
 
 std::size_t CubeMap::texel_count() const {

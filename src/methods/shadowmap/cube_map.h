@@ -38,13 +38,10 @@ class CubeMap {
   static RasterProjection face_view(int face, Vec3 eye, int resolution, double near);
 
   /// Renders all six faces of \p scene for a point light at \p light_position: start(), then
-  /// draw() of every tile.
+  /// every tile of every face drawn.
   void render(const Scene& scene, Vec3 light_position, int resolution, const Context& ctx);
   /// Sets the six faces up for a point light at \p light_position with no tile drawn.
   void start(const Scene& scene, Vec3 light_position, int resolution);
-  /// Renders \p scene into the tiles of each face that \p wanted marks (DepthMap::draw).
-  void draw(const Scene& scene, const Context& ctx,
-            const std::array<ScanConverter::TileMask, kFaces>& wanted);
 
   const DepthMap& face(int f) const { return faces_[f]; }
   DepthMap& face(int f) { return faces_[f]; }

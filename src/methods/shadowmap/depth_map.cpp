@@ -16,11 +16,6 @@ constexpr float kEmpty = std::numeric_limits<float>::infinity();
 
 }  // namespace
 
-void DepthMap::render(const Scene& scene, const RasterProjection& view, const Context& ctx) {
-  start(view);
-  draw(scene, ctx);
-}
-
 void DepthMap::draw(const Scene& scene, const Context& ctx, ScanConverter::TileMask wanted) {
   if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), 1) == wanted.end()) return;
   for (std::size_t t = 0; t < drawn_.size(); ++t) {

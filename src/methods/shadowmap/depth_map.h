@@ -38,13 +38,10 @@ class DepthMap {
   static constexpr int kTile = 64;
   static constexpr std::size_t kTileTexels = std::size_t(kTile) * kTile;
 
-  /// Renders \p scene through \p view with the scan converter (its depth tiles): start(),
-  /// then draw() of every tile.
-  void render(const Scene& scene, const RasterProjection& view, const Context& ctx);
   /// Sets the map up for \p view with no tile drawn.
   void start(const RasterProjection& view);
-  /// Renders \p scene into the tiles \p wanted marks (every tile when it is empty), each
-  /// drawn at most once since start().
+  /// Renders \p scene into the tiles \p wanted marks (every tile when it is empty) with the
+  /// scan converter (its depth tiles), each drawn at most once since start().
   void draw(const Scene& scene, const Context& ctx, ScanConverter::TileMask wanted = {});
   /// Tiles per row and in all (rows of tiles_x()), the units of draw()'s \p wanted.
   int tiles_x() const { return tiles_x_; }
