@@ -407,7 +407,7 @@ def report(work, out):
         w(f"`{KNOT}`: the (2,3) torus knot of `examples/models/torus-knot.obj` (2,000 quads) "
           "as a Catmull-Clark surface at `tessellation` 12 (2,000 x 12 x 12 x 2 = 576,000 "
           "triangles) over the bumpy Catmull-Clark ground of `examples/subdivision.json` "
-          "(8,192 triangles), one directional light: the knot shadows the ground and its own "
+          "at `tessellation` 8 (8,192 triangles), one directional light: the knot shadows the ground and its own "
           "strands.")
     if any(s.endswith(".ifc") for s in scenes):
         w("`AC14-FZK-Haus.ifc`: the IFC house of Debian's `assimp-testmodels`, as a whole scene "

@@ -175,10 +175,8 @@ ObjectTransform read_transform(const JsonCursor& c, const Context& ctx, const st
 }
 
 // Segments per patch edge of a Catmull-Clark object's tessellation, kTessellationForView
-// for "view", 0 for a polygon mesh.
-// With the default 8, the polygons of examples/subdivision.json stay within 0.3% of their
-// object's size of the limit surface; the gap shrinks as 1 / segments^2 on regular patches
-// but only about as 1 / segments next to extraordinary vertices.
+// for "view" (the default: the contract's surface is the limit surface, and a fixed count is
+// too coarse seen from close and wasted seen from afar), 0 for a polygon mesh.
 int tessellation_segments(const JsonCursor& c) {
   if (!c.has("subdivision")) {
     if (c.has("tessellation")) c["tessellation"].fail("applies only with \"subdivision\"");
@@ -188,7 +186,7 @@ int tessellation_segments(const JsonCursor& c) {
   if (scheme != "catmull-clark") {
     c["subdivision"].fail("unknown scheme '" + scheme + "' (expected \"catmull-clark\")");
   }
-  if (!c.has("tessellation")) return 8;
+  if (!c.has("tessellation")) return kTessellationForView;
   const JsonCursor tessellation = c["tessellation"];
   if (!tessellation.value().is_string()) return tessellation.integer(1, limits::kTessellation);
   if (tessellation.string() != "view") {

@@ -196,7 +196,14 @@ TEST_F(SceneFileTest, CatmullClarkObjectsAreTessellatedLimitSurfaces) {
   const SceneObject& cube = s.objects[0];
   ASSERT_NE(cube.subdivision, nullptr);
   EXPECT_EQ(cube.subdivision->patch_count(), 24u);
-  EXPECT_EQ(cube.mesh.face_count(), 24u * 8 * 8 * 2);  // 8 segments by default
+  // Fitted to the view by default.
+  const Scene fitted = load_scene_file(
+      write("fitted.json",
+            scene(camera, light, object(R"("subdivision": "catmull-clark", "tessellation": "view",
+                            "transform": {"scale": 2, "translate": [0, 1, 0]})"))),
+      quiet_);
+  EXPECT_EQ(cube.mesh.face_count(), fitted.objects[0].mesh.face_count());
+  EXPECT_NE(cube.mesh.face_count(), 24u * 8 * 8 * 2);
   EXPECT_TRUE(cube.mesh.closed());
   // The transform moved the control points: the limit surface is the unit cube's, scaled
   // by 2 about the origin and raised by 1, so its centre sits at (1, 2, 1).

@@ -12,7 +12,8 @@
 namespace shadowkit {
 
 /// ObjectSource::tessellation of a Catmull-Clark object tessellated for the scene's camera
-/// (`"tessellation": "view"`): every cell within half a pixel of the limit surface.
+/// and lights (`"tessellation": "view"`, the default): every cell within half a pixel of the
+/// limit surface, and a pixel across where a facet may turn from a light.
 inline constexpr int kTessellationForView = -1;
 
 /// \brief One object as its source gives it, in world coordinates.

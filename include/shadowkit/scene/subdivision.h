@@ -23,12 +23,15 @@ struct SurfacePoint {
 
 /// \brief How finely a view sees, a pixel at distance d being d x pixel_at_unit_distance: a
 /// tessellation for it keeps every cell within \p pixels pixels of the limit surface, and
-/// where the surface turns from a light, a cell no more than a pixel across: there the
-/// facets decide the contract's condition 1, and its terminator moves by up to a cell.
+/// where a facet may turn from a light, a cell no more than a pixel across: there the facets
+/// decide the contract's condition 1, and their terminator moves by up to a cell.
 struct ViewTolerance {
   Vec3 eye;
   double pixel_at_unit_distance = 0;  ///< 2 tan(fov_y / 2) / height for a pinhole camera
   double pixels = 0.5;
+  /// Where a cell is wider than a pixel, the most its normals may differ, about in radians:
+  /// images shade each facet flat.
+  double normal_spread = 0.05;
   std::vector<Vec3> point_lights;   ///< positions
   std::vector<Vec3> toward_lights;  ///< unit directions toward the directional lights
 };
@@ -36,7 +39,7 @@ struct ViewTolerance {
 /// \brief A tessellation fitted to a view (SubdivisionSurface::tessellate_for_view()).
 struct ViewTessellation {
   PolygonSoup soup;
-  int finest = 1;                   ///< the most segments of a patch
+  int finest = 1;                   ///< 1 / the side of the finest cell, in patch sides
   std::size_t triangles_asked = 0;  ///< what the view's tolerance asked for
   bool coarsened = false;           ///< the bound made it coarser than the view asks
 };
@@ -76,12 +79,12 @@ class SubdivisionSurface {
   /// \p face_patch, when given, receives the patch of each output triangle.
   PolygonSoup tessellate(int segments, std::vector<std::uint32_t>* face_patch = nullptr) const;
 
-  /// A crack-free tessellation whose cells, per patch, are the fewest (n x n, n a power of
-  /// two up to 256) that meet \p view's tolerance, checked at every cell's corners, side
-  /// midpoints and centre.
-  /// A side takes the segments of the finer of its patches; the coarser patch's cells along
-  /// it are fanned from their centres. Past \p most_triangles, every patch's n is halved
-  /// until it fits (or every patch is one cell).
+  /// A crack-free tessellation fitted to \p view: each patch a quadtree of cells, down to
+  /// 1/256 of the patch, a cell split while it fails the view's tolerance, checked at its
+  /// corners, side midpoints and centre. A cell is fanned from its centre over the corners of
+  /// finer cells along its sides, in its patch or across a patch side. Past \p most_triangles,
+  /// the finest cells are merged into their parents until it fits (or every patch is one
+  /// cell).
   ViewTessellation tessellate_for_view(const ViewTolerance& view, std::size_t most_triangles) const;
 
   ~SubdivisionSurface();
