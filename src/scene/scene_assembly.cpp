@@ -101,9 +101,9 @@ SceneObject tessellated_for_view(const ObjectSource& object,
       surface->tessellate_for_view(view, std::min(kViewTessellationTriangles, budget.left()));
   if (t.coarsened) {
     ctx.warning(where + ": within half a pixel of the view it would make " +
-                std::to_string(t.triangles_asked) + " triangles; coarsened to " +
-                std::to_string(t.soup.face_count()) + " (at most " + std::to_string(t.finest) +
-                " segments a patch)");
+                (t.asked_exactly ? "" : "more than ") + std::to_string(t.triangles_asked) +
+                " triangles; coarsened to " + std::to_string(t.soup.face_count()) + " (at most " +
+                std::to_string(t.finest) + " segments a patch)");
   }
   budget.take(t.soup.face_count(), where);
   const std::string label = object.where + " (" + object.name + ")";

@@ -40,7 +40,8 @@ struct ViewTolerance {
 struct ViewTessellation {
   PolygonSoup soup;
   int finest = 1;                   ///< 1 / the side of the finest cell, in patch sides
-  std::size_t triangles_asked = 0;  ///< what the view's tolerance asked for
+  std::size_t triangles_asked = 0;  ///< what the view's tolerance asked for, or at least
+  bool asked_exactly = true;        ///< false: it asked for more than triangles_asked
   bool coarsened = false;           ///< the bound made it coarser than the view asks
 };
 

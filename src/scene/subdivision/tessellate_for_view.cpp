@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <optional>
 #include <unordered_map>
 
 #include "shadowkit/core/error.h"
@@ -104,32 +106,6 @@ bool fine_enough(PatchSamples& samples, Cell cell, const ViewTolerance& view) {
   return normals.spread <= view.normal_spread && !near_terminator(normals, view);
 }
 
-// The four cells of half \p cell's size.
-std::array<Cell, 4> quarters(Cell cell) {
-  const auto h = std::uint16_t(cell.size / 2);
-  return {{{cell.x, cell.y, h},
-           {std::uint16_t(cell.x + h), cell.y, h},
-           {cell.x, std::uint16_t(cell.y + h), h},
-           {std::uint16_t(cell.x + h), std::uint16_t(cell.y + h), h}}};
-}
-
-// The leaves of \p patch's quadtree for \p view, down to cells of one grid unit.
-std::vector<Cell> patch_cells(const SubdivisionSurface& surface, std::uint32_t patch,
-                              const ViewTolerance& view) {
-  PatchSamples samples(surface, patch);
-  std::vector<Cell> leaves, open{{0, 0, std::uint16_t(kUnits)}};
-  while (!open.empty()) {
-    const Cell cell = open.back();
-    open.pop_back();
-    if (cell.size == 1 || fine_enough(samples, cell, view)) {
-      leaves.push_back(cell);
-      continue;
-    }
-    for (const Cell& quarter : quarters(cell)) open.push_back(quarter);
-  }
-  return leaves;
-}
-
 // \p cells in rows from the patch's (0, 0): the order they are drawn in, whatever the order
 // they were split in.
 std::vector<Cell> in_rows(std::vector<Cell> cells) {
@@ -149,6 +125,40 @@ std::vector<Cell> coarsened(std::vector<Cell> cells, std::uint16_t size) {
                           [](Cell a, Cell b) { return a.x == b.x && a.y == b.y; }),
               cells.end());
   return cells;
+}
+
+// The four cells of half \p cell's size.
+std::array<Cell, 4> quarters(Cell cell) {
+  const auto h = std::uint16_t(cell.size / 2);
+  return {{{cell.x, cell.y, h},
+           {std::uint16_t(cell.x + h), cell.y, h},
+           {cell.x, std::uint16_t(cell.y + h), h},
+           {std::uint16_t(cell.x + h), std::uint16_t(cell.y + h), h}}};
+}
+
+// The most cells the quadtrees may hold while they are built (about 100 MB): past it, they
+// are built again with cells at least twice as large, so a view that asks for too much costs
+// bounded memory before it is coarsened.
+constexpr std::size_t kMostCells = std::size_t(1) << 24;
+
+// The leaves of \p patch's quadtree for \p view, down to cells of \p finest grid units;
+// nullopt once \p built, counting the leaves of every patch, passes kMostCells.
+std::optional<std::vector<Cell>> patch_cells(const SubdivisionSurface& surface, std::uint32_t patch,
+                                             const ViewTolerance& view, std::uint16_t finest,
+                                             std::atomic<std::size_t>& built) {
+  PatchSamples samples(surface, patch);
+  std::vector<Cell> leaves, open{{0, 0, std::uint16_t(kUnits)}};
+  while (!open.empty()) {
+    const Cell cell = open.back();
+    open.pop_back();
+    if (cell.size == finest || fine_enough(samples, cell, view)) {
+      leaves.push_back(cell);
+      if (++built > kMostCells && finest < kUnits) return std::nullopt;
+      continue;
+    }
+    for (const Cell& quarter : quarters(cell)) open.push_back(quarter);
+  }
+  return in_rows(std::move(leaves));
 }
 
 std::uint64_t side_key(std::uint32_t a, std::uint32_t b) {
@@ -352,9 +362,21 @@ PolygonSoup tessellate_cells(const SubdivisionSurface& surface,
 
 ViewTessellation SubdivisionSurface::tessellate_for_view(const ViewTolerance& view,
                                                          std::size_t most_triangles) const {
+  ViewTessellation out;
   std::vector<std::vector<Cell>> cells(patch_count());
-  tbb::parallel_for(std::uint32_t(0), std::uint32_t(patch_count()),
-                    [&](std::uint32_t p) { cells[p] = in_rows(patch_cells(*this, p, view)); });
+  for (std::uint16_t finest = 1;; finest *= 2) {
+    std::atomic<std::size_t> built = 0;
+    std::atomic<bool> over = false;
+    tbb::parallel_for(std::uint32_t(0), std::uint32_t(patch_count()), [&](std::uint32_t p) {
+      if (over) return;
+      std::optional<std::vector<Cell>> leaves = patch_cells(*this, p, view, finest, built);
+      if (leaves) cells[p] = std::move(*leaves);
+      if (!leaves) over = true;
+    });
+    if (!over) break;
+    out.coarsened = true;
+    out.asked_exactly = false;
+  }
   balance(*this, cells);
   const auto smallest = [&] {
     std::uint16_t size = kUnits;
@@ -363,8 +385,8 @@ ViewTessellation SubdivisionSurface::tessellate_for_view(const ViewTolerance& vi
     }
     return size;
   };
-  ViewTessellation out;
-  out.triangles_asked = triangle_count(*this, cells);
+  out.triangles_asked =
+      out.asked_exactly ? triangle_count(*this, cells) : std::max(2 * kMostCells, most_triangles);
   // Over the bound: the finest cells merged into their parents, until it fits or every
   // patch is one cell.
   std::size_t count = out.triangles_asked;
