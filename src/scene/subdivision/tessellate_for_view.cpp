@@ -1,8 +1,7 @@
-// A tessellation of the limit surface fitted to a view: each patch a quadtree of cells, a
-// cell split while the surface strays from it by more than the view's tolerance or a
-// terminator crosses it wider than a pixel. Cells are fanned from their centres over the
-// corners of finer neighbours along their sides, within a patch and across patch sides
-// alike, so that no T-junction is left.
+// A tessellation of the limit surface fitted to a view: the cells the view asks for
+// (view_cells.h), balanced 2:1 and fanned from their centres over the corners of finer
+// neighbours along their sides, within a patch and across patch sides alike, so that no
+// T-junction is left.
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -16,150 +15,13 @@
 #include "shadowkit/scene/limits.h"
 #include "shared_points.h"
 #include "subdivision_impl.h"
+#include "view_cells.h"
 
 namespace shadowkit {
 namespace {
 
-// Grid units a patch side: the finest cell is one unit.
-constexpr auto kUnits = std::uint32_t(limits::kTessellation);
-
-/// \brief A square cell of a patch, (x, y) its lower corner and size its side, in grid units.
-struct Cell {
-  std::uint16_t x, y, size;
-};
-
-/// \brief The limit surface of one patch at grid points, each evaluated once.
-class PatchSamples {
- public:
-  PatchSamples(const SubdivisionSurface& surface, std::uint32_t patch)
-      : surface_(surface), patch_(patch) {}
-  const SurfacePoint& at(std::uint32_t x, std::uint32_t y) {
-    auto [it, inserted] = points_.try_emplace(y * (kUnits + 1) + x);
-    if (inserted) it->second = surface_.evaluate(patch_, double(x) / kUnits, double(y) / kUnits);
-    return it->second;
-  }
-
- private:
-  const SubdivisionSurface& surface_;
-  std::uint32_t patch_;
-  std::unordered_map<std::uint32_t, SurfacePoint> points_;
-};
-
-/// \brief The limit surface at a cell's corners (0-3, counter-clockwise from its lower one)
-/// and centre (4), and how far its normals spread: the most a corner's differs from the
-/// centre's, about the angle, and so about how far a chord's normal may differ from them.
-struct CellNormals {
-  std::array<const SurfacePoint*, 5> points;
-  std::array<Vec3, 5> normals;
-  double spread = 0;
-
-  CellNormals(PatchSamples& samples, Cell cell) {
-    const std::uint32_t x = cell.x, y = cell.y, s = cell.size, h = s / 2;
-    points = {&samples.at(x, y), &samples.at(x + s, y), &samples.at(x + s, y + s),
-              &samples.at(x, y + s), &samples.at(x + h, y + h)};
-    for (std::size_t k = 0; k < 5; ++k) normals[k] = points[k]->normal();
-    for (std::size_t k = 0; k < 4; ++k) spread = std::max(spread, length(normals[k] - normals[4]));
-  }
-};
-
-// Whether a facet of the cell may turn from a light: the limit surface's normal changes
-// sides of the light among the corners and the centre, or comes closer to the light's plane
-// than the normals spread.
-bool near_terminator(const CellNormals& cell, const ViewTolerance& view) {
-  const auto turns = [&](const auto& toward) {
-    bool lit = false, unlit = false;
-    for (std::size_t k = 0; k < 5; ++k) {
-      const double facing = dot(cell.normals[k], normalize(toward(cell.points[k]->position)));
-      if (std::abs(facing) <= cell.spread) return true;
-      (facing > 0 ? lit : unlit) = true;
-    }
-    return lit && unlit;
-  };
-  return std::any_of(view.point_lights.begin(), view.point_lights.end(),
-                     [&](Vec3 light) { return turns([&](Vec3 p) { return light - p; }); }) ||
-         std::any_of(view.toward_lights.begin(), view.toward_lights.end(),
-                     [&](Vec3 toward) { return turns([&](Vec3) { return toward; }); });
-}
-
-// Whether \p cell is fine enough for \p view: the limit surface within its pixels of the
-// cell's chords at the side midpoints and centre; and, where the cell is wider than a pixel,
-// its normals within the view's spread (facets are shaded flat) and no facet of it turning
-// from a light (there the facets decide the contract's condition 1).
-bool fine_enough(PatchSamples& samples, Cell cell, const ViewTolerance& view) {
-  const auto pixel = [&](Vec3 p) { return view.pixel_at_unit_distance * length(p - view.eye); };
-  const std::uint32_t x = cell.x, y = cell.y, s = cell.size, h = s / 2;
-  const Vec3 a = samples.at(x, y).position, b = samples.at(x + s, y).position;
-  const Vec3 c = samples.at(x + s, y + s).position, d = samples.at(x, y + s).position;
-  const std::array<std::pair<Vec3, Vec3>, 5> midpoints{
-      {{samples.at(x + h, y).position, (a + b) * 0.5},
-       {samples.at(x + s, y + h).position, (b + c) * 0.5},
-       {samples.at(x + h, y + s).position, (c + d) * 0.5},
-       {samples.at(x, y + h).position, (d + a) * 0.5},
-       {samples.at(x + h, y + h).position, (a + b + c + d) * 0.25}}};
-  for (const auto& [surface, chord] : midpoints) {
-    if (length(surface - chord) > view.pixels * pixel(surface)) return false;
-  }
-  if (std::max(length(c - a), length(d - b)) <= pixel(samples.at(x + h, y + h).position)) {
-    return true;
-  }
-  const CellNormals normals(samples, cell);
-  return normals.spread <= view.normal_spread && !near_terminator(normals, view);
-}
-
-// \p cells in rows from the patch's (0, 0): the order they are drawn in, whatever the order
-// they were split in.
-std::vector<Cell> in_rows(std::vector<Cell> cells) {
-  std::sort(cells.begin(), cells.end(),
-            [](Cell a, Cell b) { return std::pair(a.y, a.x) < std::pair(b.y, b.x); });
-  return cells;
-}
-
-// \p cells with every cell smaller than \p size replaced by the one of that size holding it.
-std::vector<Cell> coarsened(std::vector<Cell> cells, std::uint16_t size) {
-  for (Cell& cell : cells) {
-    if (cell.size >= size) continue;
-    cell = {std::uint16_t(cell.x / size * size), std::uint16_t(cell.y / size * size), size};
-  }
-  cells = in_rows(std::move(cells));
-  cells.erase(std::unique(cells.begin(), cells.end(),
-                          [](Cell a, Cell b) { return a.x == b.x && a.y == b.y; }),
-              cells.end());
-  return cells;
-}
-
-// The four cells of half \p cell's size.
-std::array<Cell, 4> quarters(Cell cell) {
-  const auto h = std::uint16_t(cell.size / 2);
-  return {{{cell.x, cell.y, h},
-           {std::uint16_t(cell.x + h), cell.y, h},
-           {cell.x, std::uint16_t(cell.y + h), h},
-           {std::uint16_t(cell.x + h), std::uint16_t(cell.y + h), h}}};
-}
-
-// The most cells the quadtrees may hold while they are built (about 100 MB): past it, they
-// are built again with cells at least twice as large, so a view that asks for too much costs
-// bounded memory before it is coarsened.
-constexpr std::size_t kMostCells = std::size_t(1) << 24;
-
-// The leaves of \p patch's quadtree for \p view, down to cells of \p finest grid units;
-// nullopt once \p built, counting the leaves of every patch, passes kMostCells.
-std::optional<std::vector<Cell>> patch_cells(const SubdivisionSurface& surface, std::uint32_t patch,
-                                             const ViewTolerance& view, std::uint16_t finest,
-                                             std::atomic<std::size_t>& built) {
-  PatchSamples samples(surface, patch);
-  std::vector<Cell> leaves, open{{0, 0, std::uint16_t(kUnits)}};
-  while (!open.empty()) {
-    const Cell cell = open.back();
-    open.pop_back();
-    if (cell.size == finest || fine_enough(samples, cell, view)) {
-      leaves.push_back(cell);
-      if (++built > kMostCells && finest < kUnits) return std::nullopt;
-      continue;
-    }
-    for (const Cell& quarter : quarters(cell)) open.push_back(quarter);
-  }
-  return in_rows(std::move(leaves));
-}
+using subdivision::Cell;
+using subdivision::kUnits;
 
 std::uint64_t side_key(std::uint32_t a, std::uint32_t b) {
   return std::uint64_t(std::min(a, b)) << 32 | std::max(a, b);
@@ -305,11 +167,11 @@ void balance(const SubdivisionSurface& surface, std::vector<std::vector<Cell>>& 
           balanced.push_back(cell);
           continue;
         }
-        const std::array<Cell, 4> q = quarters(cell);
+        const std::array<Cell, 4> q = subdivision::quarters(cell);
         balanced.insert(balanced.end(), q.begin(), q.end());
         split = true;
       }
-      cells[patch] = in_rows(std::move(balanced));
+      cells[patch] = subdivision::in_rows(std::move(balanced));
     }
   }
 }
@@ -369,7 +231,8 @@ ViewTessellation SubdivisionSurface::tessellate_for_view(const ViewTolerance& vi
     std::atomic<bool> over = false;
     tbb::parallel_for(std::uint32_t(0), std::uint32_t(patch_count()), [&](std::uint32_t p) {
       if (over) return;
-      std::optional<std::vector<Cell>> leaves = patch_cells(*this, p, view, finest, built);
+      std::optional<std::vector<Cell>> leaves =
+          subdivision::patch_cells(*this, p, view, finest, built);
       if (leaves) cells[p] = std::move(*leaves);
       if (!leaves) over = true;
     });
@@ -385,14 +248,14 @@ ViewTessellation SubdivisionSurface::tessellate_for_view(const ViewTolerance& vi
     }
     return size;
   };
-  out.triangles_asked =
-      out.asked_exactly ? triangle_count(*this, cells) : std::max(2 * kMostCells, most_triangles);
+  out.triangles_asked = out.asked_exactly ? triangle_count(*this, cells)
+                                          : std::max(2 * subdivision::kMostCells, most_triangles);
   // Over the bound: the finest cells merged into their parents, until it fits or every
   // patch is one cell.
   std::size_t count = out.triangles_asked;
   while (count > most_triangles && smallest() < kUnits) {
     const auto size = std::uint16_t(smallest() * 2);
-    for (auto& patch : cells) patch = coarsened(std::move(patch), size);
+    for (auto& patch : cells) patch = subdivision::coarsened(std::move(patch), size);
     count = triangle_count(*this, cells);
     out.coarsened = true;
   }
