@@ -9,6 +9,17 @@ std::size_t VisibleSurfaceBuffer::covered_count() const {
   return std::size_t(std::count_if(face.begin(), face.end(), [](auto f) { return f != kNoFace; }));
 }
 
+void VisibleSurfaceBuffer::summarize_coverage() {
+  block_covered.assign(std::size_t(blocks_per_row()) * height, 0);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      if (covered(index(x, y))) {
+        block_covered[std::size_t(y) * blocks_per_row() + std::size_t(x / kCoverageBlock)] = 1;
+      }
+    }
+  }
+}
+
 std::vector<std::uint32_t> VisibleSurfaceBuffer::object_ids() const {
   std::vector<std::uint32_t> ids(face.size());
   for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = object(i);
@@ -44,6 +55,7 @@ void render_visible_surfaces(const Scene& scene, const Context& ctx, VisibleSurf
   const std::size_t n = std::size_t(cam.width) * cam.height;
   vsb.depth.resize(n);
   vsb.face.resize(n);
+  vsb.block_covered.assign(std::size_t(vsb.blocks_per_row()) * cam.height, 0);
 
   // The scan converter's key is 1 / zv from the face's exact plane; the distance along the
   // unit ray through (x, y) on the view plane at unit depth is zv * sqrt(1 + x^2 + y^2).
@@ -61,8 +73,12 @@ void render_visible_surfaces(const Scene& scene, const Context& ctx, VisibleSurf
           const double* key = tile.depth_key + y * tile.width;
           const float* x2 = column_x2.data() + tile.x0;
           float* depth = vsb.depth.data() + row;
-          std::copy_n(tile.face + y * tile.width, tile.width,
-                      vsb.face.begin() + std::ptrdiff_t(row));
+          const std::uint32_t* face = tile.face + y * tile.width;
+          std::copy_n(face, tile.width, vsb.face.begin() + std::ptrdiff_t(row));
+          // Tiles are coverage blocks, so each tile writes its own flags.
+          vsb.block_covered[std::size_t(tile.y0 + y) * vsb.blocks_per_row() +
+                            std::size_t(tile.x0 / VisibleSurfaceBuffer::kCoverageBlock)] =
+              std::any_of(face, face + tile.width, [](std::uint32_t f) { return f != kNoFace; });
           for (int x = 0; x < tile.width; ++x) {
             // Background keys are -inf and give a depth of +inf.
             depth[x] = std::sqrt(1.0f + x2[x] + y2) / std::max(float(key[x]), 0.0f);

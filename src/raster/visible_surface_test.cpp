@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "testing/test_scenes.h"
 
 namespace shadowkit {
@@ -49,19 +51,39 @@ TEST(VisibleSurface, GroundDepthMatchesTheAnalyticDistance) {
 
 TEST(VisibleSurface, NextCoveredSkipsBackgroundToTheFirstFace) {
   VisibleSurfaceBuffer vsb;
-  vsb.width = 40, vsb.height = 2;
-  vsb.face.assign(80, kNoFace);
-  // Row 1 shows faces at columns 0, 7, 8, 9, 23 and 39; row 0 none.
-  for (const int x : {0, 7, 8, 9, 23, 39}) vsb.face[vsb.index(x, 1)] = 5;
+  vsb.width = 300, vsb.height = 2;
+  vsb.face.assign(600, kNoFace);
+  // Row 1 shows faces at these columns, in blocks 0, 2 and 4 (the last one partial); row 0
+  // none.
+  const std::vector<int> faces{0, 7, 8, 9, 23, 39, 63, 128, 191, 256, 299};
+  for (const int x : faces) vsb.face[vsb.index(x, 1)] = 5;
+  vsb.summarize_coverage();
+  EXPECT_EQ(vsb.block_covered, (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 0, 1, 0, 1}));
   std::vector<int> found;
-  for (int x = vsb.next_covered(0, 40, 1); x < 40; x = vsb.next_covered(x + 1, 40, 1)) {
+  for (int x = vsb.next_covered(0, 300, 1); x < 300; x = vsb.next_covered(x + 1, 300, 1)) {
     found.push_back(x);
   }
-  EXPECT_EQ(found, (std::vector<int>{0, 7, 8, 9, 23, 39}));
-  EXPECT_EQ(vsb.next_covered(0, 40, 0), 40);   // a row of background
-  EXPECT_EQ(vsb.next_covered(10, 23, 1), 23);  // none before the end
+  EXPECT_EQ(found, faces);
+  EXPECT_EQ(vsb.next_covered(0, 300, 0), 300);  // a row of background
+  EXPECT_EQ(vsb.next_covered(10, 23, 1), 23);   // none before the end
   EXPECT_EQ(vsb.next_covered(10, 24, 1), 23);
-  EXPECT_EQ(vsb.next_covered(40, 40, 1), 40);
+  EXPECT_EQ(vsb.next_covered(64, 128, 1), 128);  // a block of background, then the end
+  EXPECT_EQ(vsb.next_covered(64, 129, 1), 128);
+  EXPECT_EQ(vsb.next_covered(192, 250, 1), 250);
+  EXPECT_EQ(vsb.next_covered(300, 300, 1), 300);
+}
+
+// render_visible_surfaces() marks the blocks as it fills the buffer, as summarize_coverage()
+// does from the faces.
+TEST(VisibleSurface, TheScanConverterMarksTheBlocksThatShowAFace) {
+  const Scene scene = testing::make_scene(testing::camera({0.3, 3, 4}, {0, 0, 0}, 300, 200), {},
+                                          {testing::box({-0.5, 0, -0.5}, {0.5, 1, 0.5})});
+  VisibleSurfaceBuffer vsb = render_visible_surfaces(scene, {});
+  const std::vector<std::uint8_t> marked = vsb.block_covered;
+  EXPECT_GT(std::count(marked.begin(), marked.end(), 0), 0);
+  EXPECT_GT(std::count(marked.begin(), marked.end(), 1), 0);
+  vsb.summarize_coverage();
+  EXPECT_EQ(marked, vsb.block_covered);
 }
 
 }  // namespace

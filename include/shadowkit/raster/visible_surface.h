@@ -1,6 +1,7 @@
 #pragma once
 /// \brief The visible-surface buffer: what the camera sees at each pixel. Every method's
 /// camera pass consumes it.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -21,19 +22,37 @@ class VisibleSurfaceBuffer {
   std::vector<float> depth;         ///< distance along the unit pixel ray; +inf: background
   std::vector<std::uint32_t> face;  ///< global face id or kNoFace
 
+  /// Columns a coverage block spans: a scan converter's tile.
+  static constexpr int kCoverageBlock = ScanConverter::kTileSize;
+  /// Per row, per block of kCoverageBlock columns: whether a pixel there shows a face.
+  std::vector<std::uint8_t> block_covered;
+
   std::size_t index(int x, int y) const { return std::size_t(y) * width + x; }
   bool covered(std::size_t i) const { return face[i] != kNoFace; }
+  int blocks_per_row() const { return (width + kCoverageBlock - 1) / kCoverageBlock; }
+  /// Fills block_covered from face, for a buffer filled by other means than
+  /// render_visible_surfaces().
+  void summarize_coverage();
   /// The first column from \p x, before \p end, where row \p y shows a face, or \p end.
-  /// Background goes eight pixels at a time: kNoFace is all ones, and so is their AND.
+  /// Background goes a block at a time where the block shows no face, else eight pixels at a
+  /// time: kNoFace is all ones, and so is their AND.
   int next_covered(int x, int end, int y) const {
     const std::uint32_t* f = face.data() + index(0, y);
     if (x < end && f[x] != kNoFace) return x;  // most often, inside a face's stretch
-    while (x + 8 <= end && (f[x] & f[x + 1] & f[x + 2] & f[x + 3] & f[x + 4] & f[x + 5] & f[x + 6] &
-                            f[x + 7]) == kNoFace) {
-      x += 8;
+    const std::uint8_t* blocks = block_covered.data() + std::size_t(y) * blocks_per_row();
+    while (x < end) {
+      const int block_end = std::min(end, (x / kCoverageBlock + 1) * kCoverageBlock);
+      if (blocks[x / kCoverageBlock]) {
+        while (x + 8 <= block_end && (f[x] & f[x + 1] & f[x + 2] & f[x + 3] & f[x + 4] & f[x + 5] &
+                                      f[x + 6] & f[x + 7]) == kNoFace) {
+          x += 8;
+        }
+        while (x < block_end && f[x] == kNoFace) ++x;
+        if (x < block_end) return x;
+      }
+      x = block_end;
     }
-    while (x < end && f[x] == kNoFace) ++x;
-    return x;
+    return end;
   }
   std::size_t covered_count() const;
 
