@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <type_traits>
 
 #include "shadowkit/core/error.h"
 #include "shadowkit/raster/cluster_view.h"
@@ -19,17 +20,26 @@ namespace {
 
 using raster::ClusterInView;
 using raster::TileBins;
-using raster::TileDepth;
 using TileOutput = ScanConverter::TileOutput;
 constexpr int kTile = ScanConverter::kTileSize;
 constexpr int kTilePixels = kTile * kTile;
 
-// Every tile's keys and faces, kept for the next frame: a fresh 25 MB at 1920x1080 costs its
-// page faults. A pool, not one per thread: a thread that waits in a parallel loop may take
-// up another frame meanwhile.
+// Every tile's keys (double for the camera, float for a depth map) and faces, kept for the
+// next frame: a fresh 25 MB at 1920x1080 costs its page faults. A pool, not one per thread: a
+// thread that waits in a parallel loop may take up another frame meanwhile.
 struct FrameBuffers {
   std::vector<double> keys;
+  std::vector<float> depth_keys;
   std::vector<std::uint32_t> faces;
+
+  template <typename Key>
+  std::vector<Key>& keys_of() {
+    if constexpr (std::is_same_v<Key, double>) {
+      return keys;
+    } else {
+      return depth_keys;
+    }
+  }
 };
 
 class FrameBufferPool {
@@ -67,8 +77,13 @@ bool reaches(const ClusterInView& c, ScanConverter::TileMask wanted, int tiles_x
 }
 
 // Every tile of the raster, drawn into batch after batch: with several batches each in its
-// own kTile x kTile slot of the pool's buffers.
+// own kTile x kTile slot of the pool's buffers. A RasterTile has double keys and faces, a
+// DepthTile float keys alone.
+template <typename Tile>
 class TileFrame {
+  using Key = std::remove_cv_t<std::remove_pointer_t<decltype(Tile::depth_key)>>;
+  static constexpr bool kFaces = std::is_same_v<Tile, RasterTile>;
+
  public:
   // \p batches: how many batches will draw. One needs no tile kept between them: each
   // tile is drawn and handed on in one thread's own buffers, which stay in its cache.
@@ -81,9 +96,10 @@ class TileFrame {
     if (batches < 2) return;
     const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
     buffers_ = pool().take();
-    buffers_->keys.resize(tiles * kTilePixels);
-    if (output.faces) buffers_->faces.resize(tiles * kTilePixels);
-    key_ = buffers_->keys.data(), face_ = output.faces ? buffers_->faces.data() : nullptr;
+    std::vector<Key>& keys = buffers_->keys_of<Key>();
+    keys.resize(tiles * kTilePixels);
+    if (kFaces) buffers_->faces.resize(tiles * kTilePixels);
+    key_ = keys.data(), face_ = kFaces ? buffers_->faces.data() : nullptr;
     depth_.resize(tiles);
     reached_.assign(tiles, 0);
   }
@@ -117,14 +133,14 @@ class TileFrame {
   // Draws \p tris into every tile they reach; the first batch starts every tile, and the
   // last hands every tile (or every tile some batch reached) to \p fn while it is in cache.
   void draw(const raster::ScreenTriangles& tris, bool first, bool last,
-            const std::function<void(const RasterTile&)>& fn) {
+            const std::function<void(const Tile&)>& fn) {
     const TileBins bins(tris, width_, height_);
     tbb::parallel_for(0, tile_count(), [&](int t) {
       if (!wanted(std::size_t(t))) return;
       struct Scratch {
-        double key[kTilePixels];
-        std::uint32_t face[kTilePixels];
-        TileDepth depth;
+        Key key[kTilePixels];
+        std::uint32_t face[kFaces ? kTilePixels : 1];
+        raster::TileDepth<Key> depth;
       };
       thread_local Scratch scratch;
       const bool kept = key_ != nullptr;
@@ -132,11 +148,12 @@ class TileFrame {
       if (!reached && !output_.empty_tiles && (!kept || last)) return;
       const std::size_t slot = std::size_t(t) * kTilePixels;
       const int x0 = (t % tiles_x_) * kTile, y0 = (t / tiles_x_) * kTile;
-      double* key = kept ? key_ + slot : scratch.key;
-      std::uint32_t* face = !output_.faces ? nullptr : kept ? face_ + slot : scratch.face;
-      const RasterTile r{x0,  y0,  std::min(kTile, width_ - x0), std::min(kTile, height_ - y0),
-                         key, face};
-      TileDepth& depth = kept ? depth_[t] : scratch.depth;
+      Key* key = kept ? key_ + slot : scratch.key;
+      std::uint32_t* face = !kFaces ? nullptr : kept ? face_ + slot : scratch.face;
+      const int w = std::min(kTile, width_ - x0), h = std::min(kTile, height_ - y0);
+      Tile r{x0, y0, w, h, key};
+      if constexpr (kFaces) r.face = face;
+      raster::TileDepth<Key>& depth = kept ? depth_[t] : scratch.depth;
       if (first) depth.reset(r.x0, r.y0, r.width, r.height, key, face);
       if (bins.start[t + 1] > bins.start[t]) {
         depth.draw(tris,
@@ -152,9 +169,9 @@ class TileFrame {
  private:
   int width_, height_, tiles_x_, tiles_y_;
   std::unique_ptr<FrameBuffers> buffers_;
-  double* key_ = nullptr;  ///< tile after tile, when kept between batches
+  Key* key_ = nullptr;  ///< tile after tile, when kept between batches
   std::uint32_t* face_ = nullptr;
-  std::vector<TileDepth> depth_;
+  std::vector<raster::TileDepth<Key>> depth_;
   std::vector<char> reached_;  ///< per kept tile, whether a batch drew triangles into it
   TileOutput output_;
   bool started_ = false;  ///< whether the tiles have been reset
@@ -200,8 +217,9 @@ class HiddenSides {
 
 // The triangles of the clusters \p batch that neither what \p frame has drawn nor their own
 // solid hides.
+template <typename Tile>
 std::vector<std::uint32_t> unhidden_triangles(const Scene& scene, const HiddenSides& sides,
-                                              const TileFrame& frame,
+                                              const TileFrame<Tile>& frame,
                                               std::span<const ClusterInView> batch) {
   const TriangleClusters& clusters = scene.triangles().clusters;
   const std::vector<std::uint32_t>& face = scene.triangles().triangle_face;
@@ -233,17 +251,18 @@ std::vector<std::uint32_t> unhidden_triangles(const Scene& scene, const HiddenSi
 // all the triangles, whatever order they are drawn in.
 void ScanConverter::rasterize_tiles(const RasterProjection& view, const Context& /*ctx*/,
                                     const std::function<void(const RasterTile&)>& fn) const {
-  draw_clusters(view, {.faces = true, .empty_tiles = true, .wanted = {}}, fn);
+  draw_clusters<RasterTile>(view, {.empty_tiles = true, .wanted = {}}, fn);
 }
 
 void ScanConverter::rasterize_depth_tiles(const RasterProjection& view, const Context& /*ctx*/,
-                                          const std::function<void(const RasterTile&)>& fn,
+                                          const std::function<void(const DepthTile&)>& fn,
                                           TileMask wanted) const {
-  draw_clusters(view, {.faces = false, .empty_tiles = false, .wanted = wanted}, fn);
+  draw_clusters<DepthTile>(view, {.empty_tiles = false, .wanted = wanted}, fn);
 }
 
+template <typename Tile>
 void ScanConverter::draw_clusters(const RasterProjection& view, TileOutput output,
-                                  const std::function<void(const RasterTile&)>& fn) const {
+                                  const std::function<void(const Tile&)>& fn) const {
   std::vector<ClusterInView> order = raster::clusters_in_view(scene_, view);
   if (!output.wanted.empty()) {
     const int tiles_x = (view.width + kTile - 1) / kTile;
@@ -258,7 +277,7 @@ void ScanConverter::draw_clusters(const RasterProjection& view, TileOutput outpu
   }
   if (batch_start.size() == 1) batch_start.push_back(0);  // nothing in view: one empty batch
 
-  TileFrame frame(view.width, view.height, batch_start.size() - 1, output);
+  TileFrame<Tile> frame(view.width, view.height, batch_start.size() - 1, output);
   const HiddenSides sides(scene_, view);
   for (std::size_t b = 0; b + 1 < batch_start.size(); ++b) {
     const std::span<const ClusterInView> batch(order.data() + batch_start[b],

@@ -9,7 +9,8 @@ namespace shadowkit::raster {
 namespace {
 
 // The largest key of triangle \p t over pixel centres [xa, xb] x [ya, yb], raised past the
-// rounding of the per-pixel sums: a linear function peaks at a corner.
+// rounding of the per-pixel sums: a linear function peaks at a corner. Rounding to float
+// keeps the order, so a triangle hidden in double is hidden in float.
 double nearest_key(const ScreenTriangle& t, int xa, int xb, int ya, int yb) {
   const double x = t.key_a > 0 ? xb : xa, y = t.key_b > 0 ? yb : ya;
   const double a = t.key_a * x, b = t.key_b * y;
@@ -19,13 +20,14 @@ double nearest_key(const ScreenTriangle& t, int xa, int xb, int ya, int yb) {
 // One triangle's span of row py, columns [xa, xb]: depth-tested into \p key and, with faces,
 // \p face. Between equally near triangles the lower face id wins, which is the first in
 // triangle order whatever order they are drawn in.
-template <bool kFaces>
-void draw_span(const ScreenTriangle& t, int py, int xa, int xb, double* key, std::uint32_t* face) {
+template <bool kFaces, typename Key>
+void draw_span(const ScreenTriangle& t, int py, int xa, int xb, Key* key, std::uint32_t* face) {
   // Locals, so the compiler need not reload them after every store to the tile.
   const double row = t.key_b * py + t.key_c, key_a = t.key_a;
   const std::uint32_t id = t.face;
   for (int px = xa; px <= xb; ++px) {
-    const double z = key_a * px + row;
+    // Summed in double: a float key is the double one rounded, as a map stores it.
+    const Key z = Key(key_a * px + row);
     if constexpr (kFaces) {
       if (z > key[px] || (z == key[px] && id < face[px])) {
         key[px] = z;
@@ -39,22 +41,26 @@ void draw_span(const ScreenTriangle& t, int py, int xa, int xb, double* key, std
 
 }  // namespace
 
-void TileDepth::reset(int x0, int y0, int w, int h, double* keys, std::uint32_t* faces) {
+template <typename Key>
+void TileDepth<Key>::reset(int x0, int y0, int w, int h, Key* keys, std::uint32_t* faces) {
   x0_ = x0, y0_ = y0, w_ = w, h_ = h, key_ = keys, face_ = faces, stale_ = 0;
   std::fill_n(keys, w * h, -INFINITY);
   if (faces) std::fill_n(faces, w * h, kNoFace);
   std::fill_n(far_, kBlocks * kBlocks, -INFINITY);
 }
 
-TileDepth::BlockRange TileDepth::blocks(int xa, int xb, int ya, int yb) const {
+template <typename Key>
+typename TileDepth<Key>::BlockRange TileDepth<Key>::blocks(int xa, int xb, int ya, int yb) const {
   return {(xa - x0_) / kBlock, (xb - x0_) / kBlock, (ya - y0_) / kBlock, (yb - y0_) / kBlock};
 }
 
-bool TileDepth::hidden(int xa, int xb, int ya, int yb, double nearest) const {
+template <typename Key>
+bool TileDepth<Key>::hidden(int xa, int xb, int ya, int yb, double nearest) const {
   return hidden(blocks(xa, xb, ya, yb), nearest);
 }
 
-bool TileDepth::hidden(const BlockRange& r, double nearest) const {
+template <typename Key>
+bool TileDepth<Key>::hidden(const BlockRange& r, double nearest) const {
   for (int by = r.by0; by <= r.by1; ++by) {
     for (int bx = r.bx0; bx <= r.bx1; ++bx) {
       if (!(nearest < far_[by * kBlocks + bx])) return false;
@@ -67,7 +73,8 @@ bool TileDepth::hidden(const BlockRange& r, double nearest) const {
 // only lags behind (keys only grow nearer), so a stale block that hides still does, and one
 // that shows is taken again only once every fresh block hides: a large triangle would
 // otherwise scan most of the tile again.
-bool TileDepth::hidden_refreshing(const BlockRange& r, double nearest) {
+template <typename Key>
+bool TileDepth<Key>::hidden_refreshing(const BlockRange& r, double nearest) {
   std::uint64_t lagging = 0;
   for (int by = r.by0; by <= r.by1; ++by) {
     for (int bx = r.bx0; bx <= r.bx1; ++bx) {
@@ -87,14 +94,15 @@ bool TileDepth::hidden_refreshing(const BlockRange& r, double nearest) {
 
 // Takes the farthest key of block \p b; background counts as -inf, farther than anything.
 // Column by column first, in selections the compiler turns into vector minima.
-void TileDepth::refresh(int b) {
+template <typename Key>
+void TileDepth<Key>::refresh(int b) {
   stale_ &= ~(std::uint64_t(1) << b);
   const int xa = b % kBlocks * kBlock, ya = b / kBlocks * kBlock;
   const int columns = std::min(w_ - xa, kBlock), yb = std::min(h_, ya + kBlock);
-  double far[kBlock];
-  std::fill_n(far, kBlock, INFINITY);
+  Key far[kBlock];
+  std::fill_n(far, kBlock, Key(INFINITY));
   for (int y = ya; y < yb; ++y) {
-    const double* row = key_ + y * w_ + xa;
+    const Key* row = key_ + y * w_ + xa;
     if (columns == kBlock) {
       for (int x = 0; x < kBlock; ++x) far[x] = row[x] < far[x] ? row[x] : far[x];
     } else {
@@ -104,8 +112,10 @@ void TileDepth::refresh(int b) {
   far_[b] = *std::min_element(far, far + kBlock);
 }
 
+template <typename Key>
 template <bool kFaces>
-void TileDepth::draw_triangles(const ScreenTriangles& tris, std::span<const std::uint32_t> bin) {
+void TileDepth<Key>::draw_triangles(const ScreenTriangles& tris,
+                                    std::span<const std::uint32_t> bin) {
   thread_local std::vector<std::pair<double, std::uint32_t>> order;  // nearest first
   order.clear();
   const int xe = x0_ + w_ - 1, ye = y0_ + h_ - 1;
@@ -136,18 +146,23 @@ void TileDepth::draw_triangles(const ScreenTriangles& tris, std::span<const std:
   }
 }
 
-void TileDepth::settle() {
+template <typename Key>
+void TileDepth<Key>::settle() {
   for (int b = 0; stale_ != 0; ++b) {
     if (stale_ >> b & 1) refresh(b);
   }
 }
 
-void TileDepth::draw(const ScreenTriangles& tris, std::span<const std::uint32_t> bin) {
+template <typename Key>
+void TileDepth<Key>::draw(const ScreenTriangles& tris, std::span<const std::uint32_t> bin) {
   if (face_) {
     draw_triangles<true>(tris, bin);
   } else {
     draw_triangles<false>(tris, bin);
   }
 }
+
+template class TileDepth<double>;
+template class TileDepth<float>;
 
 }  // namespace shadowkit::raster

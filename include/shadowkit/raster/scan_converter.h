@@ -29,6 +29,12 @@ struct RasterTile {
   const std::uint32_t* face = nullptr;
 };
 
+/// \brief One finished tile of a depth map: keys alone, in float (a map stores float depth).
+struct DepthTile {
+  int x0 = 0, y0 = 0, width = 0, height = 0;
+  const float* depth_key = nullptr;
+};
+
 /// \brief Rasterizes a scene's triangles: near-plane and guard-band clipping, top-left fill
 /// rule on 1/256-pixel fixed point (a pixel centre on an edge shared by two triangles is drawn
 /// exactly once), tiles in parallel with oneTBB. Back faces are culled only where a closed
@@ -57,23 +63,24 @@ class ScanConverter {
   /// Per tile of a raster (row by row, kTileSize pixels a side), whether it is wanted.
   using TileMask = std::span<const std::uint8_t>;
 
-  /// As rasterize_tiles, for a light's depth map: keys only (RasterTile::face is null), and
-  /// only the tiles that some triangle reaches; the others hold nothing. With \p wanted, only
-  /// the tiles it marks: no triangle is set up whose cluster reaches none of them.
+  /// As rasterize_tiles, for a light's depth map: float keys only, and only the tiles that
+  /// some triangle reaches; the others hold nothing. With \p wanted, only the tiles it marks:
+  /// no triangle is set up whose cluster reaches none of them.
   void rasterize_depth_tiles(const RasterProjection& view, const Context& ctx,
-                             const std::function<void(const RasterTile&)>& fn,
+                             const std::function<void(const DepthTile&)>& fn,
                              TileMask wanted = {}) const;
 
-  /// What the drawing of the clusters hands on.
+  /// What the drawing of the clusters hands on, besides its tiles' keys (and faces, for a
+  /// RasterTile).
   struct TileOutput {
-    bool faces;        ///< the nearest face per pixel, beside its key
     bool empty_tiles;  ///< tiles no triangle reaches, too
     TileMask wanted;   ///< the tiles drawn; empty: all
   };
 
  private:
+  template <typename Tile>
   void draw_clusters(const RasterProjection& view, TileOutput output,
-                     const std::function<void(const RasterTile&)>& fn) const;
+                     const std::function<void(const Tile&)>& fn) const;
 
   const Scene& scene_;
 };

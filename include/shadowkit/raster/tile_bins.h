@@ -26,6 +26,11 @@ struct TileBins {
 /// each block's farthest key so far. Triangles go nearest first, so that most of those hidden
 /// behind nearer ones meet full blocks and are dropped whole: a cube field seen at a low angle
 /// stacks dozens of triangles on a pixel.
+///
+/// \p Key: double for the camera's keys, exact to the rounding of each face's plane; float
+/// for a light's depth map, which stores float depth: twice the keys a vector step, and half
+/// the tile's memory.
+template <typename Key>
 class TileDepth {
  public:
   static constexpr int kBlock = 8, kBlocks = TileBins::kTile / kBlock;
@@ -33,7 +38,7 @@ class TileDepth {
 
   /// Starts the tile of pixels [x0, x0 + w) x [y0, y0 + h) with nothing drawn: \p keys (rows of
   /// w) all -inf and, unless \p faces is null, \p faces all kNoFace.
-  void reset(int x0, int y0, int w, int h, double* keys, std::uint32_t* faces);
+  void reset(int x0, int y0, int w, int h, Key* keys, std::uint32_t* faces);
   /// Draws the triangles \p bin (ids into \p tris) over the tile: every key and face is the one
   /// drawing all batches in triangle order gives. Between equally near triangles the lower
   /// face id wins.
@@ -57,10 +62,13 @@ class TileDepth {
   void draw_triangles(const ScreenTriangles& tris, std::span<const std::uint32_t> bin);
 
   int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
-  double* key_ = nullptr;
+  Key* key_ = nullptr;
   std::uint32_t* face_ = nullptr;
-  double far_[kBlocks * kBlocks];
+  Key far_[kBlocks * kBlocks];
   std::uint64_t stale_ = 0;  ///< blocks drawn into since their farthest key was taken
 };
+
+extern template class TileDepth<double>;
+extern template class TileDepth<float>;
 
 }  // namespace shadowkit::raster

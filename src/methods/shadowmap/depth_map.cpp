@@ -29,7 +29,7 @@ void DepthMap::draw(const Scene& scene, const Context& ctx, ScanConverter::TileM
   // depth; the scan converter's own, so that what a nearer surface hides is never drawn.
   ScanConverter(scene).rasterize_depth_tiles(
       view_, ctx,
-      [&](const RasterTile& tile) {
+      [&](const DepthTile& tile) {
         covered.fetch_add(store(tile, slots.fetch_add(1, std::memory_order_relaxed)),
                           std::memory_order_relaxed);
       },
@@ -57,12 +57,12 @@ void DepthMap::start(const RasterProjection& view) {
 }
 
 // Stores a drawn tile's keys as linear depth in \p slot; returns how many texels were drawn.
-std::size_t DepthMap::store(const RasterTile& tile, std::uint32_t slot) {
+std::size_t DepthMap::store(const DepthTile& tile, std::uint32_t slot) {
   slot_[std::size_t(tile.y0 / kTile) * tiles_x_ + tile.x0 / kTile] = slot;
   float* out = texels_.get() + std::size_t(slot) * kTileTexels;
   std::size_t drawn = 0;
   for (int y = 0; y < tile.height; ++y) {
-    const double* key = tile.depth_key + y * tile.width;
+    const float* key = tile.depth_key + y * tile.width;
     drawn += view_.orthographic ? store_row<true>(key, tile.width, out + y * kTile)
                                 : store_row<false>(key, tile.width, out + y * kTile);
   }
@@ -73,9 +73,9 @@ std::size_t DepthMap::store(const RasterTile& tile, std::uint32_t slot) {
 // -inf (nothing drawn) gives +inf either way: -(-inf), and 1 / 0. In float: a division in
 // double would take most of the time of drawing a map that a few large faces fill.
 template <bool kOrthographic>
-int DepthMap::store_row(const double* key, int n, float* depth) {
+int DepthMap::store_row(const float* key, int n, float* depth) {
   for (int x = 0; x < n; ++x) depth[x] = linear_depth<kOrthographic>(key[x]);
-  return int(std::count_if(key, key + n, [](double k) { return k != -INFINITY; }));
+  return int(std::count_if(key, key + n, [](float k) { return k != -INFINITY; }));
 }
 
 std::size_t DepthMap::drawn_tiles() const {

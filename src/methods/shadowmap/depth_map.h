@@ -119,14 +119,14 @@ class DepthMap {
   /// The linear depth a texel stores for the scan converter's depth \p key
   /// (RasterProjection::depth_key), +infinity for -infinity (nothing drawn).
   template <bool kOrthographic>
-  static float linear_depth(double key) {
-    return kOrthographic ? float(-key) : 1.0f / std::max(float(key), 0.0f);
+  static float linear_depth(float key) {
+    return kOrthographic ? -key : 1.0f / std::max(key, 0.0f);
   }
 
  private:
-  std::size_t store(const RasterTile& tile, std::uint32_t slot);
+  std::size_t store(const DepthTile& tile, std::uint32_t slot);
   template <bool kOrthographic>
-  static int store_row(const double* key, int n, float* depth);
+  static int store_row(const float* key, int n, float* depth);
 
   RasterProjection view_;
   double texel_side_ = 0;
