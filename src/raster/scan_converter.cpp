@@ -24,45 +24,38 @@ using TileOutput = ScanConverter::TileOutput;
 constexpr int kTile = ScanConverter::kTileSize;
 constexpr int kTilePixels = kTile * kTile;
 
-// Every tile's keys (double for the camera, float for a depth map) and faces, kept for the
-// next frame: a fresh 25 MB at 1920x1080 costs its page faults. A pool, not one per thread: a
-// thread that waits in a parallel loop may take up another frame meanwhile.
+// Every tile's keys and faces, kept for the next frame: a fresh 25 MB at 1920x1080 costs its
+// page faults. A pool per kind of key (double for the camera, float for a depth map), not one
+// per thread: a thread that waits in a parallel loop may take up another frame meanwhile.
+template <typename Key>
 struct FrameBuffers {
-  std::vector<double> keys;
-  std::vector<float> depth_keys;
+  std::vector<Key> keys;
   std::vector<std::uint32_t> faces;
-
-  template <typename Key>
-  std::vector<Key>& keys_of() {
-    if constexpr (std::is_same_v<Key, double>) {
-      return keys;
-    } else {
-      return depth_keys;
-    }
-  }
 };
 
+template <typename Key>
 class FrameBufferPool {
  public:
-  std::unique_ptr<FrameBuffers> take() {
+  std::unique_ptr<FrameBuffers<Key>> take() {
     std::lock_guard lock(mutex_);
-    if (free_.empty()) return std::make_unique<FrameBuffers>();
-    std::unique_ptr<FrameBuffers> b = std::move(free_.back());
+    if (free_.empty()) return std::make_unique<FrameBuffers<Key>>();
+    std::unique_ptr<FrameBuffers<Key>> b = std::move(free_.back());
     free_.pop_back();
     return b;
   }
-  void give(std::unique_ptr<FrameBuffers> b) {
+  void give(std::unique_ptr<FrameBuffers<Key>> b) {
     std::lock_guard lock(mutex_);
     free_.push_back(std::move(b));
   }
 
  private:
   std::mutex mutex_;
-  std::vector<std::unique_ptr<FrameBuffers>> free_;
+  std::vector<std::unique_ptr<FrameBuffers<Key>>> free_;
 };
 
-FrameBufferPool& pool() {
-  static FrameBufferPool frames;
+template <typename Key>
+FrameBufferPool<Key>& pool() {
+  static FrameBufferPool<Key> frames;
   return frames;
 }
 
@@ -95,16 +88,15 @@ class TileFrame {
         output_(output) {
     if (batches < 2) return;
     const std::size_t tiles = std::size_t(tiles_x_) * tiles_y_;
-    buffers_ = pool().take();
-    std::vector<Key>& keys = buffers_->keys_of<Key>();
-    keys.resize(tiles * kTilePixels);
+    buffers_ = pool<Key>().take();
+    buffers_->keys.resize(tiles * kTilePixels);
     if (kFaces) buffers_->faces.resize(tiles * kTilePixels);
-    key_ = keys.data(), face_ = kFaces ? buffers_->faces.data() : nullptr;
+    key_ = buffers_->keys.data(), face_ = kFaces ? buffers_->faces.data() : nullptr;
     depth_.resize(tiles);
     reached_.assign(tiles, 0);
   }
   ~TileFrame() {
-    if (buffers_) pool().give(std::move(buffers_));
+    if (buffers_) pool<Key>().give(std::move(buffers_));
   }
   TileFrame(const TileFrame&) = delete;
   TileFrame& operator=(const TileFrame&) = delete;
@@ -168,7 +160,7 @@ class TileFrame {
 
  private:
   int width_, height_, tiles_x_, tiles_y_;
-  std::unique_ptr<FrameBuffers> buffers_;
+  std::unique_ptr<FrameBuffers<Key>> buffers_;
   Key* key_ = nullptr;  ///< tile after tile, when kept between batches
   std::uint32_t* face_ = nullptr;
   std::vector<raster::TileDepth<Key>> depth_;

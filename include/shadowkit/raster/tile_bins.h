@@ -28,8 +28,8 @@ struct TileBins {
 /// stacks dozens of triangles on a pixel.
 ///
 /// \p Key: double for the camera's keys, exact to the rounding of each face's plane; float
-/// for a light's depth map, which stores float depth: twice the keys a vector step, and half
-/// the tile's memory.
+/// for a light's depth map, which stores float depth: each key summed in double and rounded,
+/// in half the tile's memory.
 template <typename Key>
 class TileDepth {
  public:

@@ -248,11 +248,11 @@ ViewTessellation SubdivisionSurface::tessellate_for_view(const ViewTolerance& vi
     }
     return size;
   };
-  out.triangles_asked = out.asked_exactly ? triangle_count(*this, cells)
-                                          : std::max(2 * subdivision::kMostCells, most_triangles);
+  // Past kMostCells cells, each of two triangles at least, the view asked for more.
+  std::size_t count = triangle_count(*this, cells);
+  out.triangles_asked = out.asked_exactly ? count : std::max(count, 2 * subdivision::kMostCells);
   // Over the bound: the finest cells merged into their parents, until it fits or every
   // patch is one cell.
-  std::size_t count = out.triangles_asked;
   while (count > most_triangles && smallest() < kUnits) {
     const auto size = std::uint16_t(smallest() * 2);
     for (auto& patch : cells) patch = subdivision::coarsened(std::move(patch), size);
