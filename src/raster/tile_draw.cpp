@@ -112,6 +112,31 @@ void TileDepth<Key>::refresh(int b) {
   far_[b] = *std::min_element(far, far + kBlock);
 }
 
+// The blocks of \p r where triangle \p t may still show: those whose farthest key is not
+// beyond the triangle's nearest key over the block. A stale block that seems to show is taken
+// again first: drawing its pixels costs more than reading them.
+template <typename Key>
+std::uint64_t TileDepth<Key>::showing(const ScreenTriangle& t, const BlockRange& r) {
+  std::uint64_t shows = 0;
+  for (int by = r.by0; by <= r.by1; ++by) {
+    const int ya = std::max(t.min_y, y0_ + by * kBlock);
+    const int yb = std::min({t.max_y, y0_ + by * kBlock + kBlock - 1, y0_ + h_ - 1});
+    for (int bx = r.bx0; bx <= r.bx1; ++bx) {
+      const int xa = std::max(t.min_x, x0_ + bx * kBlock);
+      const int xb = std::min({t.max_x, x0_ + bx * kBlock + kBlock - 1, x0_ + w_ - 1});
+      const double nearest = nearest_key(t, xa, xb, ya, yb);
+      const int b = by * kBlocks + bx;
+      if (nearest < far_[b]) continue;
+      if (stale_ >> b & 1) {
+        refresh(b);
+        if (nearest < far_[b]) continue;
+      }
+      shows |= std::uint64_t(1) << b;
+    }
+  }
+  return shows;
+}
+
 template <typename Key>
 template <bool kFaces>
 void TileDepth<Key>::draw_triangles(const ScreenTriangles& tris,
@@ -133,15 +158,30 @@ void TileDepth<Key>::draw_triangles(const ScreenTriangles& tris,
     const int xa0 = std::max(x0_, t.min_x), xb0 = std::min(xe, t.max_x);
     const BlockRange r = blocks(xa0, xb0, ya, yb);
     if (hidden_refreshing(r, nearest)) continue;
-    for (int by = r.by0; by <= r.by1; ++by) {
-      for (int bx = r.bx0; bx <= r.bx1; ++bx) stale_ |= std::uint64_t(1) << (by * kBlocks + bx);
-    }
+    // Blocks where nearer surfaces hide the triangle are skipped: a large triangle partly
+    // behind others draws only where it may show.
+    const bool one_block = r.bx0 == r.bx1 && r.by0 == r.by1;
+    const std::uint64_t shows =
+        one_block ? std::uint64_t(1) << (r.by0 * kBlocks + r.bx0) : showing(t, r);
+    if (shows == 0) continue;
     SpanWalker walker(t, ya);
     for (int py = ya; py <= yb; ++py, walker.next_row()) {
       int xa = xa0, xb = xb0;
       if (!walker.span(xa, xb)) continue;
+      const int by = (py - y0_) / kBlock;
       const std::ptrdiff_t row = std::ptrdiff_t(py - y0_) * w_ - x0_;
-      draw_span<kFaces>(t, py, xa, xb, key_ + row, kFaces ? face_ + row : nullptr);
+      // The span's blocks that show, as runs of columns.
+      const unsigned in_span = (2u << (xb - x0_) / kBlock) - (1u << (xa - x0_) / kBlock);
+      unsigned runs = unsigned(shows >> (by * kBlocks)) & in_span;
+      stale_ |= std::uint64_t(runs) << (by * kBlocks);
+      while (runs != 0) {
+        const int first = std::countr_zero(runs);
+        const int end = first + std::countr_one(runs >> first);
+        runs &= ~((1u << end) - 1);
+        draw_span<kFaces>(t, py, std::max(xa, x0_ + first * kBlock),
+                          std::min(xb, x0_ + end * kBlock - 1), key_ + row,
+                          kFaces ? face_ + row : nullptr);
+      }
     }
   }
 }

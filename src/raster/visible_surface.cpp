@@ -76,9 +76,14 @@ void render_visible_surfaces(const Scene& scene, const Context& ctx, VisibleSurf
           const std::uint32_t* face = tile.face + y * tile.width;
           std::copy_n(face, tile.width, vsb.face.begin() + std::ptrdiff_t(row));
           // Tiles are coverage blocks, so each tile writes its own flags.
-          vsb.block_covered[std::size_t(tile.y0 + y) * vsb.blocks_per_row() +
-                            std::size_t(tile.x0 / VisibleSurfaceBuffer::kCoverageBlock)] =
+          const bool covered =
               std::any_of(face, face + tile.width, [](std::uint32_t f) { return f != kNoFace; });
+          vsb.block_covered[std::size_t(tile.y0 + y) * vsb.blocks_per_row() +
+                            std::size_t(tile.x0 / VisibleSurfaceBuffer::kCoverageBlock)] = covered;
+          if (!covered) {
+            std::fill_n(depth, tile.width, INFINITY);  // what the keys of -inf give
+            continue;
+          }
           for (int x = 0; x < tile.width; ++x) {
             // Background keys are -inf and give a depth of +inf.
             depth[x] = std::sqrt(1.0f + x2[x] + y2) / std::max(float(key[x]), 0.0f);

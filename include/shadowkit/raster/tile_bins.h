@@ -57,6 +57,7 @@ class TileDepth {
   BlockRange blocks(int xa, int xb, int ya, int yb) const;
   bool hidden(const BlockRange& r, double nearest) const;
   bool hidden_refreshing(const BlockRange& r, double nearest);
+  std::uint64_t showing(const ScreenTriangle& t, const BlockRange& r);
   void refresh(int block);
   template <bool kFaces>
   void draw_triangles(const ScreenTriangles& tris, std::span<const std::uint32_t> bin);

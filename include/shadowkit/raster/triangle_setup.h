@@ -123,9 +123,12 @@ class EdgeWalker {
       c_ += step_c_;
       return;
     }
+    // Without a branch: whether the remainder carries is as good as random from row to row.
     q_ += step_q_;
     r_ += step_r_;
-    if (r_ >= abs_a_) r_ -= abs_a_, q_ += 1;
+    const std::int64_t carry = r_ >= abs_a_;
+    r_ -= abs_a_ & -carry;
+    q_ += carry;
   }
 
  private:
