@@ -128,6 +128,49 @@ TEST(ScanConverter, NearPlaneClippingLeavesNoCracks) {
   EXPECT_EQ(gaps_below_horizon, 0);
 }
 
+// may_own_pixel_in, over every 8 x 8 block of random slivers' bounds: a block it rejects
+// holds no pixel centre the triangle owns, and it rejects most blocks of a long diagonal.
+TEST(ScanConverter, BlocksRejectedByTheEdgeTestHoldNoOwnedPixel) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-0.95, 0.95), thin(0.005, 0.05);
+  PolygonSoup slivers;
+  for (int i = 0; i < 200; ++i) {
+    const Vec3 a{u(rng), u(rng), 0}, b{u(rng), u(rng), 0};
+    const Vec3 off = thin(rng) * normalize(Vec3{a.y - b.y, b.x - a.x, 0});
+    const auto v = std::uint32_t(slivers.positions.size());
+    slivers.positions.insert(slivers.positions.end(), {a, b, b + off});
+    slivers.add_face({v, v + 1, v + 2});
+  }
+  const Scene scene =
+      testing::make_scene(testing::camera({0, 0, 3}, {0, 0, 0}, 256, 256, 40), {}, {slivers});
+  const RasterProjection view = RasterProjection::from_camera(scene.camera, 1e-3);
+  std::size_t blocks = 0, rejected = 0;
+  raster::setup_triangles(scene, view)
+      .for_each([&](std::uint32_t, const raster::ScreenTriangle& t) {
+        Image<int> owned((t.max_x - t.min_x) / 8 + 1, (t.max_y - t.min_y) / 8 + 1, 0);
+        raster::SpanWalker walker(t, t.min_y);
+        for (int y = t.min_y; y <= t.max_y; ++y, walker.next_row()) {
+          int x0 = t.min_x, x1 = t.max_x;
+          if (!walker.span(x0, x1)) continue;
+          for (int x = x0; x <= x1; ++x) ++owned.at((x - t.min_x) / 8, (y - t.min_y) / 8);
+        }
+        for (int by = 0; by < owned.height; ++by) {
+          for (int bx = 0; bx < owned.width; ++bx) {
+            const int xa = t.min_x + 8 * bx, ya = t.min_y + 8 * by;
+            ++blocks;
+            if (raster::may_own_pixel_in(t, xa, std::min(xa + 7, t.max_x), ya,
+                                         std::min(ya + 7, t.max_y))) {
+              continue;
+            }
+            ++rejected;
+            ASSERT_EQ(owned.at(bx, by), 0) << "block " << bx << "," << by << " of " << t.face;
+          }
+        }
+      });
+  EXPECT_GT(blocks, 10000u);
+  EXPECT_GT(rejected, blocks * 3 / 4) << rejected << " of " << blocks;
+}
+
 TEST(ScanConverter, NearestFaceWinsWithoutBackFaceCulling) {
   // Two squares facing away from each other; the nearer one hides the farther one from
   // both sides.

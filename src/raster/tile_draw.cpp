@@ -166,9 +166,11 @@ void TileDepth<Key>::draw_triangles(const ScreenTriangles& tris,
     if (shows == 0) continue;
     SpanWalker walker(t, ya);
     for (int py = ya; py <= yb; ++py, walker.next_row()) {
+      const int by = (py - y0_) / kBlock;
+      constexpr std::uint64_t kRowOfBlocks = (1u << kBlocks) - 1;
+      if ((shows >> (by * kBlocks) & kRowOfBlocks) == 0) continue;  // hidden the whole row
       int xa = xa0, xb = xb0;
       if (!walker.span(xa, xb)) continue;
-      const int by = (py - y0_) / kBlock;
       const std::ptrdiff_t row = std::ptrdiff_t(py - y0_) * w_ - x0_;
       // The span's blocks that show, as runs of columns.
       const unsigned in_span = (2u << (xb - x0_) / kBlock) - (1u << (xa - x0_) / kBlock);

@@ -29,6 +29,11 @@ struct ScreenTriangle {
   std::uint32_t face;
 };
 
+/// Whether triangle \p t may own a pixel centre in columns [xa, xb] and rows [ya, yb]: false
+/// only when one edge has the whole rectangle outside it (its edge function peaks at a
+/// corner). A triangle's bounds hold many tiles that a thin slanted triangle never reaches.
+bool may_own_pixel_in(const ScreenTriangle& t, int xa, int xb, int ya, int yb);
+
 /// \brief Screen triangles in chunks, as they were set up in parallel, never copied into one
 /// array: at 360k triangles that copy and the page faults of its fresh storage cost more
 /// than the set-up. An id holds the chunk and the place in it; ids follow triangle order.
