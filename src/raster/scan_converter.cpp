@@ -208,20 +208,19 @@ class HiddenSides {
 };
 
 // The triangles of the clusters \p batch that neither what \p frame has drawn nor their own
-// solid hides.
+// solid hides, as entries of the scene's TriangleClusters.
 template <typename Tile>
 std::vector<std::uint32_t> unhidden_triangles(const Scene& scene, const HiddenSides& sides,
                                               const TileFrame<Tile>& frame,
                                               std::span<const ClusterInView> batch) {
   const TriangleClusters& clusters = scene.triangles().clusters;
-  const std::vector<std::uint32_t>& face = scene.triangles().triangle_face;
   constexpr std::size_t kSize = TriangleClusters::kSize;
   std::vector<std::uint32_t> kept(batch.size() * kSize);
   std::vector<std::uint8_t> count(batch.size(), 0);
   tbb::parallel_for(std::size_t(0), batch.size(), [&](std::size_t i) {
     if (frame.hides(batch[i])) return;
-    for (const std::uint32_t t : clusters.cluster(batch[i].cluster)) {
-      if (!sides.hidden(face[t])) kept[i * kSize + count[i]++] = t;
+    for (const std::uint32_t e : clusters.entries(batch[i].cluster)) {
+      if (!sides.hidden(clusters.faces[e])) kept[i * kSize + count[i]++] = e;
     }
   });
   std::size_t n = 0;
@@ -274,8 +273,9 @@ void ScanConverter::draw_clusters(const RasterProjection& view, TileOutput outpu
   for (std::size_t b = 0; b + 1 < batch_start.size(); ++b) {
     const std::span<const ClusterInView> batch(order.data() + batch_start[b],
                                                batch_start[b + 1] - batch_start[b]);
-    const std::vector<std::uint32_t> ids = unhidden_triangles(scene_, sides, frame, batch);
-    frame.draw(raster::setup_triangles(scene_, view, ids), b == 0, b + 2 == batch_start.size(), fn);
+    const std::vector<std::uint32_t> entries = unhidden_triangles(scene_, sides, frame, batch);
+    frame.draw(raster::setup_cluster_triangles(scene_, view, entries), b == 0,
+               b + 2 == batch_start.size(), fn);
   }
 }
 

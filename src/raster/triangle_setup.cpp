@@ -279,14 +279,13 @@ Corner corner(const RasterProjection& view, const std::array<ClipPlane, kClipPla
   return c;
 }
 
-// Sets up triangle \p t of \p scene from its corners: dropped outside the clip planes,
-// clipped where it crosses them.
+// Sets up a triangle of \p scene's face \p face from its corners: dropped outside the clip
+// planes, clipped where it crosses them.
 void setup_triangle(const Scene& scene, const RasterProjection& view,
-                    const std::array<ClipPlane, kClipPlanes>& planes, std::uint32_t t,
+                    const std::array<ClipPlane, kClipPlanes>& planes, std::uint32_t face,
                     const Corner& c0, const Corner& c1, const Corner& c2,
                     TriangleBuilder& builder) {
   if (c0.outcode & c1.outcode & c2.outcode) return;
-  const std::uint32_t face = scene.triangles().triangle_face[t];
   const DepthPlane k = depth_plane(scene.face_plane(face), view);
   if (!k.valid) return;
   const unsigned any_out = c0.outcode | c1.outcode | c2.outcode;
@@ -369,29 +368,30 @@ ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view
     for (std::size_t t = c * kChunkTriangles; t < std::min(nt, (c + 1) * kChunkTriangles); ++t) {
       if (keep && !keep(std::uint32_t(t))) continue;
       const auto& tri = list.triangles[t];
-      setup_triangle(scene, view, planes, std::uint32_t(t), corners[tri[0]], corners[tri[1]],
+      setup_triangle(scene, view, planes, list.triangle_face[t], corners[tri[0]], corners[tri[1]],
                      corners[tri[2]], builder);
     }
   });
   return out;
 }
 
-ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view,
-                                std::span<const std::uint32_t> ids) {
-  const TriangleList& list = scene.triangles();
+ScreenTriangles setup_cluster_triangles(const Scene& scene, const RasterProjection& view,
+                                        std::span<const std::uint32_t> entries) {
+  const TriangleClusters& clusters = scene.triangles().clusters;
   const auto planes = clip_planes(view);
   ScreenTriangles out;
   auto& chunks = out.chunks_;
-  chunks.resize((ids.size() + kChunkTriangles - 1) / kChunkTriangles);
+  chunks.resize((entries.size() + kChunkTriangles - 1) / kChunkTriangles);
   SHADOWKIT_CHECK(chunks.size() < (std::size_t(1) << (32 - ScreenTriangles::kPlaceBits)));
   tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
     TriangleBuilder builder(view, chunks[c]);
-    CornerCache corners(view, planes, list.positions);
-    const std::size_t end = std::min(ids.size(), (c + 1) * kChunkTriangles);
+    CornerCache corners(view, planes, scene.triangles().positions);
+    const std::size_t end = std::min(entries.size(), (c + 1) * kChunkTriangles);
+    chunks[c].reserve(end - c * kChunkTriangles);
     for (std::size_t i = c * kChunkTriangles; i < end; ++i) {
-      const auto& tri = list.triangles[ids[i]];
-      setup_triangle(scene, view, planes, ids[i], corners(tri[0]), corners(tri[1]), corners(tri[2]),
-                     builder);
+      const auto& [a, b, d] = clusters.corners[entries[i]];
+      setup_triangle(scene, view, planes, clusters.faces[entries[i]], corners(a), corners(b),
+                     corners(d), builder);
     }
   });
   return out;

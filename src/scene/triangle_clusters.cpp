@@ -46,12 +46,16 @@ TriangleClusters cluster_triangles(const TriangleList& list, const Bounds3& boun
   tbb::parallel_sort(keyed.begin(), keyed.end());
 
   TriangleClusters out;
-  out.triangles.resize(n);
-  for (std::size_t i = 0; i < n; ++i) out.triangles[i] = keyed[i].second;
+  out.corners.resize(n);
+  out.faces.resize(n);
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
+    out.corners[i] = list.triangles[keyed[i].second];
+    out.faces[i] = list.triangle_face[keyed[i].second];
+  });
   out.bounds.resize((n + TriangleClusters::kSize - 1) / TriangleClusters::kSize);
   tbb::parallel_for(std::size_t(0), out.bounds.size(), [&](std::size_t c) {
-    for (const std::uint32_t t : out.cluster(c)) {
-      for (const std::uint32_t v : list.triangles[t]) out.bounds[c].add(list.positions[v]);
+    for (const std::uint32_t e : out.entries(c)) {
+      for (const std::uint32_t v : out.corners[e]) out.bounds[c].add(list.positions[v]);
     }
   });
   return out;

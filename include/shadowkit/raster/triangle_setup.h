@@ -60,8 +60,8 @@ class ScreenTriangles {
  private:
   friend ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view,
                                          const std::function<bool(std::uint32_t)>& keep);
-  friend ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view,
-                                         std::span<const std::uint32_t> ids);
+  friend ScreenTriangles setup_cluster_triangles(const Scene& scene, const RasterProjection& view,
+                                                 std::span<const std::uint32_t> entries);
   std::vector<std::vector<ScreenTriangle>> chunks_;
 };
 
@@ -73,11 +73,11 @@ ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view
 /// scene that can reach it.
 ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view,
                                 const std::function<bool(std::uint32_t)>& keep);
-/// As above, for the triangles \p ids (indices into the scene's TriangleList) in that order:
-/// ids follow \p ids. Each triangle transforms its own corners, which costs less than a pass
-/// over every vertex when the triangles are few of the scene's.
-ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view,
-                                std::span<const std::uint32_t> ids);
+/// As above, for the triangles at \p entries of the scene's TriangleClusters, in that order:
+/// ids follow \p entries. Each triangle transforms its own corners, which costs less than a
+/// pass over every vertex when the triangles are few of the scene's.
+ScreenTriangles setup_cluster_triangles(const Scene& scene, const RasterProjection& view,
+                                        std::span<const std::uint32_t> entries);
 
 /// \brief A point in fixed-point pixel coordinates (1/kSubpixel pixel, y down).
 struct FixedPoint {

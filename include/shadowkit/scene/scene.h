@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <ranges>
 #include <span>
 #include <string>
 #include <vector>
@@ -90,15 +91,20 @@ struct SceneObject {
 /// \brief A scene's triangles in small, spatially compact groups with their bounds: what lets
 /// a pass skip a whole group hidden behind nearer geometry. A group is at most kSize
 /// triangles, consecutive in the Morton order of their centroids.
+/// The clusters keep their own copies of their triangles' corners and faces, cluster after
+/// cluster: a pass over a few clusters then reads them together, where the TriangleList, in
+/// face order, would scatter them (a cache miss a triangle at a million triangles).
 struct TriangleClusters {
   static constexpr std::uint32_t kSize = 16;
-  std::vector<std::uint32_t> triangles;  ///< triangle ids, cluster after cluster
-  std::vector<Bounds3> bounds;           ///< per cluster, of its triangles' corners
+  std::vector<std::array<std::uint32_t, 3>> corners;  ///< per entry: a triangle's vertex ids
+  std::vector<std::uint32_t> faces;                   ///< per entry: its global face id
+  std::vector<Bounds3> bounds;                        ///< per cluster, of its triangles' corners
 
   std::size_t size() const { return bounds.size(); }
-  std::span<const std::uint32_t> cluster(std::size_t c) const {
-    const std::size_t first = c * kSize;
-    return {triangles.data() + first, std::min<std::size_t>(kSize, triangles.size() - first)};
+  /// The entries of cluster \p c in corners and faces.
+  std::ranges::iota_view<std::uint32_t, std::uint32_t> entries(std::size_t c) const {
+    const auto first = std::uint32_t(c * kSize);
+    return {first, std::min(std::uint32_t(faces.size()), first + kSize)};
   }
 };
 
