@@ -107,12 +107,13 @@ class TileFrame {
 
   // Whether what is drawn already hides every pixel \p c can draw in wanted tiles.
   bool hides(const ClusterInView& c) const {
-    if (!started_) return false;
+    if (key_ == nullptr) return false;  // one batch: drawn after every test
     for (int ty = c.y0 / kTile; ty <= c.y1 / kTile; ++ty) {
       for (int tx = c.x0 / kTile; tx <= c.x1 / kTile; ++tx) {
         const int x0 = tx * kTile, y0 = ty * kTile;
         const std::size_t t = std::size_t(ty) * tiles_x_ + tx;
         if (!wanted(t)) continue;
+        if (!reached_[t]) return false;  // nothing drawn there yet
         if (!depth_[t].hidden(std::max(x0, c.x0), std::min(x0 + kTile - 1, c.x1),
                               std::max(y0, c.y0), std::min(y0 + kTile - 1, c.y1), c.nearest)) {
           return false;
@@ -122,9 +123,10 @@ class TileFrame {
     return true;
   }
 
-  // Draws \p tris into every tile they reach; the first batch starts every tile, and the
-  // last hands every tile (or every tile some batch reached) to \p fn while it is in cache.
-  void draw(const raster::ScreenTriangles& tris, bool first, bool last,
+  // Draws \p tris into every tile they reach, starting a tile when a batch first reaches it;
+  // the last batch hands every tile some batch reached (or every tile) to \p fn while it is
+  // in cache. A kept tile no batch reaches is never touched: most of a view of the sky.
+  void draw(const raster::ScreenTriangles& tris, bool last,
             const std::function<void(const Tile&)>& fn) {
     const TileBins bins(tris, width_, height_);
     tbb::parallel_for(0, tile_count(), [&](int t) {
@@ -135,9 +137,11 @@ class TileFrame {
         raster::TileDepth<Key> depth;
       };
       thread_local Scratch scratch;
-      const bool kept = key_ != nullptr;
-      const bool reached = bins.start[t + 1] > bins.start[t] || (kept && reached_[t]);
-      if (!reached && !output_.empty_tiles && (!kept || last)) return;
+      const bool drawing = bins.start[t + 1] > bins.start[t];
+      const bool started = key_ != nullptr && reached_[t];
+      if (!drawing && !started && !(last && output_.empty_tiles)) return;
+      // Kept while a later batch may draw into it; otherwise drawn in the thread's own.
+      const bool kept = key_ != nullptr && (drawing || started);
       const std::size_t slot = std::size_t(t) * kTilePixels;
       const int x0 = (t % tiles_x_) * kTile, y0 = (t / tiles_x_) * kTile;
       Key* key = kept ? key_ + slot : scratch.key;
@@ -146,8 +150,8 @@ class TileFrame {
       Tile r{x0, y0, w, h, key};
       if constexpr (kFaces) r.face = face;
       raster::TileDepth<Key>& depth = kept ? depth_[t] : scratch.depth;
-      if (first) depth.reset(r.x0, r.y0, r.width, r.height, key, face);
-      if (bins.start[t + 1] > bins.start[t]) {
+      if (!started) depth.reset(r.x0, r.y0, r.width, r.height, key, face);
+      if (drawing) {
         depth.draw(tris,
                    {bins.items.data() + bins.start[t], bins.items.data() + bins.start[t + 1]});
         if (kept) reached_[t] = 1;
@@ -155,7 +159,6 @@ class TileFrame {
       }
       if (last) fn(r);
     });
-    started_ = true;
   }
 
  private:
@@ -166,7 +169,6 @@ class TileFrame {
   std::vector<raster::TileDepth<Key>> depth_;
   std::vector<char> reached_;  ///< per kept tile, whether a batch drew triangles into it
   TileOutput output_;
-  bool started_ = false;  ///< whether the tiles have been reset
 };
 
 // Faces of outward solids turned from the eye, which their solid's near side hides: only of
@@ -274,8 +276,8 @@ void ScanConverter::draw_clusters(const RasterProjection& view, TileOutput outpu
     const std::span<const ClusterInView> batch(order.data() + batch_start[b],
                                                batch_start[b + 1] - batch_start[b]);
     const std::vector<std::uint32_t> entries = unhidden_triangles(scene_, sides, frame, batch);
-    frame.draw(raster::setup_cluster_triangles(scene_, view, entries), b == 0,
-               b + 2 == batch_start.size(), fn);
+    frame.draw(raster::setup_cluster_triangles(scene_, view, entries), b + 2 == batch_start.size(),
+               fn);
   }
 }
 

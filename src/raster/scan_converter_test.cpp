@@ -208,8 +208,8 @@ DepthFaceBuffer in_triangle_order(const Scene& scene, const RasterProjection& vi
 }
 
 // \p boxes random boxes seen at a low angle, several deep on most pixels, and two coincident
-// squares.
-Scene random_boxes(int boxes, unsigned seed) {
+// squares; looking at \p target.
+Scene random_boxes(int boxes, unsigned seed, Vec3 target = {0, 2, 0}) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-10, 10), size(0.2, 1.5);
   std::vector<PolygonSoup> objects;
@@ -219,13 +219,20 @@ Scene random_boxes(int boxes, unsigned seed) {
   }
   objects.push_back(testing::horizontal_quad(-30, 30, -30, 30, 0));
   objects.push_back(testing::horizontal_quad(-30, 30, -30, 30, 0));
-  return testing::make_scene(testing::camera({0, 4, 25}, {0, 2, 0}, 200, 150, 50), {}, objects);
+  return testing::make_scene(testing::camera({0, 4, 25}, target, 200, 150, 50), {}, objects);
 }
 
-// random_boxes: the lower face id wins on the coincident squares, as the first in triangle
-// order does.
-void expect_drawn_as_in_triangle_order(int boxes, unsigned seed) {
-  const Scene scene = random_boxes(boxes, seed);
+// What expect_drawn_as_in_triangle_order saw: pixels of the first coincident square, and the
+// scan converter's tiles that show nothing.
+struct Drawn {
+  std::size_t ground = 0;
+  int empty_tiles = 0;
+};
+
+// random_boxes, looking at \p target: the lower face id wins on the coincident squares, as
+// the first in triangle order does.
+void expect_drawn_as_in_triangle_order(int boxes, unsigned seed, Vec3 target, Drawn& drawn) {
+  const Scene scene = random_boxes(boxes, seed, target);
   const RasterProjection view = RasterProjection::from_camera(scene.camera, 1e-3);
   const DepthFaceBuffer tiles = ScanConverter(scene).rasterize(view, {});
   // The far side of each box from the eye is not drawn: its near side hides it. Drawn, it
@@ -236,6 +243,9 @@ void expect_drawn_as_in_triangle_order(int boxes, unsigned seed) {
   };
   const DepthFaceBuffer reference = in_triangle_order(scene, view, far_side);
   const DepthFaceBuffer every_face = in_triangle_order(scene, view);
+  constexpr int kTile = ScanConverter::kTileSize;
+  const int tiles_x = (view.width + kTile - 1) / kTile, tiles_y = (view.height + kTile - 1) / kTile;
+  std::vector<char> shows(std::size_t(tiles_x * tiles_y), 0);
   std::size_t ground = 0, silhouette = 0;
   for (std::size_t i = 0; i < tiles.face.size(); ++i) {
     ASSERT_EQ(tiles.face[i], reference.face[i]) << "pixel " << i;
@@ -245,11 +255,18 @@ void expect_drawn_as_in_triangle_order(int boxes, unsigned seed) {
       ++silhouette;
     }
     if (tiles.face[i] == kNoFace) continue;
+    shows[i / view.width / kTile * tiles_x + i % view.width / kTile] = 1;
     ASSERT_NE(scene.object_of_face(tiles.face[i]), std::uint32_t(boxes + 1)) << "pixel " << i;
     ground += scene.object_of_face(tiles.face[i]) == std::uint32_t(boxes);
   }
-  EXPECT_GT(ground, 500u);  // the first of the coincident squares shows
   EXPECT_LT(silhouette, tiles.face.size() / 200);
+  drawn = {ground, int(std::count(shows.begin(), shows.end(), 0))};
+}
+
+void expect_drawn_as_in_triangle_order(int boxes, unsigned seed) {
+  Drawn drawn;
+  expect_drawn_as_in_triangle_order(boxes, seed, {0, 2, 0}, drawn);
+  EXPECT_GT(drawn.ground, 500u);  // the first of the coincident squares shows
 }
 
 TEST(ScanConverter, HiddenTrianglesDroppedWholeChangeNoPixel) {
@@ -320,6 +337,10 @@ TEST(ScanConverter, HiddenClustersCulledInBatchesChangeNoPixel) {
   const int boxes = 4000;
   ASSERT_GT(boxes * 12 / TriangleClusters::kSize, ScanConverter::kCulledClusters * 5 / 4);
   expect_drawn_as_in_triangle_order(boxes, 11);
+  // Looking up: the top tiles, which no batch reaches, are handed on as background.
+  Drawn drawn;
+  expect_drawn_as_in_triangle_order(boxes, 11, {0, 30, 0}, drawn);
+  EXPECT_GE(drawn.empty_tiles, 2);
 }
 
 // The far side of a closed box is drawn where its near side cannot hide it: from inside the
