@@ -39,6 +39,30 @@ void draw_span(const ScreenTriangle& t, int py, int xa, int xb, Key* key, std::u
   }
 }
 
+// A triangle with few pixels in its rectangle [xa, xb] x [ya, yb]: each pixel centre tested
+// against the three edge functions, stepped by addition. Setting up three EdgeWalkers (two
+// divisions each) costs more when the triangle spans a pixel or two, as most of a million do.
+template <bool kFaces, typename Key>
+void draw_small(const ScreenTriangle& t, int xa, int xb, int ya, int yb, std::ptrdiff_t pitch,
+                Key* key, std::uint32_t* face) {
+  std::int64_t row[3], step_x[3], step_y[3];
+  for (int i = 0; i < 3; ++i) {
+    row[i] = edge_function(t, i, xa, ya);
+    step_x[i] = edge_function(t, i, xa + 1, ya) - row[i];
+    step_y[i] = edge_function(t, i, xa, ya + 1) - row[i];
+  }
+  for (int py = ya; py <= yb; ++py) {
+    const std::ptrdiff_t at = (py - ya) * pitch;
+    std::int64_t e0 = row[0], e1 = row[1], e2 = row[2];
+    for (int px = xa; px <= xb; ++px, e0 += step_x[0], e1 += step_x[1], e2 += step_x[2]) {
+      // All three >= 0: no sign bit in their OR.
+      if ((e0 | e1 | e2) >= 0)
+        draw_span<kFaces>(t, py, px, px, key + at, kFaces ? face + at : face);
+    }
+    for (int i = 0; i < 3; ++i) row[i] += step_y[i];
+  }
+}
+
 }  // namespace
 
 template <typename Key>
@@ -164,6 +188,12 @@ void TileDepth<Key>::draw_triangles(const ScreenTriangles& tris,
     const std::uint64_t shows =
         one_block ? std::uint64_t(1) << (r.by0 * kBlocks + r.bx0) : showing(t, r);
     if (shows == 0) continue;
+    if ((xb0 - xa0 + 1) * (yb - ya + 1) <= kSmallTriangle) {
+      stale_ |= shows;
+      const std::ptrdiff_t row = std::ptrdiff_t(ya - y0_) * w_ - x0_;
+      draw_small<kFaces>(t, xa0, xb0, ya, yb, w_, key_ + row, kFaces ? face_ + row : nullptr);
+      continue;
+    }
     SpanWalker walker(t, ya);
     for (int py = ya; py <= yb; ++py, walker.next_row()) {
       const int by = (py - y0_) / kBlock;

@@ -246,12 +246,9 @@ SpanWalker::SpanWalker(const ScreenTriangle& t, int first_row)
 bool may_own_pixel_in(const ScreenTriangle& t, int xa, int xb, int ya, int yb) {
   for (int i = 0; i < 3; ++i) {
     const int j = i == 2 ? 0 : i + 1;
-    const std::int64_t dx = t.x[j] - t.x[i], dy = t.y[j] - t.y[i];
-    // EdgeWalker's E(px, py), at the corner where it is largest.
-    const std::int64_t px = dy < 0 ? xb : xa, py = dx > 0 ? yb : ya;
-    const std::int64_t e = dx * (py * kSubpixel + kSubpixel / 2 - t.y[i]) -
-                           dy * (px * kSubpixel + kSubpixel / 2 - t.x[i]) - t.bias[i];
-    if (e < 0) return false;
+    // At the corner where the edge function is largest.
+    const int px = t.y[j] < t.y[i] ? xb : xa, py = t.x[j] > t.x[i] ? yb : ya;
+    if (edge_function(t, i, px, py) < 0) return false;
   }
   return true;
 }

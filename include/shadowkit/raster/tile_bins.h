@@ -34,6 +34,8 @@ template <typename Key>
 class TileDepth {
  public:
   static constexpr int kBlock = 8, kBlocks = TileBins::kTile / kBlock;
+  /// Triangles with at most this many pixels in their rectangle are drawn pixel by pixel.
+  static constexpr int kSmallTriangle = 32;
   static_assert(kBlocks * kBlocks <= 64, "a bit per block");
 
   /// Starts the tile of pixels [x0, x0 + w) x [y0, y0 + h) with nothing drawn: \p keys (rows of

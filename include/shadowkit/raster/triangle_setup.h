@@ -29,6 +29,15 @@ struct ScreenTriangle {
   std::uint32_t face;
 };
 
+/// Edge \p i's function at the centre of pixel (\p px, \p py): the triangle owns the pixel
+/// where all three are >= 0 (EdgeWalker follows where they change sign).
+inline std::int64_t edge_function(const ScreenTriangle& t, int i, std::int64_t px,
+                                  std::int64_t py) {
+  const int j = i == 2 ? 0 : i + 1;
+  return (t.x[j] - t.x[i]) * (py * kSubpixel + kSubpixel / 2 - t.y[i]) -
+         (t.y[j] - t.y[i]) * (px * kSubpixel + kSubpixel / 2 - t.x[i]) - t.bias[i];
+}
+
 /// Whether triangle \p t may own a pixel centre in columns [xa, xb] and rows [ya, yb]: false
 /// only when one edge has the whole rectangle outside it (its edge function peaks at a
 /// corner). A triangle's bounds hold many tiles that a thin slanted triangle never reaches.
