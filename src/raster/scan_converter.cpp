@@ -221,7 +221,8 @@ std::vector<std::uint32_t> unhidden_triangles(const Scene& scene, const HiddenSi
   std::vector<std::uint8_t> count(batch.size(), 0);
   tbb::parallel_for(std::size_t(0), batch.size(), [&](std::size_t i) {
     if (frame.hides(batch[i])) return;
-    for (const std::uint32_t e : clusters.entries(batch[i].cluster)) {
+    const auto [first, last] = clusters.entries(batch[i].cluster);
+    for (std::uint32_t e = first; e < last; ++e) {
       if (!sides.hidden(clusters.faces[e])) kept[i * kSize + count[i]++] = e;
     }
   });

@@ -54,7 +54,8 @@ TriangleClusters cluster_triangles(const TriangleList& list, const Bounds3& boun
   });
   out.bounds.resize((n + TriangleClusters::kSize - 1) / TriangleClusters::kSize);
   tbb::parallel_for(std::size_t(0), out.bounds.size(), [&](std::size_t c) {
-    for (const std::uint32_t e : out.entries(c)) {
+    const auto [first, last] = out.entries(c);
+    for (std::uint32_t e = first; e < last; ++e) {
       for (const std::uint32_t v : out.corners[e]) out.bounds[c].add(list.positions[v]);
     }
   });

@@ -6,9 +6,9 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
-#include <ranges>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "shadowkit/core/vec.h"
@@ -101,8 +101,8 @@ struct TriangleClusters {
   std::vector<Bounds3> bounds;                        ///< per cluster, of its triangles' corners
 
   std::size_t size() const { return bounds.size(); }
-  /// The entries of cluster \p c in corners and faces.
-  std::ranges::iota_view<std::uint32_t, std::uint32_t> entries(std::size_t c) const {
+  /// The entries [first, last) of cluster \p c in corners and faces.
+  std::pair<std::uint32_t, std::uint32_t> entries(std::size_t c) const {
     const auto first = std::uint32_t(c * kSize);
     return {first, std::min(std::uint32_t(faces.size()), first + kSize)};
   }
