@@ -93,29 +93,6 @@ bool TileDepth<Key>::hidden(const BlockRange& r, double nearest) const {
   return true;
 }
 
-// As hidden(), taking the farthest key of stale blocks again where it matters. A stale key
-// only lags behind (keys only grow nearer), so a stale block that hides still does, and one
-// that shows is taken again only once every fresh block hides: a large triangle would
-// otherwise scan most of the tile again.
-template <typename Key>
-bool TileDepth<Key>::hidden_refreshing(const BlockRange& r, double nearest) {
-  std::uint64_t lagging = 0;
-  for (int by = r.by0; by <= r.by1; ++by) {
-    for (int bx = r.bx0; bx <= r.bx1; ++bx) {
-      const int b = by * kBlocks + bx;
-      if (nearest < far_[b]) continue;
-      if (!(stale_ >> b & 1)) return false;
-      lagging |= std::uint64_t(1) << b;
-    }
-  }
-  for (; lagging != 0; lagging &= lagging - 1) {
-    const int b = std::countr_zero(lagging);
-    refresh(b);
-    if (!(nearest < far_[b])) return false;
-  }
-  return true;
-}
-
 // Takes the farthest key of block \p b; background counts as -inf, farther than anything.
 // Column by column first, in selections the compiler turns into vector minima.
 template <typename Key>
@@ -176,17 +153,14 @@ void TileDepth<Key>::draw_triangles(const ScreenTriangles& tris,
   }
   std::sort(order.begin(), order.end(),
             [](const auto& a, const auto& b) { return a.first > b.first; });
-  for (const auto& [nearest, id] : order) {
-    const ScreenTriangle& t = tris[id];
+  for (const auto& nearest_first : order) {
+    const ScreenTriangle& t = tris[nearest_first.second];
     const int ya = std::max(y0_, t.min_y), yb = std::min(ye, t.max_y);
     const int xa0 = std::max(x0_, t.min_x), xb0 = std::min(xe, t.max_x);
     const BlockRange r = blocks(xa0, xb0, ya, yb);
-    if (hidden_refreshing(r, nearest)) continue;
     // Blocks where nearer surfaces hide the triangle are skipped: a large triangle partly
-    // behind others draws only where it may show.
-    const bool one_block = r.bx0 == r.bx1 && r.by0 == r.by1;
-    const std::uint64_t shows =
-        one_block ? std::uint64_t(1) << (r.by0 * kBlocks + r.bx0) : showing(t, r);
+    // behind others draws only where it may show, and one hidden everywhere not at all.
+    const std::uint64_t shows = showing(t, r);
     if (shows == 0) continue;
     if ((xb0 - xa0 + 1) * (yb - ya + 1) <= kSmallTriangle) {
       stale_ |= shows;

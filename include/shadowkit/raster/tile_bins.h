@@ -58,7 +58,6 @@ class TileDepth {
   };
   BlockRange blocks(int xa, int xb, int ya, int yb) const;
   bool hidden(const BlockRange& r, double nearest) const;
-  bool hidden_refreshing(const BlockRange& r, double nearest);
   std::uint64_t showing(const ScreenTriangle& t, const BlockRange& r);
   void refresh(int block);
   template <bool kFaces>
