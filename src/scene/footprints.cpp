@@ -90,7 +90,7 @@ class FootprintProjection {
 
 // The columns [left, right] of a convex polygon along the line at height \p y; empty
 // (left > right) where the line misses it.
-std::pair<double, double> columns_at(const std::vector<Point2>& hull, double y) {
+std::pair<double, double> columns_at(std::span<const Point2> hull, double y) {
   double left = INFINITY, right = -INFINITY;
   for (std::size_t i = 0; i < hull.size(); ++i) {
     const Point2 a = hull[i], b = hull[(i + 1) % hull.size()];
@@ -108,6 +108,11 @@ float rounded_up(double x) {
   return double(f) < x ? std::nextafter(f, INFINITY) : f;
 }
 
+// The cells [x0, x1] x [y0, y1] of a face's grid.
+struct CellRect {
+  int x0, x1, y0, y1;
+};
+
 // One face's cells: the nearest far reach of the footprints covering each wholly. The cells
 // span the square around where the footprints fall on the face's plane.
 class FaceGrid {
@@ -123,12 +128,42 @@ class FaceGrid {
     cells_.assign(std::size_t(side_) * side_, INFINITY);
   }
 
-  // Adds the convex footprint \p hull (plane coordinates) reaching as far as \p far to the
-  // cells it covers wholly: a cell's rows y and y + 1 cross it within the cell's columns.
-  void add(std::vector<Point2>& hull, double far) {
-    if (cells_.empty()) return;
-    to_cells(hull);
-    const float reach = rounded_up(far);
+  bool has_cells() const { return !cells_.empty(); }
+  /// \p p (plane coordinates) in cell units.
+  Point2 to_cells(Point2 p) const {
+    return {(p.x - origin_.x) * scale_, (p.y - origin_.y) * scale_};
+  }
+
+  /// The cells that the rectangle [lo, hi] (plane coordinates) touches, or none when it
+  /// reaches off the grid (or there is none).
+  std::optional<CellRect> touched(Point2 lo, Point2 hi) const {
+    if (cells_.empty()) return std::nullopt;
+    const Point2 a = to_cells(lo), b = to_cells(hi);
+    // Compared before conversion: a rectangle far off the grid would overflow an int.
+    if (!(a.x - kSlack >= 0 && a.y - kSlack >= 0 && b.x + kSlack < side_ && b.y + kSlack < side_)) {
+      return std::nullopt;
+    }
+    return CellRect{int(a.x - kSlack), int(b.x + kSlack), int(a.y - kSlack), int(b.y + kSlack)};
+  }
+
+  /// Whether every cell of \p r holds footprints whose far reach is nearer than \p near.
+  bool covers(const CellRect& r, double near) const {
+    // In floats, rounded down: a reach equal to the rounded value keeps the sub-object.
+    float below = float(near);
+    if (double(below) > near) below = std::nextafter(below, -INFINITY);
+    for (int y = r.y0; y <= r.y1; ++y) {
+      // A whole row at a time, without a branch per cell: the compiler vectorizes it.
+      const float* row = cells_.data() + std::size_t(y) * side_;
+      int covered = 0;
+      for (int x = r.x0; x <= r.x1; ++x) covered += row[x] < below;
+      if (covered != r.x1 - r.x0 + 1) return false;
+    }
+    return true;
+  }
+
+  // Adds the convex footprint \p hull (cell units) reaching as far as \p reach to the cells
+  // it covers wholly: a cell's rows y and y + 1 cross it within the cell's columns.
+  void add(std::span<const Point2> hull, float reach) {
     double y_lo = INFINITY, y_hi = -INFINITY;
     for (const Point2& p : hull) y_lo = std::min(y_lo, p.y), y_hi = std::max(y_hi, p.y);
     for (int y = std::max(0, int(std::ceil(y_lo + kSlack)));
@@ -144,48 +179,32 @@ class FaceGrid {
     }
   }
 
-  // Whether every cell that the rectangle [lo, hi] (plane coordinates) touches holds
-  // footprints whose far reach is nearer than \p near.
-  bool covers(Point2 lo, Point2 hi, double near) const {
-    if (cells_.empty()) return false;
-    const double x_lo = (lo.x - origin_.x) * scale_, x_hi = (hi.x - origin_.x) * scale_;
-    const double y_lo = (lo.y - origin_.y) * scale_, y_hi = (hi.y - origin_.y) * scale_;
-    // Compared before conversion: a rectangle far off the grid would overflow an int.
-    if (!(x_lo - kSlack >= 0 && y_lo - kSlack >= 0 && x_hi + kSlack < side_ &&
-          y_hi + kSlack < side_)) {
-      return false;
-    }
-    const int x0 = int(x_lo - kSlack), x1 = int(x_hi + kSlack);
-    const int y0 = int(y_lo - kSlack), y1 = int(y_hi + kSlack);
-    for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) {
-        if (!(cells_[std::size_t(y) * side_ + std::size_t(x)] < near)) return false;
-      }
-    }
-    return true;
-  }
-
  private:
-  void to_cells(std::vector<Point2>& points) const {
-    for (Point2& p : points) p = {(p.x - origin_.x) * scale_, (p.y - origin_.y) * scale_};
-  }
-
   Point2 origin_{};
   double scale_ = 0;
   int side_ = 0;
   std::vector<float> cells_;
 };
-
 // What the footprint test needs of one sub-object as the light sees it, found for all of
 // them at once.
 struct SubObjectView {
-  double near = 0;            ///< how near the light its box reaches
-  int box_face = -1;          ///< the face its box projects onto, -1 if none
-  Point2 box_lo{}, box_hi{};  ///< the rectangle of its box's projection
-  int hull_face = -1;         ///< a convex sub-object's: the face of its footprint
-  std::vector<Point2> hull;   ///< its footprint (plane coordinates)
-  double far = 0;             ///< how far from the light its footprint reaches
+  double near = 0;              ///< how near the light its box reaches
+  int box_face = -1;            ///< the face its box projects onto, -1 if none
+  Point2 box_lo{}, box_hi{};    ///< the rectangle of its box's projection
+  int hull_face = -1;           ///< a convex sub-object's: the face of its footprint
+  std::vector<Point2> hull;     ///< its footprint (plane coordinates)
+  Point2 hull_lo{}, hull_hi{};  ///< the footprint's bounds
+  double far = 0;               ///< how far from the light its footprint reaches
 };
+
+// The bounds [lo, hi] of \p points (at least one).
+void bounds_of(std::span<const Point2> points, Point2& lo, Point2& hi) {
+  lo = hi = points[0];
+  for (const Point2& p : points) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+  }
+}
 
 SubObjectView view_of(const SubObjects& parts, std::uint32_t k, const FootprintProjection& view,
                       std::vector<Point2>& points) {
@@ -195,17 +214,14 @@ SubObjectView view_of(const SubObjects& parts, std::uint32_t k, const FootprintP
   for (int c = 0; c < 8; ++c) corners[std::size_t(c)] = parts.bounds[k].corner(c);
   if (const std::optional<int> face = view.project(corners, points)) {
     out.box_face = *face;
-    out.box_lo = out.box_hi = points[0];
-    for (const Point2& p : points) {
-      out.box_lo = {std::min(out.box_lo.x, p.x), std::min(out.box_lo.y, p.y)};
-      out.box_hi = {std::max(out.box_hi.x, p.x), std::max(out.box_hi.y, p.y)};
-    }
+    bounds_of(points, out.box_lo, out.box_hi);
   }
   if (!parts.convex[k]) return out;  // only a convex hull of its corners is its footprint
   if (const std::optional<int> face = view.project(parts.corners(k), points)) {
     out.hull.resize(convex_hull(std::span(points), out.hull));
     if (out.hull.size() >= 3) {
       out.hull_face = *face;
+      bounds_of(out.hull, out.hull_lo, out.hull_hi);
       out.far = view.far(parts.corners(k));
     }
   }
@@ -222,16 +238,62 @@ std::vector<FaceGrid> footprint_grids(const std::vector<SubObjectView>& views,
     if (v.hull_face < 0) continue;
     const std::size_t f = std::size_t(v.hull_face);
     ++footprints[f];
-    for (const Point2& p : v.hull) {
-      lo[f] = {std::min(lo[f].x, p.x), std::min(lo[f].y, p.y)};
-      hi[f] = {std::max(hi[f].x, p.x), std::max(hi[f].y, p.y)};
-    }
+    lo[f] = {std::min(lo[f].x, v.hull_lo.x), std::min(lo[f].y, v.hull_lo.y)};
+    hi[f] = {std::max(hi[f].x, v.hull_hi.x), std::max(hi[f].y, v.hull_hi.y)};
   }
   std::vector<FaceGrid> grids(faces);
   for (std::size_t f = 0; f < faces; ++f) {
     if (footprints[f] > 0) grids[f] = FaceGrid(lo[f], hi[f], footprints[f]);
   }
   return grids;
+}
+
+// One sub-object as the pass over them meets it, with its box and its footprint already
+// in the cells of their faces' grids.
+struct Placed {
+  std::uint32_t k = 0;
+  int box_face = -1;  ///< the face whose cells its box touches, -1 if none or off its grid
+  CellRect box{};
+  double near = 0;  ///< how near the light its box reaches
+  int hull_face = -1;
+  std::uint32_t hull_first = 0, hull_count = 0;  ///< its footprint, in cell units
+  float reach = 0;                               ///< how far its footprint reaches, rounded up
+};
+
+// \p views in \p order (of their near reach), placed on \p grids: one after another in
+// memory for the pass, which cannot run in parallel; their footprints into \p hull_points.
+std::vector<Placed> place(const std::vector<SubObjectView>& views,
+                          const std::vector<std::pair<double, std::uint32_t>>& order,
+                          const std::vector<FaceGrid>& grids, std::vector<Point2>& hull_points) {
+  std::vector<Placed> placed(order.size());
+  std::uint32_t points = 0;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const SubObjectView& v = views[order[i].second];
+    placed[i].hull_first = points;
+    points += v.hull_face >= 0 ? std::uint32_t(v.hull.size()) : 0;
+  }
+  hull_points.resize(points);
+  tbb::parallel_for(std::size_t(0), order.size(), [&](std::size_t i) {
+    const SubObjectView& v = views[order[i].second];
+    Placed& p = placed[i];
+    p.k = order[i].second;
+    p.near = v.near;
+    if (v.box_face >= 0) {
+      if (const std::optional<CellRect> r =
+              grids[std::size_t(v.box_face)].touched(v.box_lo, v.box_hi)) {
+        p.box_face = v.box_face, p.box = *r;
+      }
+    }
+    if (v.hull_face < 0) return;
+    const FaceGrid& grid = grids[std::size_t(v.hull_face)];
+    if (!grid.has_cells()) return;
+    p.hull_face = v.hull_face;
+    p.hull_count = std::uint32_t(v.hull.size());
+    p.reach = rounded_up(v.far);
+    std::transform(v.hull.begin(), v.hull.end(), hull_points.begin() + p.hull_first,
+                   [&](Point2 q) { return grid.to_cells(q); });
+  });
+  return placed;
 }
 
 }  // namespace
@@ -248,27 +310,23 @@ std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& lig
                       }
                     });
   std::vector<FaceGrid> grids = footprint_grids(views, view);
+  std::vector<std::pair<double, std::uint32_t>> order(parts.size());
+  for (std::uint32_t k = 0; k < parts.size(); ++k) order[k] = {views[k].near, k};
+  tbb::parallel_sort(order.begin(), order.end());
+  std::vector<Point2> hull_points;
+  const std::vector<Placed> placed = place(views, order, grids, hull_points);
   // Hazard: distances carry rounding of about 1e-16 of the scene's size; a sub-object
   // touching a footprint's far side stays.
   const double tolerance = 1e-9 * (scene_bounds.diagonal() + length(scene_bounds.center()) +
                                    (light.type == Light::Type::point ? length(light.position) : 0));
-  std::vector<std::pair<double, std::uint32_t>> order(parts.size());
-  for (std::uint32_t k = 0; k < parts.size(); ++k) order[k] = {views[k].near, k};
-  tbb::parallel_sort(order.begin(), order.end());
-  // In that order in memory: the loop below, which cannot run in parallel, then reads them
-  // one after another.
-  std::vector<SubObjectView> nearest_first(parts.size());
-  tbb::parallel_for(std::size_t(0), order.size(),
-                    [&](std::size_t i) { nearest_first[i] = std::move(views[order[i].second]); });
   // Nearest the light first: a sub-object is tested against the footprints of nearer ones.
   std::vector<char> shadowed(parts.size(), 0);
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    SubObjectView& v = nearest_first[i];
-    if (v.box_face >= 0 &&
-        grids[std::size_t(v.box_face)].covers(v.box_lo, v.box_hi, v.near - tolerance)) {
-      shadowed[order[i].second] = 1;
-    } else if (v.hull_face >= 0) {
-      grids[std::size_t(v.hull_face)].add(v.hull, v.far);
+  for (const Placed& p : placed) {
+    if (p.box_face >= 0 && grids[std::size_t(p.box_face)].covers(p.box, p.near - tolerance)) {
+      shadowed[p.k] = 1;
+    } else if (p.hull_face >= 0) {
+      grids[std::size_t(p.hull_face)].add({hull_points.data() + p.hull_first, p.hull_count},
+                                          p.reach);
     }
   }
   return shadowed;

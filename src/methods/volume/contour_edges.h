@@ -42,6 +42,11 @@ using ContourLoop = EdgeLoop;
 /// The contour edges of \p mesh for \p light, in mesh edge order.
 std::vector<ContourEdge> find_contour_edges(const Mesh& mesh, const Light& light);
 
+/// The contour edges of \p mesh among the edges of its faces \p faces (mesh face ids), in
+/// mesh edge order, into \p out: those of a sub-object, whose edges have no other faces.
+void find_contour_edges(const Mesh& mesh, std::span<const std::uint32_t> faces, const Light& light,
+                        std::vector<ContourEdge>& out);
+
 /// Chains contour edges of one mesh into loops, following each edge to an unused edge that
 /// starts at its end vertex (Crow Fig. 2). On a closed manifold every loop closes.
 std::vector<ContourLoop> chain_contour_loops(std::span<const ContourEdge> edges);

@@ -87,6 +87,26 @@ TEST(ContourEdges, TwoCubesInOneMeshGiveTwoLoops) {
   EXPECT_TRUE(s.all_closed);
 }
 
+TEST(ContourEdges, OfSomeFacesAreTheMeshsContourEdgesAlongThem) {
+  // A sub-object's faces (the second cube's) give the mesh's contour edges that its faces
+  // own, in the same order, and nothing of the other cube.
+  PolygonSoup two = testing::box({-3, 0, 0}, {-1, 2, 2});
+  two.append(testing::box({1, 0, 0}, {3, 2, 2}));
+  const Mesh mesh = mesh_of(two);
+  const Light light = Light::point({-5, 6, 7});
+  const std::vector<std::uint32_t> second{6, 7, 8, 9, 10, 11};
+  std::vector<ContourEdge> of_second;
+  find_contour_edges(mesh, second, light, of_second);
+  std::vector<std::uint32_t> found, expected;
+  for (const ContourEdge& e : of_second) found.push_back(e.edge);
+  for (const ContourEdge& e : find_contour_edges(mesh, light)) {
+    if (mesh.edge_uses[mesh.edges[e.edge].first_use].face >= 6) expected.push_back(e.edge);
+  }
+  EXPECT_EQ(found.size(), 6u);
+  EXPECT_EQ(found, expected);
+  EXPECT_EQ(chain_contour_loops(of_second).size(), 1u);
+}
+
 TEST(ContourEdges, NonManifoldEdgeWeighsTheSumOfItsFaces) {
   // Three half-open pages around the spine x = y = 0: two on the same side of the spine's
   // shadow polygon (light above) add up, the third one cancels one of them.

@@ -32,8 +32,7 @@ bool outline_columns(std::span<const OutlineEdge> outline, int ya, int yb, int& 
   return xa <= xb;
 }
 
-ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons,
-                             const std::vector<ShadowFrustum>& frusta,
+ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons, const ShadowFrusta& frusta,
                              const std::vector<char>& cullable, const RayGrid& rays,
                              std::span<const raster::ScreenPolygon> screen)
     : index_(frusta.size(), -1) {

@@ -62,9 +62,9 @@ bool outline_columns(std::span<const OutlineEdge> outline, int ya, int yb, int& 
 /// eye (\p cullable), so the eye's count holds nothing of it.
 class ConvexVolumes {
  public:
-  ConvexVolumes(const std::vector<ShadowPolygon>& polygons,
-                const std::vector<ShadowFrustum>& frusta, const std::vector<char>& cullable,
-                const RayGrid& rays, std::span<const raster::ScreenPolygon> screen);
+  ConvexVolumes(const std::vector<ShadowPolygon>& polygons, const ShadowFrusta& frusta,
+                const std::vector<char>& cullable, const RayGrid& rays,
+                std::span<const raster::ScreenPolygon> screen);
   /// Sub-object \p k's volume, or null where its polygons are counted one by one.
   const ConvexVolume* of(std::uint32_t k) const {
     return index_[k] < 0 ? nullptr : &volumes_[std::size_t(index_[k])];

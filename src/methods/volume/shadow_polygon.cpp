@@ -36,15 +36,21 @@ bool clip_to_box(PolygonCorners& poly, const Bounds3& box) {
     const int axis = face % 3;
     const double sign = face < 3 ? 1 : -1, bound = face < 3 ? box.lo[axis] : box.hi[axis];
     // Keeps sign (x[axis] - bound w) >= 0.
-    const auto eval = [&](const HomogeneousPoint& p) { return sign * (p.xyz[axis] - bound * p.w); };
+    std::array<double, 10> at;
+    bool inside = true;
+    for (int k = 0; k < poly.count; ++k) {
+      const HomogeneousPoint& p = poly.points[k];
+      at[k] = sign * (p.xyz[axis] - bound * p.w);
+      inside &= at[k] >= 0;
+    }
+    if (inside) continue;  // most faces: only the far end reaches past the box
     std::array<HomogeneousPoint, 10> out;
     int n = 0;
     for (int k = 0; k < poly.count; ++k) {
-      const HomogeneousPoint& p = poly.points[k];
-      const HomogeneousPoint& q = poly.points[(k + 1) % poly.count];
-      const double dp = eval(p), dq = eval(q);
-      if (dp >= 0) out[n++] = p;
-      if ((dp >= 0) != (dq >= 0)) out[n++] = crossing(p, dp, q, dq);
+      const int next = (k + 1) % poly.count;
+      const double dp = at[k], dq = at[next];
+      if (dp >= 0) out[n++] = poly.points[k];
+      if ((dp >= 0) != (dq >= 0)) out[n++] = crossing(poly.points[k], dp, poly.points[next], dq);
     }
     poly.points = out;
     poly.count = n;

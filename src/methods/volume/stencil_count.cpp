@@ -289,7 +289,7 @@ class TileCounter {
 // lie outside its shadow frustum: their crossings there add up to the sub-object's share of
 // the eye's count, taken away again (depth-pass), or to nothing (depth-fail). Depth-pass
 // sub-objects whose frustum may hold the eye are never skipped.
-std::vector<char> receiver_cullable(const std::vector<ShadowFrustum>& frusta,
+std::vector<char> receiver_cullable(const ShadowFrusta& frusta,
                                     const std::vector<ShadowPolygon>& polygons, Vec3 eye) {
   std::vector<char> cullable(frusta.size(), 1);
   const Bounds3 at_eye{eye, eye};
@@ -321,7 +321,7 @@ void order_from_light(std::vector<const ScreenPolygon*>& items,
 // at a time.
 struct TilePass {
   const std::vector<ShadowPolygon>& polygons;
-  const std::vector<ShadowFrustum>& frusta;
+  const ShadowFrusta& frusta;
   const std::vector<char>& cullable;
   const ConvexVolumes& volumes;
   const TileCounter& counter;
@@ -379,9 +379,8 @@ struct TilePass {
 StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons,
                                    std::span<const ScreenPolygon> screen, int eye_count,
                                    const Scene& scene, const Light& light, const SubObjects& parts,
-                                   const std::vector<ShadowFrustum>& frusta,
-                                   const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
-                                   std::vector<const ScreenPolygon*>& items) {
+                                   const ShadowFrusta& frusta, const VisibleSurfaceBuffer& surfaces,
+                                   ShadowMask& mask, std::vector<const ScreenPolygon*>& items) {
   const Camera& cam = scene.camera;
   const VisibleFrame frame(scene, light, parts, surfaces, eye_count);
   const std::vector<KeyPlane> keys = polygon_keys(polygons, frame.rays);

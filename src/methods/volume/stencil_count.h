@@ -31,8 +31,8 @@ struct StencilStats {
 StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons,
                                    std::span<const raster::ScreenPolygon> screen, int eye_count,
                                    const Scene& scene, const Light& light, const SubObjects& parts,
-                                   const std::vector<ShadowFrustum>& frusta,
-                                   const VisibleSurfaceBuffer& surfaces, ShadowMask& mask,
+                                   const ShadowFrusta& frusta, const VisibleSurfaceBuffer& surfaces,
+                                   ShadowMask& mask,
                                    std::vector<const raster::ScreenPolygon*>& items);
 
 }  // namespace shadowkit::volume

@@ -1,7 +1,9 @@
 #pragma once
 // Crow's bounding-box tests (Sec. VI, Fig. 3), applied to whole shadow volumes.
 #include <array>
+#include <cstdint>
 #include <span>
+#include <vector>
 
 #include "shadow_polygon.h"
 #include "shadowkit/raster/view_frustum.h"
@@ -74,6 +76,32 @@ class ShadowFrustum {
     const auto i = std::size_t(k);
     nx_[i] = p.normal.x, ny_[i] = p.normal.y, nz_[i] = p.normal.z, nd_[i] = p.d;
   }
+};
+
+/// \brief The shadow frusta of one light's casting sub-objects, by sub-object id. The others
+/// (in the shadow of nearer ones, most of a dense scene's) have none: 896 bytes each, their
+/// frusta would be most of a light's memory. Asked for one, they give an empty region.
+class ShadowFrusta {
+ public:
+  /// Room for a frustum for each sub-object \p k with \p with[k], the others without.
+  void assign(const std::vector<char>& with) {
+    slot_.assign(with.size(), 0);
+    std::uint32_t next = 1;  // slot 0: the empty region
+    for (std::size_t k = 0; k < with.size(); ++k) slot_[k] = with[k] ? next++ : 0;
+    frusta_.assign(next, ShadowFrustum{});
+  }
+  /// Sub-object \p k's frustum; only one given room may be assigned to.
+  ShadowFrustum& operator[](std::size_t k) { return frusta_[slot_[k]]; }
+  const ShadowFrustum& operator[](std::size_t k) const { return frusta_[slot_[k]]; }
+  /// The sub-objects.
+  std::size_t size() const { return slot_.size(); }
+  std::size_t memory_bytes() const {
+    return slot_.capacity() * sizeof(std::uint32_t) + frusta_.capacity() * sizeof(ShadowFrustum);
+  }
+
+ private:
+  std::vector<std::uint32_t> slot_;
+  std::vector<ShadowFrustum> frusta_;
 };
 
 }  // namespace shadowkit::volume

@@ -22,7 +22,8 @@ struct VolumeChunk {
   std::vector<ShadowPolygon> polygons;
   std::vector<raster::ScreenPolygon> screen;  ///< face: the index into polygons
   int eye_count = 0;
-  std::size_t depth_fail = 0;  ///< sub-objects counted depth-fail
+  std::size_t depth_fail = 0;                                ///< sub-objects counted depth-fail
+  std::size_t contour_edges = 0, loops = 0, open_loops = 0;  ///< Fig. 2, for the counters
   /// The first sub-object whose eye's count a forced depth-pass needs and cannot have.
   std::optional<std::uint32_t> no_eye_count;
 };
@@ -52,67 +53,11 @@ std::pair<std::uint32_t, std::uint32_t> face_triangles(const Scene& scene, std::
   return {std::uint32_t(lo - faces.begin()), std::uint32_t(hi - faces.begin())};
 }
 
-// The sub-object of a mesh edge: that of any face along it.
-std::uint32_t edge_sub_object(const SceneObject& object, const SubObjects& parts,
-                              std::uint32_t edge) {
-  const Mesh& mesh = object.mesh;
-  return parts.of_face[object.first_face + mesh.edge_uses[mesh.edges[edge].first_use].face];
-}
-
-// The contour edges of the casting sub-objects, grouped by sub-object, and their loops
-// (Fig. 2).
-class SubObjectEdges {
- public:
-  SubObjectEdges(const Scene& scene, const SubObjects& parts, const std::vector<char>& casting,
-                 const Light& light) {
-    std::vector<std::vector<ContourEdge>> found(scene.objects.size());
-    std::vector<std::size_t> loops(found.size()), open_loops(found.size());
-    tbb::parallel_for(std::size_t(0), found.size(), [&](std::size_t o) {
-      found[o] = find_contour_edges(scene.objects[o].mesh, light);
-      std::erase_if(found[o], [&](const ContourEdge& e) {
-        return !casting[edge_sub_object(scene.objects[o], parts, e.edge)];
-      });
-      const std::vector<ContourLoop> chained = chain_contour_loops(found[o]);
-      loops[o] = chained.size();
-      open_loops[o] = std::size_t(std::count_if(chained.begin(), chained.end(),
-                                                [](const ContourLoop& l) { return !l.closed; }));
-    });
-    loops_ = std::reduce(loops.begin(), loops.end());
-    open_loops_ = std::reduce(open_loops.begin(), open_loops.end());
-    // A counting sort by sub-object.
-    start_.assign(parts.size() + 1, 0);
-    for (std::size_t o = 0; o < found.size(); ++o) {
-      for (const ContourEdge& e : found[o])
-        ++start_[edge_sub_object(scene.objects[o], parts, e.edge) + 1];
-    }
-    std::partial_sum(start_.begin(), start_.end(), start_.begin());
-    edges_.resize(start_.back());
-    std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
-    for (std::size_t o = 0; o < found.size(); ++o) {
-      for (const ContourEdge& e : found[o]) {
-        edges_[next[edge_sub_object(scene.objects[o], parts, e.edge)]++] = e;
-      }
-    }
-  }
-  std::span<const ContourEdge> of(std::size_t k) const {
-    return {edges_.data() + start_[k], edges_.data() + start_[k + 1]};
-  }
-  std::size_t size() const { return edges_.size(); }
-  std::size_t loops() const { return loops_; }
-  std::size_t open_loops() const { return open_loops_; }
-
- private:
-  std::vector<ContourEdge> edges_;
-  std::size_t loops_ = 0, open_loops_ = 0;
-  std::vector<std::uint32_t> start_;
-};
-
 // Sub-object \p k's volume, into \p v: depth-pass or depth-fail, decided for it alone (its
 // volume is closed on its own, SubObjects), so one caster near the eye leaves the rest of its
 // mesh to depth-pass, without caps. Returns whether every contour edge has its polygon.
 bool add_sub_object_volume(const Scene& scene, const SubObjects& parts, std::uint32_t k,
-                           std::span<const ContourEdge> edges, const Light& light,
-                           const Reach& reach, const ViewFrustum& view,
+                           const Light& light, const Reach& reach, const ViewFrustum& view,
                            const RasterProjection& projection, VolumeMethod::Counting counting,
                            VolumeChunk& v) {
   const SceneObject& object = scene.objects[scene.object_of_face(parts.faces(k)[0])];
@@ -126,6 +71,13 @@ bool add_sub_object_volume(const Scene& scene, const SubObjects& parts, std::uin
   thread_local std::vector<std::uint32_t> faces;  // mesh face ids
   faces.clear();
   for (std::uint32_t f : parts.faces(k)) faces.push_back(f - object.first_face);
+  thread_local std::vector<ContourEdge> edges;
+  find_contour_edges(mesh, faces, light, edges);
+  const std::vector<ContourLoop> loops = chain_contour_loops(edges);
+  v.contour_edges += edges.size();
+  v.loops += loops.size();
+  v.open_loops += std::size_t(
+      std::count_if(loops.begin(), loops.end(), [](const ContourLoop& l) { return !l.closed; }));
   const std::optional<int> eye_count =
       faces_between_eye_and_light(mesh, faces, parts.bounds[k], eye, light);
   const bool depth_fail = counting == VolumeMethod::Counting::depth_fail ||
@@ -218,21 +170,21 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
   const Camera& cam = scene.camera;
   const Reach reach = Reach::of(scene, light_);
   const ViewFrustum view = ViewFrustum::of(cam, near_plane_for(scene.bounds(), cam.position));
-  // Crow's bounding boxes: a sub-object whose volume misses the view shadows nothing visible
-  // (and, missing the eye, adds nothing to the eye's count).
-  frusta_.assign(parts_.size(), ShadowFrustum{});
-  std::vector<char> casting(parts_.size());
+  // Crow's footprints: a sub-object wholly in the shadow of nearer ones adds no shadow.
+  const std::vector<char> shadowed = shadowed_sub_objects(parts_, light_, scene.bounds());
+  shadowed_sub_objects_ = double(std::count(shadowed.begin(), shadowed.end(), 1));
+  // Crow's bounding boxes: of the others, one whose volume misses the view shadows nothing
+  // visible (and, missing the eye, adds nothing to the eye's count).
+  std::vector<char> casting(parts_.size(), 0);
+  for (std::size_t k = 0; k < parts_.size(); ++k) casting[k] = !shadowed[k];
+  frusta_.assign(casting);
   tbb::parallel_for(std::size_t(0), parts_.size(), [&](std::size_t k) {
+    if (!casting[k]) return;
     frusta_[k] = ShadowFrustum(parts_.bounds[k], light_, reach, &view);
     casting[k] = frusta_[k].reaches_view() || !frusta_[k].misses({cam.position, cam.position});
   });
-  // Crow's footprints: a sub-object wholly in the shadow of nearer ones adds no shadow.
-  const std::vector<char> shadowed = shadowed_sub_objects(parts_, light_, scene.bounds());
-  for (std::size_t k = 0; k < parts_.size(); ++k) casting[k] &= !shadowed[k];
-  shadowed_sub_objects_ = double(std::count(shadowed.begin(), shadowed.end(), 1));
   const RasterProjection projection =
       RasterProjection::from_camera(cam, near_plane_for(scene.bounds(), cam.position));
-  const SubObjectEdges edges(scene, parts_, casting, light_);
   std::vector<char> complete(parts_.size(), 1);
   const std::uint32_t parts = std::uint32_t(parts_.size());
   std::vector<VolumeChunk> chunks((parts + VolumeChunk::kSubObjects - 1) /
@@ -241,8 +193,8 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
     const std::uint32_t first = std::uint32_t(c) * VolumeChunk::kSubObjects;
     for (std::uint32_t k = first; k < std::min(parts, first + VolumeChunk::kSubObjects); ++k) {
       if (!casting[k]) continue;
-      complete[k] = add_sub_object_volume(scene, parts_, k, edges.of(k), light_, reach, view,
-                                          projection, counting_, chunks[c]);
+      complete[k] = add_sub_object_volume(scene, parts_, k, light_, reach, view, projection,
+                                          counting_, chunks[c]);
     }
   });
   // Refused by the first such sub-object in order, whichever thread met it first.
@@ -256,15 +208,15 @@ void VolumeMethod::build(const Scene& scene, std::size_t light, const Context& /
                          "ray to the light grazes an edge); use auto or fail");
   }
   eye_count_ = 0;
-  depth_fail_sub_objects_ = 0;
+  depth_fail_sub_objects_ = contour_edges_ = contour_loops_ = open_loops_ = 0;
   for (const VolumeChunk& chunk : chunks) {
     eye_count_ += chunk.eye_count;
     depth_fail_sub_objects_ += double(chunk.depth_fail);
+    contour_edges_ += double(chunk.contour_edges);
+    contour_loops_ += double(chunk.loops);
+    open_loops_ += double(chunk.open_loops);
   }
   gather(chunks, polygons_, screen_);
-  contour_edges_ = double(edges.size());
-  contour_loops_ = double(edges.loops());
-  open_loops_ = double(edges.open_loops());
   culled_sub_objects_ =
       double(std::count(casting.begin(), casting.end(), 0)) - shadowed_sub_objects_;
   cut_frusta(scene, complete);
@@ -304,7 +256,7 @@ void VolumeMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surface
 std::size_t VolumeMethod::memory_bytes() const {
   return items_.capacity() * sizeof(const raster::ScreenPolygon*) +
          screen_.capacity() * sizeof(raster::ScreenPolygon) +
-         polygons_.capacity() * sizeof(ShadowPolygon) + frusta_.capacity() * sizeof(ShadowFrustum) +
+         polygons_.capacity() * sizeof(ShadowPolygon) + frusta_.memory_bytes() +
          parts_.memory_bytes();
 }
 

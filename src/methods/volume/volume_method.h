@@ -34,7 +34,7 @@ class VolumeMethod final : public ShadowMethod {
   Counting counting_ = Counting::automatic;
   SubObjects parts_;
   Light light_;
-  std::vector<ShadowFrustum> frusta_;          ///< per sub-object, for the current light
+  ShadowFrusta frusta_;                        ///< per sub-object, for the current light
   std::vector<ShadowPolygon> polygons_;        ///< grouped by sub-object
   std::vector<raster::ScreenPolygon> screen_;  ///< the polygons on screen, in their order
   int eye_count_ = 0;  ///< per-face volumes holding the eye, over depth-pass sub-objects
