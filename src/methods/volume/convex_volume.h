@@ -28,8 +28,10 @@ struct ConvexVolume {
   /// (CountingTile::settled), whose visible point lies in the volume, and settles it; a cell
   /// left with every pixel settled is shadowed (CountingTile::shadowed). Tests pixels only within
   /// columns [xa, xb] and rows [ya, yb] (where its outline reaches) unless the depth keys settle
-  /// the whole cell. The cell must not show the sub-object's own faces, whose points lie on the
-  /// volume's boundary. Returns the pixels tested one by one.
+  /// the whole cell. The sub-object's own faces need no exception: a point on a face turned
+  /// to the light lies in one of the planes, and beyond_plane puts it outside; one turned away
+  /// is settled in shadow (contract condition 1) before any volume. Returns the pixels tested
+  /// one by one.
   std::size_t count_cell(const VisibleFrame& frame, int band, int c, int xa, int xb, int ya, int yb,
                          CountingTile& t) const;
 

@@ -31,11 +31,8 @@ bool CountingTile::load(const VisibleFrame& frame, int x0_, int y0_, int w_, int
   std::fill_n(&cell_jump[0][0], kCellRows * kCellColumns, 0);
   all_keys = {};
   receivers = {};
-  visible_parts.clear();
   shadowed = occupied = 0;
   for (int band = 0; band * kBand < h; ++band) load_band(frame, band);
-  std::sort(visible_parts.begin(), visible_parts.end());
-  visible_parts.erase(std::unique(visible_parts.begin(), visible_parts.end()), visible_parts.end());
   return !all_keys.empty();
 }
 
@@ -81,7 +78,6 @@ void CountingTile::load_band(const VisibleFrame& frame, int band) {
         run.add(key[r * w + next - 1]);
         keys.add(run);
         const std::uint32_t p = frame.parts.of_face[f];
-        if (visible_parts.empty() || visible_parts.back() != p) visible_parts.push_back(p);
         all_parts[cell].add(frame.parts.bounds[p]);
         const int known = std::min(parts[cell], kCellReceivers);
         const int slot = int(std::find(part[cell], part[cell] + known, p) - part[cell]);

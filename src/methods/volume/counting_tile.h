@@ -105,9 +105,8 @@ struct CountingTile {
   FaceRange run_faces[kTile][kCellColumns], cell_faces[kCellRows][kCellColumns];
   KeyRange cell_keys[kCellRows][kCellColumns], all_keys;
   CellReceivers cell_receivers[kCellRows][kCellColumns];
-  Bounds3 band_receivers[kCellRows];         ///< hold every visible point of a cell row
-  Bounds3 receivers;                         ///< holds every visible point of the tile
-  std::vector<std::uint32_t> visible_parts;  ///< the sub-objects it shows, sorted
+  Bounds3 band_receivers[kCellRows];  ///< hold every visible point of a cell row
+  Bounds3 receivers;                  ///< holds every visible point of the tile
   /// Cells whose every visible point is in shadow, whatever the other volumes add: it lies
   /// in a convex volume (ConvexVolume), or the camera sees only unlit sides (contract
   /// condition 1). Every count being >= 0, no more polygons need to visit them.
@@ -120,9 +119,6 @@ struct CountingTile {
 
   /// Whether every visible point of the tile is settled in shadow: nothing more can change it.
   bool all_shadowed() const { return (shadowed & occupied) == occupied; }
-  bool shows(std::uint32_t sub_object) const {
-    return std::binary_search(visible_parts.begin(), visible_parts.end(), sub_object);
-  }
 
   /// Loads the tile at (x0, y0), w x h pixels; false if it shows only background.
   bool load(const VisibleFrame& frame, int x0, int y0, int w, int h);

@@ -357,12 +357,8 @@ struct TilePass {
   std::size_t count_sub_object(std::uint32_t k, std::vector<const ScreenPolygon*>& group,
                                CountingTile& t) const {
     ReceiverTest receivers(frusta[k], cullable[k], t);
-    // A tile showing the sub-object itself counts its polygons: where the raster gives one
-    // of its faces a pixel just past an edge, the point on the face's plane may lie in its
-    // own volume, which its polygons, with their edge faces, place as the exact test does.
     const ConvexVolume* volume = volumes.of(k);
-    if (volume && !t.shows(k))
-      return counter.count_volume(*volume, volumes.outline(k), group, receivers, t);
+    if (volume) return counter.count_volume(*volume, volumes.outline(k), group, receivers, t);
     if (volumes.binned_by_hull(k)) {  // one item for all its polygons
       group.clear();
       const auto [first, last] = volumes.screen_polygons(k);
