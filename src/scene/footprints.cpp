@@ -128,7 +128,6 @@ class FaceGrid {
     cells_.assign(std::size_t(side_) * side_, INFINITY);
   }
 
-  bool has_cells() const { return !cells_.empty(); }
   /// \p p (plane coordinates) in cell units.
   Point2 to_cells(Point2 p) const {
     return {(p.x - origin_.x) * scale_, (p.y - origin_.y) * scale_};
@@ -161,9 +160,15 @@ class FaceGrid {
     return true;
   }
 
-  // Adds the convex footprint \p hull (cell units) reaching as far as \p reach to the cells
-  // it covers wholly: a cell's rows y and y + 1 cross it within the cell's columns.
-  void add(std::span<const Point2> hull, float reach) {
+  // Adds the convex footprint \p plane_hull (plane coordinates) reaching as far as \p reach
+  // to the cells it covers wholly: a cell's rows y and y + 1 cross it within the cell's
+  // columns.
+  void add(std::span<const Point2> plane_hull, float reach) {
+    if (cells_.empty()) return;
+    thread_local std::vector<Point2> hull;
+    hull.resize(plane_hull.size());
+    std::transform(plane_hull.begin(), plane_hull.end(), hull.begin(),
+                   [&](Point2 p) { return to_cells(p); });
     double y_lo = INFINITY, y_hi = -INFINITY;
     for (const Point2& p : hull) y_lo = std::min(y_lo, p.y), y_hi = std::max(y_hi, p.y);
     for (int y = std::max(0, int(std::ceil(y_lo + kSlack)));
@@ -185,16 +190,16 @@ class FaceGrid {
   int side_ = 0;
   std::vector<float> cells_;
 };
-// What the footprint test needs of one sub-object as the light sees it, found for all of
-// them at once.
+// What the footprint test needs of one sub-object as the light sees it.
 struct SubObjectView {
-  double near = 0;              ///< how near the light its box reaches
-  int box_face = -1;            ///< the face its box projects onto, -1 if none
-  Point2 box_lo{}, box_hi{};    ///< the rectangle of its box's projection
-  int hull_face = -1;           ///< a convex sub-object's: the face of its footprint
-  std::vector<Point2> hull;     ///< its footprint (plane coordinates)
-  Point2 hull_lo{}, hull_hi{};  ///< the footprint's bounds
-  double far = 0;               ///< how far from the light its footprint reaches
+  std::uint32_t k = 0;
+  double near = 0;                               ///< how near the light its box reaches
+  int box_face = -1;                             ///< the face its box projects onto, -1 if none
+  Point2 box_lo{}, box_hi{};                     ///< the rectangle of its box's projection
+  int hull_face = -1;                            ///< a convex sub-object's: its footprint's face
+  std::uint32_t hull_first = 0, hull_count = 0;  ///< its footprint (plane coordinates)
+  Point2 hull_lo{}, hull_hi{};                   ///< the footprint's bounds
+  float reach = 0;  ///< how far from the light its footprint reaches, rounded up
 };
 
 // The bounds [lo, hi] of \p points (at least one).
@@ -206,9 +211,12 @@ void bounds_of(std::span<const Point2> points, Point2& lo, Point2& hi) {
   }
 }
 
+// Sub-object \p k as \p view sees it, its footprint into \p hull (room for its corners).
 SubObjectView view_of(const SubObjects& parts, std::uint32_t k, const FootprintProjection& view,
-                      std::vector<Point2>& points) {
+                      Point2* hull) {
+  thread_local std::vector<Point2> points, convex;
   SubObjectView out;
+  out.k = k;
   out.near = view.near(parts.bounds[k]);
   std::array<Vec3, 8> corners;
   for (int c = 0; c < 8; ++c) corners[std::size_t(c)] = parts.bounds[k].corner(c);
@@ -218,11 +226,13 @@ SubObjectView view_of(const SubObjects& parts, std::uint32_t k, const FootprintP
   }
   if (!parts.convex[k]) return out;  // only a convex hull of its corners is its footprint
   if (const std::optional<int> face = view.project(parts.corners(k), points)) {
-    out.hull.resize(convex_hull(std::span(points), out.hull));
-    if (out.hull.size() >= 3) {
+    const std::size_t n = convex_hull(std::span(points), convex);
+    if (n >= 3) {
       out.hull_face = *face;
-      bounds_of(out.hull, out.hull_lo, out.hull_hi);
-      out.far = view.far(parts.corners(k));
+      out.hull_count = std::uint32_t(n);
+      std::copy_n(convex.begin(), n, hull);
+      bounds_of({hull, n}, out.hull_lo, out.hull_hi);
+      out.reach = rounded_up(view.far(parts.corners(k)));
     }
   }
   return out;
@@ -248,52 +258,29 @@ std::vector<FaceGrid> footprint_grids(const std::vector<SubObjectView>& views,
   return grids;
 }
 
-// One sub-object as the pass over them meets it, with its box and its footprint already
-// in the cells of their faces' grids.
-struct Placed {
-  std::uint32_t k = 0;
-  int box_face = -1;  ///< the face whose cells its box touches, -1 if none or off its grid
-  CellRect box{};
-  double near = 0;  ///< how near the light its box reaches
-  int hull_face = -1;
-  std::uint32_t hull_first = 0, hull_count = 0;  ///< its footprint, in cell units
-  float reach = 0;                               ///< how far its footprint reaches, rounded up
-};
-
-// \p views in \p order (of their near reach), placed on \p grids: one after another in
-// memory for the pass, which cannot run in parallel; their footprints into \p hull_points.
-std::vector<Placed> place(const std::vector<SubObjectView>& views,
-                          const std::vector<std::pair<double, std::uint32_t>>& order,
-                          const std::vector<FaceGrid>& grids, std::vector<Point2>& hull_points) {
-  std::vector<Placed> placed(order.size());
-  std::uint32_t points = 0;
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    const SubObjectView& v = views[order[i].second];
-    placed[i].hull_first = points;
-    points += v.hull_face >= 0 ? std::uint32_t(v.hull.size()) : 0;
+// Every sub-object as \p view sees it, nearest the light first: the order of the pass over
+// them, which cannot run in parallel and then reads them one after another. Their footprints
+// go into \p hulls in sub-object order, as the views are made: made in the pass's order, the
+// reads of the sub-objects would miss the cache one after another.
+std::vector<SubObjectView> nearest_first(const SubObjects& parts, const FootprintProjection& view,
+                                         std::vector<Point2>& hulls) {
+  std::vector<std::uint32_t> room(parts.size() + 1, 0);  // a footprint has at most its corners
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    room[k + 1] = room[k] + std::uint32_t(parts.corners(k).size());
   }
-  hull_points.resize(points);
-  tbb::parallel_for(std::size_t(0), order.size(), [&](std::size_t i) {
-    const SubObjectView& v = views[order[i].second];
-    Placed& p = placed[i];
-    p.k = order[i].second;
-    p.near = v.near;
-    if (v.box_face >= 0) {
-      if (const std::optional<CellRect> r =
-              grids[std::size_t(v.box_face)].touched(v.box_lo, v.box_hi)) {
-        p.box_face = v.box_face, p.box = *r;
-      }
-    }
-    if (v.hull_face < 0) return;
-    const FaceGrid& grid = grids[std::size_t(v.hull_face)];
-    if (!grid.has_cells()) return;
-    p.hull_face = v.hull_face;
-    p.hull_count = std::uint32_t(v.hull.size());
-    p.reach = rounded_up(v.far);
-    std::transform(v.hull.begin(), v.hull.end(), hull_points.begin() + p.hull_first,
-                   [&](Point2 q) { return grid.to_cells(q); });
+  hulls.resize(room.back());
+  std::vector<SubObjectView> by_part(parts.size());
+  tbb::parallel_for(std::uint32_t(0), std::uint32_t(parts.size()), [&](std::uint32_t k) {
+    by_part[k] = view_of(parts, k, view, hulls.data() + room[k]);
+    by_part[k].hull_first = room[k];
   });
-  return placed;
+  std::vector<std::pair<double, std::uint32_t>> order(parts.size());
+  for (std::uint32_t k = 0; k < parts.size(); ++k) order[k] = {by_part[k].near, k};
+  tbb::parallel_sort(order.begin(), order.end());
+  std::vector<SubObjectView> views(parts.size());
+  tbb::parallel_for(std::size_t(0), order.size(),
+                    [&](std::size_t i) { views[i] = by_part[order[i].second]; });
+  return views;
 }
 
 }  // namespace
@@ -301,32 +288,26 @@ std::vector<Placed> place(const std::vector<SubObjectView>& views,
 std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& light,
                                        const Bounds3& scene_bounds) {
   const FootprintProjection view(light);
-  std::vector<SubObjectView> views(parts.size());
-  tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, std::uint32_t(parts.size()), 256),
-                    [&](const auto& r) {
-                      std::vector<Point2> points;
-                      for (std::uint32_t k = r.begin(); k != r.end(); ++k) {
-                        views[k] = view_of(parts, k, view, points);
-                      }
-                    });
+  std::vector<Point2> hulls;
+  const std::vector<SubObjectView> views = nearest_first(parts, view, hulls);
   std::vector<FaceGrid> grids = footprint_grids(views, view);
-  std::vector<std::pair<double, std::uint32_t>> order(parts.size());
-  for (std::uint32_t k = 0; k < parts.size(); ++k) order[k] = {views[k].near, k};
-  tbb::parallel_sort(order.begin(), order.end());
-  std::vector<Point2> hull_points;
-  const std::vector<Placed> placed = place(views, order, grids, hull_points);
   // Hazard: distances carry rounding of about 1e-16 of the scene's size; a sub-object
   // touching a footprint's far side stays.
   const double tolerance = 1e-9 * (scene_bounds.diagonal() + length(scene_bounds.center()) +
                                    (light.type == Light::Type::point ? length(light.position) : 0));
   // Nearest the light first: a sub-object is tested against the footprints of nearer ones.
   std::vector<char> shadowed(parts.size(), 0);
-  for (const Placed& p : placed) {
-    if (p.box_face >= 0 && grids[std::size_t(p.box_face)].covers(p.box, p.near - tolerance)) {
-      shadowed[p.k] = 1;
-    } else if (p.hull_face >= 0) {
-      grids[std::size_t(p.hull_face)].add({hull_points.data() + p.hull_first, p.hull_count},
-                                          p.reach);
+  for (const SubObjectView& v : views) {
+    if (v.box_face >= 0) {
+      const FaceGrid& grid = grids[std::size_t(v.box_face)];
+      const std::optional<CellRect> cells = grid.touched(v.box_lo, v.box_hi);
+      if (cells && grid.covers(*cells, v.near - tolerance)) {
+        shadowed[v.k] = 1;
+        continue;
+      }
+    }
+    if (v.hull_face >= 0) {
+      grids[std::size_t(v.hull_face)].add({hulls.data() + v.hull_first, v.hull_count}, v.reach);
     }
   }
   return shadowed;
