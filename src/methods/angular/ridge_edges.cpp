@@ -89,7 +89,8 @@ std::vector<RidgeEdge> find_ridge_edges(const Mesh& mesh, const FarSheets& sheet
     tbb::parallel_for(std::size_t(0), runs.size(), find_in_run);
   }
   std::vector<RidgeEdge> ridges;
-  for (const std::vector<RidgeEdge>& run : runs) ridges.insert(ridges.end(), run.begin(), run.end());
+  for (const std::vector<RidgeEdge>& run : runs)
+    ridges.insert(ridges.end(), run.begin(), run.end());
   return ridges;
 }
 

@@ -1,5 +1,7 @@
 #include "convex_volume.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -38,13 +40,19 @@ ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons, const S
     : index_(frusta.size(), -1) {
   std::vector<char> depth_pass(frusta.size(), 1);
   for (const ShadowPolygon& p : polygons) depth_pass[p.sub_object] &= !p.depth_fail;
+  std::vector<std::uint32_t> of_volume;  // sub-object per volume
   for (const ShadowPolygon& p : polygons) {
     const std::uint32_t k = p.sub_object;
-    const std::span<const Plane> planes = frusta[k].volume_planes();
-    if (index_[k] >= 0 || !depth_pass[k] || !cullable[k] || planes.empty()) continue;
-    ConvexVolume v;
-    v.sub_object = k;
-    for (const Plane& inward : planes) {
+    if (index_[k] >= 0 || !depth_pass[k] || !cullable[k] || frusta[k].volume_planes().empty())
+      continue;
+    index_[k] = std::int32_t(of_volume.size());
+    of_volume.push_back(k);
+  }
+  volumes_.resize(of_volume.size());
+  tbb::parallel_for(std::size_t(0), volumes_.size(), [&](std::size_t i) {
+    ConvexVolume& v = volumes_[i];
+    v.sub_object = of_volume[i];
+    for (const Plane& inward : frusta[v.sub_object].volume_planes()) {
       // Depth-pass keeps the eye off these planes (needs_depth_fail, the eye's count).
       const bool eye_outside = inward.distance(rays.eye) < 0;
       const Plane plane = eye_outside ? inward : Plane{-inward.normal, -inward.d};
@@ -52,9 +60,7 @@ ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons, const S
       v.keys[v.plane_count] = rays.key_plane(plane.normal, plane.d);
       v.planes[v.plane_count++] = plane;
     }
-    index_[k] = std::int32_t(volumes_.size());
-    volumes_.push_back(v);
-  }
+  });
   // Each volume's outline: the hull of its polygons' corners on screen. Screen polygons
   // follow polygon order, so each volume's lie together.
   polygons_of_.assign(volumes_.size(), {0, 0});
@@ -68,39 +74,58 @@ ConvexVolumes::ConvexVolumes(const std::vector<ShadowPolygon>& polygons, const S
     corner_start[std::size_t(v) + 1] += std::uint32_t(screen[i].count);
   }
   for (std::size_t v = 0; v < volumes_.size(); ++v) corner_start[v + 1] += corner_start[v];
-  std::vector<FixedPoint> corners(corner_start.back()), hull;
-  const auto pixels = [](FixedPoint q) {  // a subpixel point in pixel units
-    constexpr double kSub = double(raster::kSubpixel);
-    return std::pair{(double(q.x) - kSub / 2) / kSub, (double(q.y) - kSub / 2) / kSub};
-  };
-  outline_start_.assign(1, 0);
+  // Per volume, its hull's corners where its polygons' corners were gathered, then its
+  // outline edges: both in parallel, the outlines packed by a count in between.
+  std::vector<FixedPoint> corners(corner_start.back());
+  std::vector<std::uint32_t> outline_count(volumes_.size());
   hulls_.resize(volumes_.size());
+  tbb::parallel_for(std::size_t(0), volumes_.size(), [&](std::size_t v) {
+    thread_local std::vector<FixedPoint> hull;
+    outline_count[v] = std::uint32_t(
+        hull_of(v, screen,
+                {corners.data() + corner_start[v], corner_start[v + 1] - corner_start[v]}, hull));
+  });
+  outline_start_.assign(volumes_.size() + 1, 0);
   for (std::size_t v = 0; v < volumes_.size(); ++v) {
-    const auto [first, last] = polygons_of_[v];
-    raster::ScreenPolygon& out = hulls_[v];
-    out.face = first < last ? screen[first].face : 0;
-    out.min_x = out.min_y = std::numeric_limits<int>::max();
-    out.max_x = out.max_y = std::numeric_limits<int>::min();
-    std::size_t n = corner_start[v];
-    for (std::uint32_t i = first; i < last; ++i) {
-      const raster::ScreenPolygon& s = screen[i];
-      for (int c = 0; c < s.count; ++c) corners[n++] = s.corners[std::size_t(c)];
-      out.min_x = std::min(out.min_x, s.min_x), out.max_x = std::max(out.max_x, s.max_x);
-      out.min_y = std::min(out.min_y, s.min_y), out.max_y = std::max(out.max_y, s.max_y);
-    }
-    const std::size_t count =
-        convex_hull({corners.data() + corner_start[v], n - corner_start[v]}, hull);
-    // Binned whole when its corners fit (the bias does not matter to the bins).
-    out.count = count >= 3 && count <= std::size_t(raster::kMaxPolygonCorners) ? int(count) : 0;
+    outline_start_[v + 1] = outline_start_[v] + outline_count[v];
+  }
+  outline_.resize(outline_start_.back());
+  tbb::parallel_for(std::size_t(0), volumes_.size(), [&](std::size_t v) {
+    const FixedPoint* hull = corners.data() + corner_start[v];
+    const std::size_t count = outline_count[v];
+    const auto pixels = [](FixedPoint q) {  // a subpixel point in pixel units
+      constexpr double kSub = double(raster::kSubpixel);
+      return std::pair{(double(q.x) - kSub / 2) / kSub, (double(q.y) - kSub / 2) / kSub};
+    };
     for (std::size_t i = 0; i < count; ++i) {
-      if (out.count > 0) out.corners[i] = hull[i];
       auto [ax, ay] = pixels(hull[i]);
       auto [bx, by] = pixels(hull[(i + 1) % count]);
       if (ay > by) std::swap(ax, bx), std::swap(ay, by);
-      outline_.push_back({ax, ay, bx, by, by > ay ? (bx - ax) / (by - ay) : 0});
+      outline_[outline_start_[v] + i] = {ax, ay, bx, by, by > ay ? (bx - ax) / (by - ay) : 0};
     }
-    outline_start_.push_back(outline_.size());
+  });
+}
+
+std::size_t ConvexVolumes::hull_of(std::size_t v, std::span<const raster::ScreenPolygon> screen,
+                                   std::span<FixedPoint> corners, std::vector<FixedPoint>& hull) {
+  const auto [first, last] = polygons_of_[v];
+  raster::ScreenPolygon& out = hulls_[v];
+  out.face = first < last ? screen[first].face : 0;
+  out.min_x = out.min_y = std::numeric_limits<int>::max();
+  out.max_x = out.max_y = std::numeric_limits<int>::min();
+  std::size_t n = 0;
+  for (std::uint32_t i = first; i < last; ++i) {
+    const raster::ScreenPolygon& s = screen[i];
+    for (int c = 0; c < s.count; ++c) corners[n++] = s.corners[std::size_t(c)];
+    out.min_x = std::min(out.min_x, s.min_x), out.max_x = std::max(out.max_x, s.max_x);
+    out.min_y = std::min(out.min_y, s.min_y), out.max_y = std::max(out.max_y, s.max_y);
   }
+  const std::size_t count = convex_hull(corners.first(n), hull);
+  // Binned whole when its corners fit (the bias does not matter to the bins).
+  out.count = count >= 3 && count <= std::size_t(raster::kMaxPolygonCorners) ? int(count) : 0;
+  std::copy_n(hull.begin(), count, corners.begin());
+  if (out.count > 0) std::copy_n(hull.begin(), count, out.corners.begin());
+  return count;
 }
 
 unsigned ConvexVolume::lane_bits(const LaneMask* m) {

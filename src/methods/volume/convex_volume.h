@@ -94,6 +94,11 @@ class ConvexVolumes {
   }
 
  private:
+  /// Volume \p v's hull on screen (hulls_[v]) from its polygons' corners, gathered in
+  /// \p corners, where its hull's corners are left; returns their count.
+  std::size_t hull_of(std::size_t v, std::span<const raster::ScreenPolygon> screen,
+                      std::span<raster::FixedPoint> corners, std::vector<raster::FixedPoint>& hull);
+
   std::vector<std::int32_t> index_;
   std::vector<ConvexVolume> volumes_;
   std::vector<std::size_t> outline_start_;

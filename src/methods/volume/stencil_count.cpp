@@ -1,6 +1,7 @@
 #include "stencil_count.h"
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <atomic>
@@ -312,9 +313,17 @@ void order_from_light(std::vector<const ScreenPolygon*>& items,
     near[k] =
         light.type == Light::Type::point ? length(c - light.position) : dot(c, light.direction);
   }
-  std::stable_sort(items.begin(), items.end(), [&](const ScreenPolygon* a, const ScreenPolygon* b) {
-    return near[polygons[a->face].sub_object] < near[polygons[b->face].sub_object];
+  // Sorted with their keys beside them (a key looked up per comparison misses the cache),
+  // ties in their order.
+  std::vector<std::pair<double, std::uint32_t>> order(items.size());
+  tbb::parallel_for(std::size_t(0), items.size(), [&](std::size_t i) {
+    order[i] = {near[polygons[items[i]->face].sub_object], std::uint32_t(i)};
   });
+  tbb::parallel_sort(order.begin(), order.end());
+  std::vector<const ScreenPolygon*> sorted(items.size());
+  tbb::parallel_for(std::size_t(0), items.size(),
+                    [&](std::size_t i) { sorted[i] = items[order[i].second]; });
+  items.swap(sorted);
 }
 
 // One tile's counting: its binned items, which come grouped by sub-object, one sub-object
