@@ -117,6 +117,23 @@ TEST(ShadowFrustum, DegenerateLightsAndScales) {
   }
 }
 
+TEST(ShadowFrusta, OnlySubObjectsGivenRoomHoldAFrustum) {
+  const Bounds3 cube{{-0.5, 1.5, -0.5}, {0.5, 2.5, 0.5}};
+  ShadowFrusta frusta;
+  frusta.assign({0, 1, 0, 1});
+  EXPECT_EQ(frusta.size(), 4u);
+  frusta[1] = ShadowFrustum(cube, Light::point({0, 6, 0}), kReach);
+  frusta[3] = ShadowFrustum(cube, Light::directional({1, -1, 0}), kReach);
+  EXPECT_FALSE(frusta[1].misses(point_box({0.8, 0, 0.8})));
+  EXPECT_FALSE(frusta[3].misses(point_box({2, 0, 0})));
+  EXPECT_TRUE(frusta[1].misses(point_box({2, 0, 2})));
+  // The others give the empty region, which shadows nothing.
+  for (std::size_t k : {0u, 2u}) {
+    EXPECT_TRUE(frusta[k].misses(point_box({0.8, 0, 0.8}, 100))) << k;
+    EXPECT_TRUE(frusta[k].volume_planes().empty()) << k;
+  }
+}
+
 // Crow's footprints (shadowed_sub_objects) drop casters without changing the picture.
 TEST(Culling, FootprintsDropCastersWithoutChangingThePicture) {
   for (const Light& light :
