@@ -336,6 +336,7 @@ struct TilePass {
   const TileCounter& counter;
   std::span<const ScreenPolygon> screen;        ///< per shadow polygon
   std::span<const ScreenPolygon* const> items;  ///< what was binned
+  std::span<const std::uint32_t> item_parts;    ///< the sub-object of each item
 
   // Counts the items \p binned (indices into items) over tile t; adds the pixels tested one
   // by one to \p fill and the sub-objects Crow's receiver test culls to \p culled.
@@ -345,12 +346,16 @@ struct TilePass {
     // Nearest the light first: the volumes that settle cells come early, and once every
     // cell is settled the rest are skipped whole (Crow's casters in the shadow of nearer ones).
     for (std::size_t b = 0, end; b < binned.size() && !t.all_shadowed(); b = end) {
-      const std::uint32_t k = polygons[items[binned[b]]->face].sub_object;
+      const std::uint32_t k = item_parts[binned[b]];
       group.clear();
-      for (end = b; end < binned.size(); ++end) {
-        const ScreenPolygon* s = items[binned[end]];
-        if (polygons[s->face].sub_object != k) break;
-        group.push_back(s);
+      for (end = b; end < binned.size() && item_parts[binned[end]] == k; ++end) {
+        group.push_back(items[binned[end]]);
+      }
+      // The next sub-object's frustum and volume, scattered in memory, start loading now.
+      if (end < binned.size()) {
+        const std::uint32_t next = item_parts[binned[end]];
+        frusta[next].prefetch();
+        if (const ConvexVolume* v = volumes.of(next)) v->prefetch();
       }
       if (cullable[k] && frusta[k].misses(t.receivers)) {
         ++culled;
@@ -406,7 +411,10 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons,
   const PolygonBins bins(items, cam.width, cam.height);
   std::atomic<std::size_t> fill = 0, negative = 0, culled = 0, shadowed = 0;
 
-  const TilePass pass{polygons, frusta, cullable, volumes, counter, screen, items};
+  std::vector<std::uint32_t> item_parts(items.size());
+  tbb::parallel_for(std::size_t(0), items.size(),
+                    [&](std::size_t i) { item_parts[i] = polygons[items[i]->face].sub_object; });
+  const TilePass pass{polygons, frusta, cullable, volumes, counter, screen, items, item_parts};
   // One task per tile: the cost is in the tiles of the cube cluster, a few contiguous rows,
   // and larger chunks left one core with the last of them in some runs (shade time 26-29 ms
   // or 34-35 ms on `cubes:2000` run to run).
