@@ -150,10 +150,14 @@ std::size_t CountingTile::finish(const VisibleFrame& frame, ShadowMask& mask) {
 
 void CountingTile::finish_uncounted(const VisibleFrame& frame, int x0, int y0, int w, int h,
                                     ShadowMask& mask) {
+  static_assert(kTile == VisibleSurfaceBuffer::kCoverageBlock);
+  const VisibleSurfaceBuffer& s = frame.surfaces;
   for (int r = 0; r < h; ++r) {
-    const std::size_t first = frame.surfaces.index(x0, y0 + r);
+    // Tiles are the coverage blocks: a row of sky is skipped whole.
+    if (!s.block_covered[std::size_t(y0 + r) * s.blocks_per_row() + x0 / kTile]) continue;
+    const std::size_t first = s.index(x0, y0 + r);
     for (std::size_t i = first; i < first + std::size_t(w); ++i) {
-      const std::uint32_t f = frame.surfaces.face[i];
+      const std::uint32_t f = s.face[i];
       if (f != kNoFace) mask.pixels[i] = mask_value(frame, f, frame.eye_count);
     }
   }
