@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <numeric>
+
 #include "testing/test_scenes.h"
 
 namespace shadowkit::volume {
@@ -105,6 +107,36 @@ TEST(ContourEdges, OfSomeFacesAreTheMeshsContourEdgesAlongThem) {
   EXPECT_EQ(found.size(), 6u);
   EXPECT_EQ(found, expected);
   EXPECT_EQ(chain_contour_loops(of_second).size(), 1u);
+}
+
+TEST(ContourEdges, OfSomeFacesAreFoundAlikeWhateverTheirEdgeIdsSpan) {
+  // 6,000 cubes in a row, 72,000 edges: all faces (ids marked, in parallel runs), and the
+  // first and the last cube alone (ids far apart, sorted). Each as the whole mesh's.
+  PolygonSoup row;
+  for (int i = 0; i < 6000; ++i) row.append(testing::box({3.0 * i, 0, 0}, {3.0 * i + 2, 2, 2}));
+  const Mesh mesh = mesh_of(row);
+  const Light light = Light::point({-5, 6, 7});
+  const std::vector<ContourEdge> whole = find_contour_edges(mesh, light);
+  const auto edge_ids = [](const std::vector<ContourEdge>& edges) {
+    std::vector<std::uint32_t> ids;
+    for (const ContourEdge& e : edges) ids.push_back(e.edge);
+    return ids;
+  };
+  std::vector<std::uint32_t> all(mesh.face_count()), ends{0, 1, 2, 3, 4, 5};
+  std::iota(all.begin(), all.end(), 0u);
+  for (std::uint32_t f = std::uint32_t(mesh.face_count()) - 6; f < mesh.face_count(); ++f)
+    ends.push_back(f);
+  std::vector<ContourEdge> found;
+  find_contour_edges(mesh, all, light, found);
+  EXPECT_EQ(edge_ids(found), edge_ids(whole));
+  find_contour_edges(mesh, ends, light, found);
+  std::vector<std::uint32_t> expected;
+  for (const ContourEdge& e : whole) {
+    const std::uint32_t f = mesh.edge_uses[mesh.edges[e.edge].first_use].face;
+    if (f < 6 || f >= mesh.face_count() - 6) expected.push_back(e.edge);
+  }
+  EXPECT_EQ(edge_ids(found), expected);
+  EXPECT_GE(expected.size(), 8u);
 }
 
 TEST(ContourEdges, NonManifoldEdgeWeighsTheSumOfItsFaces) {
