@@ -34,13 +34,6 @@ struct ConvexVolume {
   /// one by one.
   std::size_t count_cell(const VisibleFrame& frame, int band, int c, int xa, int xb, int ya, int yb,
                          CountingTile& t) const;
-  /// Starts loading the volume: the counting pass meets volumes scattered in memory.
-  void prefetch() const {
-    for (const char* p = reinterpret_cast<const char*>(this);
-         p < reinterpret_cast<const char*>(this + 1); p += 64) {
-      __builtin_prefetch(p);
-    }
-  }
 
  private:
   /// Two pixels' depth keys, and their comparisons (all bits set: true).

@@ -13,6 +13,7 @@
 #include "convex_volume.h"
 #include "counting_tile.h"
 #include "polygon_tiles.h"
+#include "shadowkit/core/prefetch.h"
 #include "shadowkit/raster/screen_polygon.h"
 
 namespace shadowkit::volume {
@@ -354,8 +355,8 @@ struct TilePass {
       // The next sub-object's frustum and volume, scattered in memory, start loading now.
       if (end < binned.size()) {
         const std::uint32_t next = item_parts[binned[end]];
-        frusta[next].prefetch();
-        if (const ConvexVolume* v = volumes.of(next)) v->prefetch();
+        prefetch(frusta[next]);
+        if (const ConvexVolume* v = volumes.of(next)) prefetch(*v);
       }
       if (cullable[k] && frusta[k].misses(t.receivers)) {
         ++culled;

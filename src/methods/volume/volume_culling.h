@@ -52,13 +52,6 @@ class ShadowFrustum {
 
   /// No point of \p receiver can lie in the region: nothing inside the box shadows it.
   bool misses(const Bounds3& receiver) const;
-  /// Starts loading what misses() reads: the counting pass meets frusta scattered in memory.
-  void prefetch() const {
-    for (const char* p = reinterpret_cast<const char*>(this);
-         p < reinterpret_cast<const char*>(this + 1); p += 64) {
-      __builtin_prefetch(p);
-    }
-  }
   /// Whether the region, within the reach, can meet the view given to the constructor.
   bool reaches_view() const { return reaches_view_; }
 
