@@ -59,6 +59,26 @@ TEST(Counting, EyeCountTellsWhenItCannotTell) {
   EXPECT_EQ(mesh_eye_count(square, {3, 0, 0}, Light::point({0, 4, 0})), 0);
 }
 
+TEST(Counting, EyeCountOverALargePartIsCountedInParallelAlike) {
+  // Two layers of 130 x 130 quads, 33,800 faces: more than a task's share, so the faces are
+  // counted in parallel runs. The way up to the light crosses both layers, or runs along an
+  // edge of each, where the count cannot be told.
+  PolygonSoup layers;
+  for (const double y : {1.0, 2.0}) {
+    for (int i = 0; i < 130; ++i) {
+      for (int j = 0; j < 130; ++j) {
+        layers.append(testing::horizontal_quad(-6.5 + 0.1 * i, -6.4 + 0.1 * i, -6.5 + 0.1 * j,
+                                               -6.4 + 0.1 * j, y));
+      }
+    }
+  }
+  const Mesh mesh = Mesh::build(layers, "layers", {});
+  ASSERT_GT(mesh.face_count(), 30000u);
+  EXPECT_EQ(mesh_eye_count(mesh, {0.33, 0, 0.27}, Light::point({0.33, 9, 0.27})), 2);
+  EXPECT_EQ(mesh_eye_count(mesh, {0.33, 0, 0.27}, Light::point({0.33, 1.5, 0.27})), 1);
+  EXPECT_FALSE(mesh_eye_count(mesh, {-6.5 + 0.1 * 70, 0, 0.27}, Light::point({0.5, 9, 0.27})));
+}
+
 Scene square_scene(Vec3 eye, Vec3 look_at) {
   return testing::square_over_plane(testing::camera(eye, look_at, 160, 120),
                                     testing::point_light({0, 4, 0}));

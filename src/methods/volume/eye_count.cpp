@@ -1,5 +1,8 @@
 #include "eye_count.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -39,22 +42,40 @@ std::optional<int> faces_between_eye_and_light(const Mesh& mesh,
                                                const Bounds3& box, Vec3 eye, const Light& light) {
   // Hazard: a relative tolerance; closer calls are left to depth-fail counting.
   const double tolerance = 1e-9 * std::max(box.diagonal(), length(eye - box.center()));
-  int count = 0;
-  for (const std::uint32_t f : faces) {
-    const Plane& plane = mesh.planes[f];
-    const double l = light_side(plane, light);
-    if (l == 0) continue;  // casts no volume
-    const double e = plane.distance(eye);
-    if (std::abs(e) <= tolerance) return std::nullopt;
-    if ((e > 0) == (l > 0)) continue;
-    // Where the way to the light crosses the plane.
-    const Vec3 x = light.type == Light::Type::point ? eye + (light.position - eye) * (e / (e - l))
-                                                    : eye - light.direction * (-e / l);
-    const Inside in = inside_face(mesh, f, x, tolerance);
-    if (in == Inside::unsure) return std::nullopt;
-    count += in == Inside::yes;
-  }
-  return count;
+  // The faces [first, last) that the way to the light crosses, or none if one is too close
+  // to tell.
+  const auto count_in = [&](std::size_t first, std::size_t last) -> std::optional<int> {
+    int count = 0;
+    for (std::size_t i = first; i < last; ++i) {
+      const std::uint32_t f = faces[i];
+      const Plane& plane = mesh.planes[f];
+      const double l = light_side(plane, light);
+      if (l == 0) continue;  // casts no volume
+      const double e = plane.distance(eye);
+      if (std::abs(e) <= tolerance) return std::nullopt;
+      if ((e > 0) == (l > 0)) continue;
+      // Where the way to the light crosses the plane.
+      const Vec3 x = light.type == Light::Type::point ? eye + (light.position - eye) * (e / (e - l))
+                                                      : eye - light.direction * (-e / l);
+      const Inside in = inside_face(mesh, f, x, tolerance);
+      if (in == Inside::unsure) return std::nullopt;
+      count += in == Inside::yes;
+    }
+    return count;
+  };
+  const auto sum = [](std::optional<int> a, std::optional<int> b) -> std::optional<int> {
+    if (!a || !b) return std::nullopt;
+    return *a + *b;
+  };
+  // A large part (a scanned or finely tessellated surface is one) in parallel.
+  constexpr std::size_t kGrain = 16384;
+  if (faces.size() <= kGrain) return count_in(0, faces.size());
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, faces.size(), kGrain), std::optional<int>(0),
+      [&](const tbb::blocked_range<std::size_t>& r, std::optional<int> acc) {
+        return acc ? sum(acc, count_in(r.begin(), r.end())) : acc;
+      },
+      sum);
 }
 
 }  // namespace shadowkit::volume
