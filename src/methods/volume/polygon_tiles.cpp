@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 namespace shadowkit::volume {
 
@@ -65,16 +64,28 @@ PolygonBins::PolygonBins(std::span<const ScreenPolygon* const> polygons, int wid
       }
     }
   });
-  start.assign(std::size_t(tiles_x) * tiles_y + 1, 0);
-  for (const auto& chunk : chunks) {
-    for (const auto& [tile, polygon] : chunk) ++start[tile + 1];
+  // A counting sort: each chunk counts its pairs per tile, then, from where its tiles' runs
+  // begin after the chunks before it, places them; both in parallel.
+  const std::size_t tiles = std::size_t(tiles_x) * tiles_y;
+  std::vector<std::vector<std::uint32_t>> at(chunks.size());
+  tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
+    at[c].assign(tiles, 0);
+    for (const auto& pair : chunks[c]) ++at[c][pair.first];
+  });
+  start.assign(tiles + 1, 0);
+  for (std::size_t t = 0; t < tiles; ++t) {
+    std::uint32_t next = start[t];
+    for (std::vector<std::uint32_t>& counts : at) {
+      const std::uint32_t n = counts[t];
+      counts[t] = next;
+      next += n;
+    }
+    start[t + 1] = next;
   }
-  std::partial_sum(start.begin(), start.end(), start.begin());
   items.resize(start.back());
-  std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
-  for (const auto& chunk : chunks) {
-    for (const auto& [tile, polygon] : chunk) items[next[tile]++] = polygon;
-  }
+  tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
+    for (const auto& [tile, polygon] : chunks[c]) items[at[c][tile]++] = polygon;
+  });
 }
 
 }  // namespace shadowkit::volume
