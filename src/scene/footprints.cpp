@@ -190,9 +190,10 @@ class FaceGrid {
   int side_ = 0;
   std::vector<float> cells_;
 };
+
 // What the footprint test needs of one sub-object as the light sees it.
 struct SubObjectView {
-  std::uint32_t k = 0;
+  std::uint32_t k = 0;                           ///< the sub-object
   double near = 0;                               ///< how near the light its box reaches
   int box_face = -1;                             ///< the face its box projects onto, -1 if none
   Point2 box_lo{}, box_hi{};                     ///< the rectangle of its box's projection
