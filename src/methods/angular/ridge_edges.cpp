@@ -1,10 +1,9 @@
 #include "ridge_edges.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <unordered_set>
 
+#include "shadowkit/core/parallel_runs.h"
 #include "shadowkit/methods/shadow_method.h"
 
 namespace shadowkit::angular {
@@ -61,36 +60,23 @@ bool one_solid(const Mesh& mesh) {
 }
 
 std::vector<RidgeEdge> find_ridge_edges(const Mesh& mesh, const FarSheets& sheets) {
-  // Fixed runs of faces, each into its own list, in parallel; the lists in run order keep
-  // the ridges in face order whichever thread found them.
-  constexpr std::uint32_t kRun = 4096;
-  const std::uint32_t faces = std::uint32_t(mesh.face_count());
-  std::vector<std::vector<RidgeEdge>> runs((faces + kRun - 1) / kRun);
-  const auto find_in_run = [&](std::size_t r) {
-    const std::uint32_t first = std::uint32_t(r) * kRun;
-    for (std::uint32_t f = first; f < std::min(faces, first + kRun); ++f) {
-      if (!sheets.occludes(f)) continue;
-      const std::uint32_t n = mesh.face_size(f);
-      for (std::uint32_t k = 0; k < n; ++k) {
-        // The corner's edge bounds the face's far sheet.
-        const std::uint32_t e = mesh.corner_edge[mesh.face_start[f] + k];
-        if (sheet_neighbour(mesh, sheets, f, e) >= 0) continue;
-        // The face walks its corners counter-clockwise about its normal; the far sheet's
-        // normal is the face's when the light is behind it.
-        std::uint32_t a = mesh.face_vertex(f, k), b = mesh.face_vertex(f, (k + 1) % n);
-        if (sheets.side[f] > 0) std::swap(a, b);
-        runs[r].push_back({e, a, b, f, hidden_ridge(mesh, sheets, mesh.edges[e])});
-      }
-    }
-  };
-  if (runs.size() == 1) {
-    find_in_run(0);  // a small object stays in its own task
-  } else {
-    tbb::parallel_for(std::size_t(0), runs.size(), find_in_run);
-  }
+  // In parallel over the faces of a large object.
   std::vector<RidgeEdge> ridges;
-  for (const std::vector<RidgeEdge>& run : runs)
-    ridges.insert(ridges.end(), run.begin(), run.end());
+  append_in_runs(mesh.face_count(), 4096, ridges, [&](std::size_t i, std::vector<RidgeEdge>& list) {
+    const auto f = std::uint32_t(i);
+    if (!sheets.occludes(f)) return;
+    const std::uint32_t n = mesh.face_size(f);
+    for (std::uint32_t k = 0; k < n; ++k) {
+      // The corner's edge bounds the face's far sheet.
+      const std::uint32_t e = mesh.corner_edge[mesh.face_start[f] + k];
+      if (sheet_neighbour(mesh, sheets, f, e) >= 0) continue;
+      // The face walks its corners counter-clockwise about its normal; the far sheet's
+      // normal is the face's when the light is behind it.
+      std::uint32_t a = mesh.face_vertex(f, k), b = mesh.face_vertex(f, (k + 1) % n);
+      if (sheets.side[f] > 0) std::swap(a, b);
+      list.push_back({e, a, b, f, hidden_ridge(mesh, sheets, mesh.edges[e])});
+    }
+  });
   return ridges;
 }
 

@@ -1,8 +1,8 @@
 #include "contour_edges.h"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
+
+#include "shadowkit/core/parallel_runs.h"
 
 namespace shadowkit::volume {
 namespace {
@@ -43,6 +43,26 @@ void add_if_contour(const Mesh& mesh, std::uint32_t e, const Light& light,
   if (weight < 0) out.push_back({e, edge.v1, edge.v0, -weight});
 }
 
+// Sorts \p ids and drops repeats: marked over the span of their values where it is not much
+// longer than their count (a part of a mesh numbered together: the knot's 1.7M corners),
+// sorted where it is (a few edges scattered over a large mesh).
+void sort_unique(std::vector<std::uint32_t>& ids) {
+  if (ids.empty()) return;
+  const auto [lo, hi] = std::minmax_element(ids.begin(), ids.end());
+  const std::uint32_t first = *lo, span = *hi - *lo + 1;
+  if (span > 8 * ids.size() + 64) {
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    return;
+  }
+  std::vector<char> used(span, 0);
+  for (const std::uint32_t id : ids) used[id - first] = 1;
+  ids.clear();
+  for (std::uint32_t i = 0; i < span; ++i) {
+    if (used[i]) ids.push_back(first + i);
+  }
+}
+
 }  // namespace
 
 std::vector<ContourEdge> find_contour_edges(const Mesh& mesh, const Light& light) {
@@ -53,43 +73,22 @@ std::vector<ContourEdge> find_contour_edges(const Mesh& mesh, const Light& light
 
 void find_contour_edges(const Mesh& mesh, std::span<const std::uint32_t> faces, const Light& light,
                         std::vector<ContourEdge>& out) {
-  thread_local std::vector<std::uint32_t> edges;
+  thread_local std::vector<std::uint32_t> buffer;
+  // A reference, so that the tasks below read this thread's buffer, not their own.
+  std::vector<std::uint32_t>& edges = buffer;
   edges.clear();
   for (std::uint32_t f : faces) {
     for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c) {
       edges.push_back(mesh.corner_edge[c]);
     }
   }
+  sort_unique(edges);
   out.clear();
-  if (edges.empty()) return;
-  // Each edge once, in edge order: marked over the span of their ids where it is not much
-  // longer than their count (a part of a mesh numbered together; the knot's 1.7M corners),
-  // sorted where it is (a few edges scattered over a large mesh).
-  const auto [lo, hi] = std::minmax_element(edges.begin(), edges.end());
-  const std::uint32_t first = *lo, span = *hi - *lo + 1;
-  if (span <= 8 * edges.size() + 64) {
-    std::vector<char> used(span, 0);
-    for (std::uint32_t e : edges) used[e - first] = 1;
-    // Fixed runs of ids, in parallel on a large part (the knot is one), in run order.
-    constexpr std::uint32_t kRun = 1 << 16;
-    std::vector<std::vector<ContourEdge>> runs((span + kRun - 1) / kRun);
-    const auto find_in_run = [&](std::size_t r) {
-      for (std::uint32_t i = std::uint32_t(r) * kRun;
-           i < std::min(span, std::uint32_t(r + 1) * kRun); ++i) {
-        if (used[i]) add_if_contour(mesh, first + i, light, runs.size() == 1 ? out : runs[r]);
-      }
-    };
-    if (runs.size() == 1) {
-      find_in_run(0);
-      return;
-    }
-    tbb::parallel_for(std::size_t(0), runs.size(), find_in_run);
-    for (const std::vector<ContourEdge>& run : runs) out.insert(out.end(), run.begin(), run.end());
-    return;
-  }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  for (std::uint32_t e : edges) add_if_contour(mesh, e, light, out);
+  // In parallel on a large part (the knot is one).
+  append_in_runs(edges.size(), std::size_t(1) << 15, out,
+                 [&](std::size_t i, std::vector<ContourEdge>& list) {
+                   add_if_contour(mesh, edges[i], light, list);
+                 });
 }
 
 std::vector<ContourLoop> chain_contour_loops(std::span<const ContourEdge> edges) {

@@ -2,6 +2,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_reduce.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -67,15 +68,19 @@ std::optional<int> faces_between_eye_and_light(const Mesh& mesh,
     if (!a || !b) return std::nullopt;
     return *a + *b;
   };
-  // A large part (a scanned or finely tessellated surface is one) in parallel.
+  // A large part (a scanned or finely tessellated surface is one) in parallel, isolated:
+  // while it waits, this thread must not take up another part, whose build would reuse the
+  // caller's thread_local buffers.
   constexpr std::size_t kGrain = 16384;
   if (faces.size() <= kGrain) return count_in(0, faces.size());
-  return tbb::parallel_reduce(
-      tbb::blocked_range<std::size_t>(0, faces.size(), kGrain), std::optional<int>(0),
-      [&](const tbb::blocked_range<std::size_t>& r, std::optional<int> acc) {
-        return acc ? sum(acc, count_in(r.begin(), r.end())) : acc;
-      },
-      sum);
+  return tbb::this_task_arena::isolate([&] {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, faces.size(), kGrain), std::optional<int>(0),
+        [&](const tbb::blocked_range<std::size_t>& r, std::optional<int> acc) {
+          return acc ? sum(acc, count_in(r.begin(), r.end())) : acc;
+        },
+        sum);
+  });
 }
 
 }  // namespace shadowkit::volume
