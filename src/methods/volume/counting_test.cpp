@@ -147,6 +147,52 @@ TEST(Counting, NearPlaneCuttingAFaceSwitchesToDepthFail) {
   }
 }
 
+TEST(Counting, FacesAndShadowPolygonsWhosePlanesAloneNearTheEyeKeepDepthPass) {
+  // 1e-6 above the square's plane (the near plane reaches 2e-6), but 5 away from the square.
+  const Scene beside = square_scene({6, 1 + 1e-6, 0.3}, {0, 0, 0});
+  EXPECT_EQ(depth_fail_sub_objects(beside), 0);
+  EXPECT_LE(testing::worst_interior_mismatch(beside, "volume"), 0.05);
+  // On the plane through the light and the square's edge x = 1, between them: off the edge's
+  // shadow polygon, which begins at the edge.
+  const Vec3 above{0.5, 2.5, 0.1};
+  const Plane side{normalize(Vec3{3, 1, 0}), -4 / length(Vec3{3, 1, 0})};
+  ASSERT_NEAR(side.distance(above), 0, 1e-12);
+  const Scene between = square_scene(above, {3, 0, 2});
+  EXPECT_EQ(depth_fail_sub_objects(between), 0);
+  EXPECT_LE(testing::worst_interior_mismatch(between, "volume"), 0.05);
+}
+
+// The side polygon of the square's edge from (1, 1, -1) to (1, 1, 1), whichever way it runs.
+bool edge_polygon_near(const Light& light, Vec3 p, double radius) {
+  const Mesh square = Mesh::build(testing::horizontal_quad(-1, 1, -1, 1, 1), "square", {});
+  for (const ContourEdge& e : find_contour_edges(square, light)) {
+    const Vec3 a = square.vertices[e.from], b = square.vertices[e.to];
+    if (a.x == 1 && b.x == 1) return side_polygon_near(square, e, light, p, radius);
+  }
+  ADD_FAILURE() << "no contour edge along x = 1";
+  return true;
+}
+
+TEST(Counting, SidePolygonNearAPointIsTheHalfPlanesTest) {
+  // A point light at (0, 4, 0): the polygon runs from the edge down and out, between the
+  // rays from the light through the edge's ends; its plane is 3x + y = 4.
+  const Light point = Light::point({0, 4, 0});
+  EXPECT_TRUE(edge_polygon_near(point, {1.25, 0.25, 0.1}, 1e-3));          // on it
+  EXPECT_TRUE(edge_polygon_near(point, {1.25, 0.2505, 0.1}, 1e-3));        // just off it
+  EXPECT_FALSE(edge_polygon_near(point, {1.25, 0.26, 0.1}, 1e-3));         // off its plane
+  EXPECT_FALSE(edge_polygon_near(point, {0.5, 2.5, 0.1}, 1e-3));           // short of the edge
+  EXPECT_FALSE(edge_polygon_near(point, {1.25, 0.25, 1.3}, 1e-3));         // past a ray's side
+  EXPECT_FALSE(edge_polygon_near(point, {1.25, 0.25, -1.3}, 1e-3));        // past the other
+  EXPECT_TRUE(edge_polygon_near(point, {1.25, 0.25, 1.25 + 5e-4}, 1e-3));  // near that ray
+  // Straight down: the polygon is the strip x = 1, y < 1, |z| <= 1.
+  const Light down = Light::directional({0, -1, 0});
+  EXPECT_TRUE(edge_polygon_near(down, {1, -50, 0.9}, 1e-3));
+  EXPECT_TRUE(edge_polygon_near(down, {1, 1.0005, 0}, 1e-3));
+  EXPECT_FALSE(edge_polygon_near(down, {1, 1.01, 0}, 1e-3));
+  EXPECT_FALSE(edge_polygon_near(down, {1, -50, 1.01}, 1e-3));
+  EXPECT_FALSE(edge_polygon_near(down, {1.01, -50, 0}, 1e-3));
+}
+
 TEST(Counting, ForcedDepthPassAndDepthFailAgreeWithTheReference) {
   const Scene scene = square_scene({0, 9, 6}, {0, 0, 0});
   EXPECT_EQ(depth_fail_sub_objects(scene, {"volume", {{"count", "pass"}}}), 0);

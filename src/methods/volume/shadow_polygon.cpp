@@ -86,6 +86,24 @@ Plane side_plane(const Mesh& mesh, const ContourEdge& edge, const Light& light) 
   return {n, -dot(n, a)};
 }
 
+bool side_polygon_near(const Mesh& mesh, const ContourEdge& edge, const Light& light, Vec3 p,
+                       double radius) {
+  const Plane plane = side_plane(mesh, edge, light);
+  if (!is_finite(plane.normal)) return true;  // no polygon: nothing to tell
+  if (std::abs(plane.distance(p)) > radius) return false;
+  // In its plane the polygon is convex, the intersection of three half-planes: beyond the
+  // edge, and between the rays from its ends (which meet at a point light). A point more than
+  // radius outside one of them is farther than that from the polygon.
+  const Vec3 a = mesh.vertices[edge.from], b = mesh.vertices[edge.to];
+  const Vec3 da = away_from_light(a, light), db = away_from_light(b, light);
+  const auto outside = [&](Vec3 from, Vec3 along, Vec3 inner) {
+    const Vec3 m = cross(plane.normal, along);
+    const double inner_side = dot(inner - from, m), side = dot(p - from, m);
+    return inner_side != 0 && (inner_side > 0 ? -side : side) > radius * length(m);
+  };
+  return !outside(a, b - a, a + da) && !outside(a, da, b) && !outside(b, db, a);
+}
+
 std::optional<ShadowPolygon> side_polygon(const Mesh& mesh, const ContourEdge& edge,
                                           const Light& light, const Reach& reach, Vec3 eye,
                                           bool depth_fail, PolygonCorners& corners) {

@@ -72,4 +72,9 @@ void cap_polygons(const Scene& scene, std::uint32_t t, std::uint32_t sub_object,
 /// The plane of a side polygon, unit normal: the light and the edge lie in it.
 Plane side_plane(const Mesh& mesh, const ContourEdge& edge, const Light& light);
 
+/// Whether the side polygon of \p edge, to infinity, may pass within \p radius of point
+/// \p p: false only when it surely does not.
+bool side_polygon_near(const Mesh& mesh, const ContourEdge& edge, const Light& light, Vec3 p,
+                       double radius);
+
 }  // namespace shadowkit::volume

@@ -29,21 +29,31 @@ struct VolumeChunk {
   std::optional<std::uint32_t> no_eye_count;
 };
 
+// Whether mesh face \p f may come within \p radius of point \p p: its plane and its box do.
+bool face_near(const Mesh& mesh, std::uint32_t f, Vec3 p, double radius) {
+  if (std::abs(mesh.planes[f].distance(p)) > radius) return false;
+  Bounds3 box;
+  for (std::uint32_t k = 0; k < mesh.face_size(f); ++k)
+    box.add(mesh.vertices[mesh.face_vertex(f, k)]);
+  return box.distance(p) <= radius;
+}
+
 // Depth-pass misses crossings the near plane clips away, so it needs every shadow polygon
 // farther from the eye than the near part of the view; and every face, or the view shows
 // points behind a clipped face with the eye's count (a light inside a closed mesh: points
-// inside it, counted 1). And it needs the eye's own count.
+// inside it, counted 1). And it needs the eye's own count. The polygons themselves are
+// tested, not their planes: of a mesh of 500,000 faces, some face's plane passes within the
+// near plane's reach of almost any eye.
 bool needs_depth_fail(const Mesh& mesh, std::span<const ContourEdge> edges,
                       std::span<const std::uint32_t> faces, const Light& light, Vec3 eye,
                       const ViewFrustum& view, std::optional<int> eye_count) {
   if (!eye_count) return true;
-  const auto near_eye = [&](const Plane& plane) {
-    return std::abs(plane.distance(eye)) <= 2 * view.near_radius;
-  };
-  return std::any_of(edges.begin(), edges.end(),
-                     [&](const ContourEdge& e) { return near_eye(side_plane(mesh, e, light)); }) ||
+  const double reach = 2 * view.near_radius;
+  return std::any_of(
+             edges.begin(), edges.end(),
+             [&](const ContourEdge& e) { return side_polygon_near(mesh, e, light, eye, reach); }) ||
          std::any_of(faces.begin(), faces.end(),
-                     [&](std::uint32_t f) { return near_eye(mesh.planes[f]); });
+                     [&](std::uint32_t f) { return face_near(mesh, f, eye, reach); });
 }
 
 // The scene triangles of global face \p f: they follow face order.
