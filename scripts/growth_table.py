@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Regenerates docs/scaling.md: every method's cost against the triangle count, from 125 to
-80,000 cubes (960k triangles), the 576k-triangle knot and the IFC house, with the fitted
-growth exponents, the ratios to raytrace's shade, peak memory and the goals met or not.
+80,000 cubes (960k triangles), the 576k-triangle knot, the 500k-triangle terrain and the IFC
+house, with the fitted growth exponents, the ratios to raytrace's shade, peak memory and the
+goals met or not.
 
     python3 scripts/growth_table.py [--quick] [--sizes N,N,...] [--methods M,M,...] [--voxel]
         [--repeats N] [--warmup N] [--passes P] [--threads N] [--no-extras] [--no-peak]
@@ -14,13 +15,14 @@ ratio divides by raytrace's shade in the same process; medians over the passes. 
 `/usr/bin/time -v shadowkit render` per method on the largest cube field.
 
   defaults    --sizes 125,500,2000,8000,30000,80000 --repeats 5 --warmup 1 --passes 3, the
-              knot and the IFC house beside the cube fields; writes docs/scaling.md, and
+              knot, the terrain and the IFC house beside the cube fields; writes docs/scaling.md, and
               docs/images/growth_time.svg, growth_memory.svg, growth_data.csv
   --quick     cubes:125,500,2000, one pass of one timed run, no warm-up, the IFC house only as
               extra scene; writes /tmp/shadowkit-growth-quick/scaling.md (seconds)
   --sizes     cube counts, comma-separated
   --methods   default raytrace,shadowmap,volume,svbsp,angular; --voxel adds voxel (slow)
-  --no-extras only the cube fields (not the room, examples/knot-600k.json and the IFC house)
+  --no-extras only the cube fields (not the room, examples/knot-600k.json, terrain:500 and the
+              IFC house)
   --no-peak   no /usr/bin/time runs
   --out       the page (default docs/scaling.md); plots and CSV go to images/ beside it
   --keep      keep the raw JSON (bench, info, peak memory, meta) in DIR
@@ -47,6 +49,7 @@ import plot_svg  # noqa: E402
 SHADOWKIT = os.environ.get("SHADOWKIT", str(ROOT / "build" / "shadowkit"))
 IFC_HOUSE = "/usr/share/assimp/models/IFC/AC14-FZK-Haus.ifc"
 KNOT = "examples/knot-600k.json"
+TERRAIN = "terrain:500"
 SIZES = [125, 500, 2000, 8000, 30000, 80000]
 # A method with a setting is written METHOD.KEY=VALUE and run with --set METHOD.KEY=VALUE.
 METHODS = ["raytrace", "shadowmap", "shadowmap.tiles=all", "volume", "svbsp", "angular"]
@@ -409,6 +412,11 @@ def report(work, out):
           "triangles) over the bumpy Catmull-Clark ground of `examples/subdivision.json` "
           "at `tessellation` 8 (8,192 triangles), one directional light: the knot shadows the ground and its own "
           "strands.")
+    if TERRAIN in scenes:
+        w(f"`{TERRAIN}`: the built-in height field of 500 x 500 cells, two triangles each "
+          "([scene-format.md](scene-format.md#built-in-scenes)), under a sun 17 degrees high: "
+          "one open mesh of 500,000 triangles, one sub-object, whose hills shadow each other "
+          "over the whole view.")
     if any(s.endswith(".ifc") for s in scenes):
         w("`AC14-FZK-Haus.ifc`: the IFC house of Debian's `assimp-testmodels`, as a whole scene "
           "([formats.md](formats.md)): its own camera and sun; loaded from the import cache "
@@ -576,6 +584,7 @@ def main():
         scenes.append("room")  # the light inside the scene, which angular's goal names
         if not args.quick:
             scenes.append(str(ROOT / KNOT))
+            scenes.append(TERRAIN)
         if os.path.exists(IFC_HOUSE):
             scenes.append(IFC_HOUSE)
         else:

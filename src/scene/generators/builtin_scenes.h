@@ -18,6 +18,8 @@ struct SceneParts {
 
 /// Thakur, Cheng & Miura §9 scalability simulation: "count" cubes in a fixed volume.
 SceneParts cube_field_scene(const ParamReader& params);
+/// A height field of "cells" x "cells" cells, two triangles each, under a low sun.
+SceneParts terrain_scene(const ParamReader& params);
 /// Haines's SPD recursive tetrahedron of "level" levels over a two-triangle ground.
 SceneParts tetra_scene(const ParamReader& params);
 /// A closed room with the light and the camera inside it.

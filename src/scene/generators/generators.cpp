@@ -107,6 +107,7 @@ struct SceneEntry {
 
 constexpr SceneEntry kScenes[] = {
     {"cubes", cube_field_scene, "count", true, "cubes:2000"},
+    {"terrain", terrain_scene, "cells", true, "terrain:160"},
     {"tetra", tetra_scene, "level", true, "tetra:4"},
     {"room", room_scene, "size", false, "room:12"},
     {"table", table_scene, "", false, "table"},

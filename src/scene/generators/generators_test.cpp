@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <numeric>
+#include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "shadowkit/core/error.h"
@@ -28,7 +30,7 @@ struct RecordingContext {
 
 /// Objects that are open on purpose; everything else generated must be a closed solid.
 bool is_open_object(const std::string& name) {
-  return name == "ground" || name == "square" || name == "quad";
+  return name == "ground" || name == "square" || name == "quad" || name == "terrain";
 }
 
 /// Faces grouped into components connected through two-face edges (the tetra's small
@@ -90,7 +92,8 @@ bool in_frame(const Camera& camera, Vec3 p) {
 
 std::vector<std::string> all_scene_specs() {
   std::vector<std::string> specs = builtin_scene_names();
-  specs.insert(specs.end(), {"cubes:1", "cubes:8", "tetra:0", "tetra:4", "room:14", "square:2"});
+  specs.insert(specs.end(),
+               {"cubes:1", "cubes:8", "tetra:0", "tetra:4", "room:14", "square:2", "terrain:1"});
   return specs;
 }
 
@@ -111,6 +114,39 @@ TEST(BuiltinScenes, CubeField2000HasThePapersPolygonCounts) {
   EXPECT_EQ(scene.lights[0].type, Light::Type::point);
   EXPECT_TRUE(rc.warnings.empty());
   EXPECT_EQ(make_builtin_scene("cubes", rc.ctx).face_count(), 125u * 6 + 1);
+}
+
+TEST(BuiltinScenes, TerrainIsOneOpenHeightFieldOfTwoTrianglesACell) {
+  RecordingContext rc;
+  const Scene scene = make_builtin_scene("terrain:40", rc.ctx);
+  EXPECT_TRUE(rc.warnings.empty());
+  ASSERT_EQ(scene.objects.size(), 1u);
+  const Mesh& mesh = scene.objects[0].mesh;
+  EXPECT_EQ(mesh.face_count(), 2u * 40 * 40);
+  EXPECT_EQ(scene.triangles().triangles.size(), 2u * 40 * 40);
+  EXPECT_EQ(mesh.vertices.size(), 41u * 41);
+  EXPECT_EQ(mesh.boundary_edge_count(), 4u * 40);
+  EXPECT_EQ(edge_components(mesh).size(), 1u);  // one sub-object, as a scanned surface is
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_EQ(scene.lights[0].type, Light::Type::directional);
+  EXPECT_LT(-scene.lights[0].direction.y, 0.35);  // a low sun: long shadows
+  // In the generator's own units (the scene's working frame moves and scales them).
+  const auto positions = [](int cells) {
+    return generate_objects({{"generator", "terrain"}, {"cells", cells}}, "terrain")[0]
+        .soup.positions;
+  };
+  const std::vector<Vec3> coarse = positions(40);
+  Bounds3 box;
+  for (const Vec3& v : coarse) box.add(v);
+  EXPECT_EQ(box.lo.x, -10);
+  EXPECT_EQ(box.hi.z, 10);
+  EXPECT_GT(box.hi.y - box.lo.y, 2);  // hills, not a plane
+  EXPECT_LT(box.hi.y, 3);
+  // The same landscape at every resolution: the coarse grid's vertices are the fine one's.
+  std::set<std::tuple<double, double, double>> fine;
+  for (const Vec3& v : positions(80)) fine.insert({v.x, v.y, v.z});
+  for (const Vec3& v : coarse) EXPECT_TRUE(fine.contains({v.x, v.y, v.z}));
+  EXPECT_EQ(make_builtin_scene("terrain", rc.ctx).face_count(), 2u * 160 * 160);
 }
 
 TEST(BuiltinScenes, TetraLevelsMatchChinFeinerTable1) {
@@ -148,7 +184,13 @@ TEST(BuiltinScenes, SolidsAreClosedManifoldAndOutward) {
       EXPECT_TRUE(mesh.consistently_oriented());
       if (is_open_object(object.name)) {
         EXPECT_GT(mesh.boundary_edge_count(), 0u);
-        for (const Plane& plane : mesh.planes) EXPECT_NEAR(plane.normal.y, 1, 1e-12);
+        for (const Plane& plane : mesh.planes) {
+          if (object.name == "terrain") {
+            EXPECT_GT(plane.normal.y, 0);  // a height field, faces turned up
+          } else {
+            EXPECT_NEAR(plane.normal.y, 1, 1e-12);
+          }
+        }
         continue;
       }
       EXPECT_TRUE(mesh.closed());
@@ -193,8 +235,9 @@ TEST(BuiltinScenes, CameraAndLightsArePlacedSafely) {
         continue;
       }
       EXPECT_FALSE(inside_some_convex_part(object.mesh, scene.camera.position)) << object.name;
-      if (object.name == "ground") continue;
-      // Every object is in view (the ground and the room's walls extend past the frame).
+      if (object.name == "ground" || object.name == "terrain") continue;
+      // Every object is in view (the ground, the terrain and the room's walls extend past
+      // the frame).
       for (const Vec3& v : object.mesh.vertices) {
         EXPECT_TRUE(in_frame(scene.camera, v)) << object.name;
         if (!in_frame(scene.camera, v)) break;
@@ -361,6 +404,9 @@ TEST(GeneratorErrors, BadParametersNameTheirKey) {
       {{{"generator", "cubes"}, {"seed", -3}}, "seed"},
       {{{"generator", "cubes"}, {"cuont", 8}}, "cuont"},
       {{{"generator", "tetra"}, {"level", 8}}, "level"},
+      {{{"generator", "terrain"}, {"cells", 0}}, "cells"},
+      {{{"generator", "terrain"}, {"cells", 1025}}, "cells"},
+      {{{"generator", "terrain"}, {"cells", 2.5}}, "cells"},
       {{{"generator", "tetra"}, {"level", -1}}, "level"},
       {{{"generator", "room"}, {"size", -2}}, "size"},
       {{{"generator", "room"}, {"size", json::array({1, 2})}}, "size"},
@@ -392,6 +438,7 @@ TEST(GeneratorErrors, BadSpecStringsNameTheScene) {
       {"cubes:-5", "key 'count'"},        {"tetra:8", "scene 'tetra:8': key 'level'"},
       {"tetra:2.5", "scene 'tetra:2.5'"}, {"table:3", "takes no parameter"},
       {"square:9", "key 'height'"},       {"nope", "unknown built-in scene 'nope'"},
+      {"terrain:x", "scene 'terrain:x'"}, {"terrain:5000", "scene 'terrain:5000': key 'cells'"},
       {"", "unknown built-in scene"},
   };
   for (const auto& [spec, expected] : cases) {
@@ -415,8 +462,8 @@ TEST(GeneratorErrors, PlainWhereGetsAKeySuffix) {
 }
 
 TEST(BuiltinScenes, NamesAreListed) {
-  const std::vector<std::string> expected{"cubes",  "tetra", "room",  "table",    "three-lights",
-                                          "square", "coil",  "holed", "hole-like"};
+  const std::vector<std::string> expected{"cubes",        "terrain", "tetra", "room",  "table",
+                                          "three-lights", "square",  "coil",  "holed", "hole-like"};
   EXPECT_EQ(builtin_scene_names(), expected);
   RecordingContext rc;
   EXPECT_EQ(make_builtin_scene("three-lights", rc.ctx).lights.size(), 3u);
