@@ -115,7 +115,8 @@ void TileDepth<Key>::refresh(int b) {
 
 // The blocks of \p r where triangle \p t may still show: those whose farthest key is not
 // beyond the triangle's nearest key over the block. A stale block that seems to show is taken
-// again first: drawing its pixels costs more than reading them.
+// again first where the triangle's rectangle in it is large: drawing its pixels costs more
+// than reading them. A small one (of a million, most span a pixel or two) is drawn as it is.
 template <typename Key>
 std::uint64_t TileDepth<Key>::showing(const ScreenTriangle& t, const BlockRange& r) {
   std::uint64_t shows = 0;
@@ -128,7 +129,7 @@ std::uint64_t TileDepth<Key>::showing(const ScreenTriangle& t, const BlockRange&
       const double nearest = nearest_key(t, xa, xb, ya, yb);
       const int b = by * kBlocks + bx;
       if (nearest < far_[b]) continue;
-      if (stale_ >> b & 1) {
+      if ((stale_ >> b & 1) && (xb - xa + 1) * (yb - ya + 1) > kSmallTriangle) {
         refresh(b);
         if (nearest < far_[b]) continue;
       }

@@ -10,6 +10,7 @@
 #include <tuple>
 
 #include "shadowkit/core/error.h"
+#include "shadowkit/core/prefetch.h"
 
 namespace shadowkit::raster {
 namespace {
@@ -109,8 +110,8 @@ class TriangleBuilder {
     ScreenTriangle t;
     const FixedPoint v[3] = {v0, v1, v2};
     for (int i = 0; i < 3; ++i) {
-      t.x[i] = v[i].x;
-      t.y[i] = v[i].y;
+      t.x[i] = std::int32_t(v[i].x);
+      t.y[i] = std::int32_t(v[i].y);
       const FixedPoint d{v[(i + 1) % 3].x - v[i].x, v[(i + 1) % 3].y - v[i].y};
       // Antisymmetric ownership: of two triangles on either side of an edge, exactly one
       // owns the pixel centres lying on it.
@@ -324,6 +325,9 @@ class CornerCache {
   std::array<Corner, kSlots> corner_;
 };
 
+// How many triangles ahead setup_cluster_triangles loads a face plane.
+constexpr std::size_t kPlaneAhead = 8;
+
 // A triangle clipped by the five planes has at most eight corners: six triangles.
 constexpr std::size_t kChunkTriangles = ScreenTriangles::kChunkSize / 6;
 
@@ -386,6 +390,10 @@ ScreenTriangles setup_cluster_triangles(const Scene& scene, const RasterProjecti
     const std::size_t end = std::min(entries.size(), (c + 1) * kChunkTriangles);
     chunks[c].reserve(end - c * kChunkTriangles);
     for (std::size_t i = c * kChunkTriangles; i < end; ++i) {
+      // Faces in cluster order are scattered over the scene's face planes: the plane of a
+      // triangle a few ahead starts loading now.
+      if (i + kPlaneAhead < end)
+        prefetch(scene.face_plane(clusters.faces[entries[i + kPlaneAhead]]));
       const auto& [a, b, d] = clusters.corners[entries[i]];
       setup_triangle(scene, view, planes, clusters.faces[entries[i]], corners(a), corners(b),
                      corners(d), builder);

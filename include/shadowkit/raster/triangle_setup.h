@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "shadowkit/raster/projection.h"
+#include "shadowkit/scene/limits.h"
 #include "shadowkit/scene/scene.h"
 
 namespace shadowkit::raster {
@@ -21,12 +22,16 @@ inline constexpr double kGuardBand = 4096;
 /// \brief A triangle ready for scan conversion: positively oriented fixed-point vertices (in
 /// pixel coordinates, y down; clockwise as seen on screen) with
 /// the top-left rule folded into the edge biases, and the depth-key plane of its face.
+/// 72 bytes: a frame sets up and bins hundreds of thousands, and reads each several times.
+/// Fixed-point corners fit 32 bits within the guard band; edge functions take them to 64.
 struct ScreenTriangle {
-  std::int64_t x[3], y[3];         ///< fixed point
-  std::int64_t bias[3];            ///< 0 if the edge owns pixel centres on it, 1 otherwise
+  // Corners within the guard band of the largest raster, a camera's image or a depth map.
+  static_assert((limits::kImageSide + 2 * kGuardBand) * kSubpixel < 2147483647.0);
   double key_a, key_b, key_c;      ///< depth key = a * px + b * py + c at pixel centre (px, py)
+  std::int32_t x[3], y[3];         ///< fixed point
   int min_x, min_y, max_x, max_y;  ///< pixel bounds, clamped to the raster
   std::uint32_t face;
+  std::int8_t bias[3];  ///< 0 if the edge owns pixel centres on it, 1 otherwise
 };
 
 /// Edge \p i's function at the centre of pixel (\p px, \p py): the triangle owns the pixel
@@ -34,8 +39,9 @@ struct ScreenTriangle {
 inline std::int64_t edge_function(const ScreenTriangle& t, int i, std::int64_t px,
                                   std::int64_t py) {
   const int j = i == 2 ? 0 : i + 1;
-  return (t.x[j] - t.x[i]) * (py * kSubpixel + kSubpixel / 2 - t.y[i]) -
-         (t.y[j] - t.y[i]) * (px * kSubpixel + kSubpixel / 2 - t.x[i]) - t.bias[i];
+  const std::int64_t xi = t.x[i], yi = t.y[i];
+  return (t.x[j] - xi) * (py * kSubpixel + kSubpixel / 2 - yi) -
+         (t.y[j] - yi) * (px * kSubpixel + kSubpixel / 2 - xi) - t.bias[i];
 }
 
 /// Whether triangle \p t may own a pixel centre in columns [xa, xb] and rows [ya, yb]: false

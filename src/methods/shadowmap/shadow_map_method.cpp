@@ -14,12 +14,14 @@
 
 #include "shadowkit/core/error.h"
 #include "shadowkit/methods/shadowmap.h"
+#include "shadowkit/scene/limits.h"
 
 namespace shadowkit::shadowmap {
 namespace {
 
 constexpr double kDefaultBiasPerDiagonal = 1e-3;
 constexpr int kMinResolution = 16, kMaxResolution = 16384;
+static_assert(kMaxResolution <= limits::kImageSide);  // the scan converter's largest raster
 constexpr int kMaxPcf = 31;
 // The camera pass's screen tiles: wide, so that the hardware prefetcher follows each row.
 constexpr int kShadeTileW = 128, kShadeTileH = 8;
