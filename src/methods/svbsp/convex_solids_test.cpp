@@ -95,9 +95,14 @@ void expect_default_areas(const Scene& scene, const std::string& name, bool fewe
 }
 
 TEST(SvbspContourPlanes, GiveTheDefaultsAreasWithFewerPlanes) {
-  for (const char* name : {"tetra:3", "cubes:125", "three-lights", "table"}) {
+  for (const char* name : {"tetra:3", "cubes:125", "three-lights"}) {
     expect_default_areas(load_scene(name, {}), name, true);
   }
+  // Fewer planes per unit do not make a smaller tree everywhere: the scene BSP trees differ
+  // (units kept whole, or their faces), and so does the order in which the light meets the
+  // pieces. The table's chairs are boxes that meet: its tree with units splits 223
+  // polygons, the default's 189, and its SVBSP tree holds 271 nodes to the default's 252.
+  expect_default_areas(load_scene("table", {}), "table", false);
   EXPECT_EQ(run_method(load_scene("cubes:125", {}), 0, kContour).convex_units, 125);
 }
 

@@ -81,22 +81,30 @@ std::pair<Plane, PlaneScore> axis_plane(const Sample& polygons, int axis) {
   }
   std::sort(lo.begin(), lo.end());
   std::sort(hi.begin(), hi.end());
-  // Positions: past each polygon's far end, halfway to the next start (off every vertex,
-  // in the gap if there is one). Behind: the polygons ending before c; in front: those
-  // starting after it; split: the others, counted on both sides as score() does.
-  // c grows with the far end, so the counts come from pointers that only move forward.
+  // Positions: at each polygon's far end, and past it halfway to the next start (in the gap
+  // if there is one). At the end, polygons that end there lie behind and those that start
+  // there in front: a grid's faces (a terrain, a building's walls) meet at shared
+  // coordinates, where a plane splits none of them. Split: the others, counted on both sides
+  // as score() does. c grows with the far end, so the counts come from pointers that only
+  // move forward.
+  const std::size_t n = polygons.size();
   double best = 0;
-  PlaneScore best_score{polygons.size(), 0, 0};
-  std::size_t next = 0, back = 0;
-  for (const double end : hi) {
-    while (next < lo.size() && lo[next] <= end) ++next;
-    if (next == lo.size()) break;
-    const double c = 0.5 * (end + lo[next]);
-    while (back < hi.size() && hi[back] < c) ++back;
-    const std::size_t front = lo.size() - next;  // no start lies in (end, c)
-    const std::size_t splits = polygons.size() - std::min(polygons.size(), back + front);
+  PlaneScore best_score{n, 0, 0};
+  const auto consider = [&](double c, std::size_t back, std::size_t front) {
+    const std::size_t splits = n - std::min(n, back + front);
     const PlaneScore s{splits, front + splits, back + splits};
     if (s.cost() < best_score.cost()) best = c, best_score = s;
+  };
+  std::size_t next = 0, back = 0, ending = 0, starting = 0;
+  for (const double end : hi) {
+    while (ending < n && hi[ending] <= end) ++ending;
+    while (starting < n && lo[starting] < end) ++starting;
+    consider(end, ending, n - starting);
+    while (next < n && lo[next] <= end) ++next;
+    if (next == n) break;
+    const double c = 0.5 * (end + lo[next]);
+    while (back < n && hi[back] < c) ++back;
+    consider(c, back, n - next);  // no start lies in (end, c)
   }
   Plane plane;
   plane.normal[axis] = 1;
