@@ -386,14 +386,18 @@ ScreenTriangles setup_cluster_triangles(const Scene& scene, const RasterProjecti
   SHADOWKIT_CHECK(chunks.size() < (std::size_t(1) << (32 - ScreenTriangles::kPlaceBits)));
   tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
     TriangleBuilder builder(view, chunks[c]);
-    CornerCache corners(view, planes, scene.triangles().positions);
+    const std::vector<Vec3>& positions = scene.triangles().positions;
+    CornerCache corners(view, planes, positions);
     const std::size_t end = std::min(entries.size(), (c + 1) * kChunkTriangles);
     chunks[c].reserve(end - c * kChunkTriangles);
     for (std::size_t i = c * kChunkTriangles; i < end; ++i) {
       // Faces in cluster order are scattered over the scene's face planes: the plane of a
       // triangle a few ahead starts loading now.
-      if (i + kPlaneAhead < end)
-        prefetch(scene.face_plane(clusters.faces[entries[i + kPlaneAhead]]));
+      if (i + kPlaneAhead < end) {
+        const std::uint32_t ahead = entries[i + kPlaneAhead];
+        prefetch(scene.face_plane(clusters.faces[ahead]));
+        for (const std::uint32_t v : clusters.corners[ahead]) prefetch(positions[v]);
+      }
       const auto& [a, b, d] = clusters.corners[entries[i]];
       setup_triangle(scene, view, planes, clusters.faces[entries[i]], corners(a), corners(b),
                      corners(d), builder);
