@@ -325,8 +325,8 @@ class CornerCache {
   std::array<Corner, kSlots> corner_;
 };
 
-// How many triangles ahead setup_cluster_triangles loads a face plane.
-constexpr std::size_t kPlaneAhead = 8;
+// How many triangles ahead setup_cluster_triangles loads a face plane and vertices.
+constexpr std::size_t kLoadAhead = 8;
 
 // A triangle clipped by the five planes has at most eight corners: six triangles.
 constexpr std::size_t kChunkTriangles = ScreenTriangles::kChunkSize / 6;
@@ -391,10 +391,10 @@ ScreenTriangles setup_cluster_triangles(const Scene& scene, const RasterProjecti
     const std::size_t end = std::min(entries.size(), (c + 1) * kChunkTriangles);
     chunks[c].reserve(end - c * kChunkTriangles);
     for (std::size_t i = c * kChunkTriangles; i < end; ++i) {
-      // Faces in cluster order are scattered over the scene's face planes: the plane of a
-      // triangle a few ahead starts loading now.
-      if (i + kPlaneAhead < end) {
-        const std::uint32_t ahead = entries[i + kPlaneAhead];
+      // In cluster order, triangles are scattered over the scene's face planes and vertex
+      // positions: those of a triangle a few ahead start loading now.
+      if (i + kLoadAhead < end) {
+        const std::uint32_t ahead = entries[i + kLoadAhead];
         prefetch(scene.face_plane(clusters.faces[ahead]));
         for (const std::uint32_t v : clusters.corners[ahead]) prefetch(positions[v]);
       }
