@@ -1,7 +1,6 @@
 // A height field of N x N cells under a low sun: one large open mesh whose hills shadow
 // each other, the shape of a landscape or a scanned surface rather than a field of separate
 // solids. Its height is a fixed sum of sinusoids, so every N samples the same landscape.
-#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -19,8 +18,8 @@ constexpr int kWaves = 7;
 constexpr double kBaseFrequency = 0.55, kFrequencyStep = 1.5, kGoldenAngle = 2.399963;
 constexpr double kAmplitude = 0.5;  // heights within about +-2.4
 
-// The camera looks over the field from one side; the sun, 17 degrees high, comes from the
-// other side and the right, so the hills' shadows run long towards the camera's left.
+// The camera looks over the field from one side; the sun, 17 degrees high, shines from
+// behind the camera's left, so the hills' shadows run long away from it and to the right.
 constexpr Vec3 kCamera{0, 6, 14};
 constexpr Vec3 kLookAt{0, 0, 0};
 constexpr double kFovYDeg = 50;
