@@ -302,12 +302,13 @@ std::vector<char> receiver_cullable(const ShadowFrusta& frusta,
 }
 
 // Orders \p items by how near the light their sub-objects lie, nearest first, keeping each
-// sub-object's together. The bins keep this order in every tile, and a near caster's volume
-// holds more of what lies behind it: the pixels it settles (CountingTile::settled) spare
-// the volumes that come after it most of their tests.
-void order_from_light(std::vector<const ScreenPolygon*>& items,
-                      const std::vector<ShadowPolygon>& polygons, const SubObjects& parts,
-                      const Light& light) {
+// sub-object's together; returns the sub-object of each, in the new order. The bins keep this
+// order in every tile, and a near caster's volume holds more of what lies behind it: the
+// pixels it settles (CountingTile::settled) spare the volumes that come after it most of
+// their tests.
+std::vector<std::uint32_t> order_from_light(std::vector<const ScreenPolygon*>& items,
+                                            const std::vector<ShadowPolygon>& polygons,
+                                            const SubObjects& parts, const Light& light) {
   std::vector<double> near(parts.size());
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const Vec3 c = parts.bounds[k].center();
@@ -316,15 +317,21 @@ void order_from_light(std::vector<const ScreenPolygon*>& items,
   }
   // Sorted with their keys beside them (a key looked up per comparison misses the cache),
   // ties in their order.
+  std::vector<std::uint32_t> item_parts(items.size());
   std::vector<std::pair<double, std::uint32_t>> order(items.size());
   tbb::parallel_for(std::size_t(0), items.size(), [&](std::size_t i) {
-    order[i] = {near[polygons[items[i]->face].sub_object], std::uint32_t(i)};
+    item_parts[i] = polygons[items[i]->face].sub_object;
+    order[i] = {near[item_parts[i]], std::uint32_t(i)};
   });
   tbb::parallel_sort(order.begin(), order.end());
   std::vector<const ScreenPolygon*> sorted(items.size());
-  tbb::parallel_for(std::size_t(0), items.size(),
-                    [&](std::size_t i) { sorted[i] = items[order[i].second]; });
+  std::vector<std::uint32_t> sorted_parts(items.size());
+  tbb::parallel_for(std::size_t(0), items.size(), [&](std::size_t i) {
+    sorted[i] = items[order[i].second];
+    sorted_parts[i] = item_parts[order[i].second];
+  });
   items.swap(sorted);
+  return sorted_parts;
 }
 
 // One tile's counting: its binned items, which come grouped by sub-object, one sub-object
@@ -408,13 +415,10 @@ StencilStats count_shadow_polygons(const std::vector<ShadowPolygon>& polygons,
   for (std::uint32_t k = 0; k < frusta.size(); ++k) {
     if (volumes.binned_by_hull(k)) items.push_back(&volumes.hull(k));
   }
-  order_from_light(items, polygons, parts, light);
+  const std::vector<std::uint32_t> item_parts = order_from_light(items, polygons, parts, light);
   const PolygonBins bins(items, cam.width, cam.height);
   std::atomic<std::size_t> fill = 0, negative = 0, culled = 0, shadowed = 0;
 
-  std::vector<std::uint32_t> item_parts(items.size());
-  tbb::parallel_for(std::size_t(0), items.size(),
-                    [&](std::size_t i) { item_parts[i] = polygons[items[i]->face].sub_object; });
   const TilePass pass{polygons, frusta, cullable, volumes, counter, screen, items, item_parts};
   // One task per tile: the cost is in the tiles of the cube cluster, a few contiguous rows,
   // and larger chunks left one core with the last of them in some runs (shade time 26-29 ms
