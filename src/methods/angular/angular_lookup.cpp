@@ -27,37 +27,69 @@ bool within_off_face_rounding(const HiddenFace& h, const LookupQuery& query) {
   return beyond / length(h.plane.a) <= query.own_face->outside(query.local) + query.depth_tolerance;
 }
 
-// Sec. 7's lookup in list \p k of \p lists (an entry of the table, or a block of entries).
+// The column where the run from the queried point leaves the exact shadow of occluding face
+// \p i, which blocks the point (the next column where it does not by the tolerance).
+double exact_end(const AngularTable& table, const LightFrame& frame, const ScanLineRun& run,
+                 const LookupQuery& query, std::uint32_t i) {
+  return exact_shadow_end(table, frame, run, query, i).value_or(query.column + 1);
+}
+
+// The unwrapped entry whose centre lies on the other side of the queried point's theta from
+// the centre of its own, unwrapped entry \p k.
+int entry_beside(const ThetaQuantization& q, const LightFrame& frame, const LookupQuery& query,
+                 int k) {
+  double past_centre = frame.angular_local(query.local).theta - q.centre(k);
+  if (frame.point_light()) past_centre = std::remainder(past_centre, 2 * std::numbers::pi);
+  return past_centre < 0 ? k - 1 : k + 1;
+}
+
+// Sec. 7's lookup in list \p k of \p lists (an entry of the table, or a block of entries);
+// with \p sheet_frame, its shadows checked on their far sheets (lookup_on_sheets).
 LookupResult lookup_in(const AngularTable& table, const PairLists& lists, int k,
-                       const ScanLineRun& run, const LookupQuery& query) {
+                       const ScanLineRun& run, const LookupQuery& query,
+                       const LightFrame* sheet_frame = nullptr) {
   const double phi = query.phi;
   const bool up = query.phi_increasing;
   double next_x = std::numeric_limits<double>::infinity();
+  bool refuted = false;
   // The nearest pair boundary ahead along the run.
   double next_phi = up ? next_x : -next_x;
   const auto ahead = [&](double boundary) {
     next_phi = up ? std::min(next_phi, boundary) : std::max(next_phi, boundary);
   };
-  // One pair holding phi: true when it shadows the point, with next_x where that may end.
-  const auto shadows = [&](const AngularPair& pair) {
+  // One pair holding phi: the occluding face that shadows the point through it, if any,
+  // with next_x where that may end.
+  const auto shadows = [&](const AngularPair& pair) -> std::optional<std::uint32_t> {
     // Sec. 5: the pair is one hidden face's cut, so its depth is the face's plane.
     const HiddenFace& h = table.hidden(pair.hidden);
-    if (h.face == query.face) return false;  // a planar face never shadows itself
+    if (h.face == query.face) return std::nullopt;  // a planar face never shadows itself
     if (h.behind(query.local, query.depth_tolerance) &&
         (!query.cull_faces_behind ||
          table.reaches_front_of(pair.hidden, query.face_plane, query.face_light_side,
                                 query.depth_tolerance)) &&
         !within_off_face_rounding(h, query)) {
+      if (sheet_frame && !table.blocks(pair.hidden, query.local, sheet_frame->point_light(),
+                                       query.depth_tolerance)) {
+        const std::optional<std::uint32_t> face =
+            blocker_on_sheet(table, *sheet_frame, query, pair.hidden);
+        if (face) {
+          next_x = exact_end(table, *sheet_frame, run, query, *face);
+          return face;
+        }
+        refuted = true;  // nor is the answer taken past this pixel
+        next_x = std::min(next_x, query.column + 1);
+        return std::nullopt;
+      }
       const double end = run.phi_crossing(up ? pair.phi_end : pair.phi_begin, query.column);
       next_x = std::min(end, run.crossing(h.plane, query.column));
-      return true;
+      return pair.hidden;
     }
     // The run may pass behind this face in the pair, where it gets beyond the plane by the
     // tolerance: a point within the tolerance, not behind yet, may have passed the plane.
     const FrameAffine behind_by_tolerance{h.plane.a,
                                           h.plane.b + h.light_side * query.depth_tolerance};
     next_x = std::min(next_x, run.crossing(behind_by_tolerance, query.column));
-    return false;
+    return std::nullopt;
   };
   // Shadow is a logical OR: the first pair that shadows the point answers (Sec. 7).
   for (const AngularPair& pair : lists.wide(k)) {
@@ -65,7 +97,9 @@ LookupResult lookup_in(const AngularTable& table, const PairLists& lists, int k,
       if (up == (pair.phi_begin > phi)) ahead(up ? pair.phi_begin : pair.phi_end);
       continue;
     }
-    if (shadows(pair)) return {true, next_x, 1, pair.hidden};
+    if (const std::optional<std::uint32_t> face = shadows(pair)) {
+      return {true, next_x, 1, *face, refuted};
+    }
   }
   const auto [before, narrow] = lists.narrow_from(k, phi);
   if (!up && before) ahead(before->reach);  // the narrow pairs skipped all end before phi
@@ -78,10 +112,12 @@ LookupResult lookup_in(const AngularTable& table, const PairLists& lists, int k,
       if (!up) ahead(pair.phi_end);
       continue;
     }
-    if (shadows(pair)) return {true, next_x, 1, pair.hidden};
+    if (const std::optional<std::uint32_t> face = shadows(pair)) {
+      return {true, next_x, 1, *face, refuted};
+    }
   }
   if (std::isfinite(next_phi)) next_x = std::min(next_x, run.phi_crossing(next_phi, query.column));
-  return {false, next_x};
+  return {false, next_x, 1, 0, refuted};
 }
 
 }  // namespace
@@ -119,6 +155,36 @@ std::optional<double> exact_shadow_end(const AngularTable& table, const LightFra
   return end;
 }
 
+std::optional<std::uint32_t> blocker_on_sheet(const AngularTable& table, const LightFrame& frame,
+                                              const LookupQuery& query, std::uint32_t hidden) {
+  std::uint32_t f = hidden;
+  for (int step = 0; step < kSheetSteps && f != kNoFace; ++step) {
+    const std::span<const Vec3> corners = table.corners(f);
+    const std::size_t n = corners.size();
+    Vec3 centroid{};
+    for (const Vec3& c : corners) centroid = centroid + c;
+    centroid = centroid * (1.0 / double(n));
+    // The side whose ray plane the point lies farthest outside of, seen from the face's
+    // centroid.
+    double farthest = 0;
+    std::size_t exit = n;
+    for (std::size_t j = 0; j < n; ++j) {
+      const FrameAffine sweep = frame.ray_plane(corners[j], corners[(j + 1) % n]);
+      const double out = -sweep.at(query.local) * (sweep.at(centroid) > 0 ? 1 : -1);
+      if (out > farthest * length(sweep.a)) {
+        farthest = out / length(sweep.a);
+        exit = j;
+      }
+    }
+    if (exit == n) {
+      if (table.blocks(f, query.local, frame.point_light(), query.depth_tolerance)) return f;
+      return std::nullopt;
+    }
+    f = table.across(f)[exit];
+  }
+  return std::nullopt;
+}
+
 bool grazed(const LookupQuery& query, bool point_light) {
   const FrameAffine& plane = query.face_plane;
   // Point light: the distance from the light (the origin) to the plane over the distance to
@@ -127,58 +193,31 @@ bool grazed(const LookupQuery& query, bool point_light) {
   return sine < kGrazingSine * length(plane.a);
 }
 
-LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
-                            const ScanLineRun& run, const LookupQuery& query, int k) {
-  const LookupResult own = lookup(table, run, query);
-  const bool point_light = frame.point_light();
+LookupResult lookup_on_sheets(const AngularTable& table, const LightFrame& frame,
+                              const ScanLineRun& run, const LookupQuery& query, int k,
+                              bool on_grazed_face) {
   // The point lies in face i's exact shadow, and so does the run until it leaves it: on a
   // grazed face a pair's end, cut at its entry's centre, may lie pixels away from the edge.
   const auto exact = [&](std::uint32_t i, int lookups) -> LookupResult {
-    const std::optional<double> end = exact_shadow_end(table, frame, run, query, i);
-    return {true, end ? *end : query.column + 1, lookups, i};
+    return {true, exact_end(table, frame, run, query, i), lookups, i};
   };
-  if (own.shadowed && table.blocks(own.hidden, query.local, point_light, query.depth_tolerance)) {
-    return exact(own.hidden, 1);
-  }
+  const LookupResult own = lookup_in(table, table.entries(), query.entry, run, query, &frame);
+  if (own.shadowed) return on_grazed_face ? exact(own.hidden, 1) : own;
+  if (!on_grazed_face && !own.refuted) return own;
+  // The face that shadows the point, if one does, may cross the slice on the other side of
+  // its theta instead.
   const ThetaQuantization& q = table.theta();
-  const double centre = q.centre(k);
-  double past_centre = frame.angular_local(query.local).theta - centre;
-  if (point_light) past_centre = std::remainder(past_centre, 2 * std::numbers::pi);
-  const int other = past_centre < 0 ? k - 1 : k + 1;
   LookupQuery across = query;
-  across.entry = q.entry(other);
-  const LookupResult beside = lookup(table, run, across);
-  if (beside.shadowed &&
-      table.blocks(beside.hidden, query.local, point_light, query.depth_tolerance)) {
-    return exact(beside.hidden, 2);
-  }
-  if (!own.shadowed && !beside.shadowed) {
-    // Both lit: that holds while both answers do and the point stays on this side of the
-    // entry's centre.
-    return {false,
-            std::min(
-                {own.next_x, beside.next_x, run.crossing(frame.theta_plane(centre), query.column)}),
-            2};
-  }
-  const auto blocks = [&](std::uint32_t i) {
-    return table.hidden(i).face != query.face &&
-           table.blocks(i, query.local, point_light, query.depth_tolerance) &&
-           table.reaches_front_of(i, query.face_plane, query.face_light_side,
-                                  query.depth_tolerance);
-  };
-  for (const int near : {q.entry(k), q.entry(other)}) {
-    for (const AngularPair& pair : table.entry(near)) {
-      if (blocks(pair.hidden)) return exact(pair.hidden, 2);
-    }
-    for (const std::uint32_t i : table.covered(near)) {
-      if (blocks(i)) return exact(i, 2);
-    }
-  }
-  // A face thinner than the gap between the two slices crosses neither.
-  for (const std::uint32_t i : table.between(std::min(k, other))) {
-    if (blocks(i)) return exact(i, 2);
-  }
-  return {false, query.column + 1, 2};
+  across.entry = q.entry(entry_beside(q, frame, query, k));
+  const LookupResult beside = lookup_in(table, table.entries(), across.entry, run, across, &frame);
+  if (beside.shadowed) return exact(beside.hidden, 2);
+  if (own.refuted || beside.refuted) return {false, query.column + 1, 2};
+  // Both lit: that holds while both answers do and the point stays on this side of the
+  // entry's centre.
+  return {false,
+          std::min({own.next_x, beside.next_x,
+                    run.crossing(frame.theta_plane(q.centre(k)), query.column)}),
+          2};
 }
 
 }  // namespace shadowkit::angular

@@ -15,6 +15,7 @@ struct LookupResult {
   double next_x = 0;
   int lookups = 1;           ///< entries scanned for it
   std::uint32_t hidden = 0;  ///< when shadowed by a pair: its hidden face
+  bool refuted = false;      ///< a pair's shadow did not hold on its sheet (lookup_on_sheets)
 };
 
 /// \brief What a lookup needs to know about the queried visible point.
@@ -61,6 +62,15 @@ std::optional<double> exact_shadow_end(const AngularTable& table, const LightFra
                                        const ScanLineRun& run, const LookupQuery& query,
                                        std::uint32_t hidden);
 
+/// The occluding face that blocks the queried point exactly, found on the far sheet of face
+/// \p hidden by walking from it across hidden edges towards the point's ray, at most
+/// kSheetSteps faces: a pair cut at its entry's centre theta names a face beside the one
+/// whose shadow the point lies in. nullopt where the walk leaves the sheet across a ridge
+/// edge, meets the ray in front of the point, or runs out of steps.
+std::optional<std::uint32_t> blocker_on_sheet(const AngularTable& table, const LightFrame& frame,
+                                              const LookupQuery& query, std::uint32_t hidden);
+inline constexpr int kSheetSteps = 16;
+
 /// Whether the light grazes the queried point's face: the light's rays meet its plane there
 /// at a sine below kGrazingSine. An angular error of the table (a pair cut at its entry's
 /// centre theta answers for the whole entry) moves a shadow's edge on such a face by that
@@ -69,13 +79,20 @@ std::optional<double> exact_shadow_end(const AngularTable& table, const LightFra
 bool grazed(const LookupQuery& query, bool point_light);
 inline constexpr double kGrazingSine = 0.07;
 
-/// The query on a grazed face: lookup's answer where it is shadow by a face that blocks the
-/// point exactly (AngularTable::blocks). Otherwise the entry whose centre lies on the other
-/// side of the point's theta (\p k: its unwrapped entry) answers too; where the two differ,
-/// the point lies near a shadow's edge between the two slices, and the faces of both
-/// entries' pairs are tested exactly, for this pixel alone. A face that holds the point and
-/// spans its theta crosses one of the two slices unless it lies wholly between them.
-LookupResult lookup_grazing(const AngularTable& table, const LightFrame& frame,
-                            const ScanLineRun& run, const LookupQuery& query, int k);
+/// lookup, with every shadow it finds checked on its far sheet (angular.exact): a pair's face
+/// that does not block the point exactly shadows it only through the face of its sheet that
+/// does (blocker_on_sheet), and then as long as the point stays in that face's exact shadow.
+/// A pair cut at its entry's centre reaches up to half an entry past its face: on a finely
+/// tessellated surface, past the terminators that run across its lit slopes.
+/// Where no pair's shadow holds on its sheet, and always on a grazed face
+/// (\p on_grazed_face), the entry whose centre lies on the other side of the point's theta
+/// (\p k: the point's unwrapped entry) answers too, checked the same way: a sheet that shadows
+/// the point is cut near it by one of the two slices unless it lies wholly between them, and
+/// on a grazed face the table's error moves a shadow's edge by pixels. A shadow from either
+/// holds while the point stays in the face's exact shadow; a lit answer after a shadow that
+/// did not hold, for this pixel alone.
+LookupResult lookup_on_sheets(const AngularTable& table, const LightFrame& frame,
+                              const ScanLineRun& run, const LookupQuery& query, int k,
+                              bool on_grazed_face);
 
 }  // namespace shadowkit::angular

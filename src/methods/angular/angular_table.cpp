@@ -380,19 +380,32 @@ struct Occluders {
   std::vector<HiddenFace> hidden;
   std::vector<std::uint32_t> corner_start;
   std::vector<Vec3> corners;
+  std::vector<std::uint32_t> across;
 };
 
-// Object o's occluding faces' corners in the light frame, from hidden id \p id and corner
-// \p corner on (ids go by object, then by face, as place_hidden_faces assigns them).
+// Object o's occluding faces' corners in the light frame, and their sheet neighbours across
+// each side, from hidden id \p id and corner \p corner on (ids go by object, then by face,
+// as place_hidden_faces assigns them).
 void place_corners(const Mesh& mesh, const FarSheets& sheets, const ObjectLoops& loops,
                    std::uint32_t id, std::uint32_t corner, Occluders& out) {
+  const std::uint32_t first_id = id, first_corner = corner;
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
     if (!sheets.occludes(f)) continue;
-    for (std::uint32_t k = 0; k < mesh.face_size(f); ++k) {
-      out.corners[corner++] = loops.local[mesh.face_vertex(f, k)];
-    }
+    corner += mesh.face_size(f);
     out.corner_start[++id] = corner;
   }
+  // The object's first start is the previous object's end, which its own task writes.
+  parallel_each(std::uint32_t(mesh.face_count()), [&](std::uint32_t f) {
+    if (!sheets.occludes(f)) return;
+    const std::uint32_t i = loops.hidden_id[f];
+    std::uint32_t c = i == first_id ? first_corner : out.corner_start[i];
+    for (std::uint32_t k = 0; k < mesh.face_size(f); ++k, ++c) {
+      const std::int64_t next =
+          sheet_neighbour(mesh, sheets, f, mesh.corner_edge[mesh.face_start[f] + k]);
+      out.across[c] = next < 0 ? kNoFace : loops.hidden_id[std::size_t(next)];
+      out.corners[c] = loops.local[mesh.face_vertex(f, k)];
+    }
+  });
 }
 
 // Also numbers each object's occluding faces and marks the axis faces.
@@ -415,6 +428,7 @@ Occluders place_occluders(const Scene& scene, const std::vector<FarSheets>& shee
   out.hidden.resize(first_hidden.back());
   out.corner_start.assign(first_hidden.back() + 1, 0);
   out.corners.resize(first_corner.back());
+  out.across.resize(first_corner.back());
   tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
     place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], out.hidden);
     place_corners(scene.objects[o].mesh, sheets[o], objects[o], first_hidden[o], first_corner[o],
@@ -485,6 +499,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
   table.hidden_ = std::move(occluders.hidden);
   table.corner_start_ = std::move(occluders.corner_start);
   table.corners_ = std::move(occluders.corners);
+  table.across_ = std::move(occluders.across);
   table.theta_ = quantize(scene, frame, objects, view, view_scale, options);
   for (const ObjectLoops& o : objects) {
     table.loop_stats_.ridge_edges += double(o.ridges.size());
@@ -509,7 +524,6 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
     for (const std::uint32_t f : objects[o].axis_faces) work.push_back({-kInf, o, ~f});
   }
   const EntryRays rays(table.theta_, frame.point_light());
-  table.fill_between(rays, frame.point_light());
   std::vector<ThetaSlice> slices(table.theta_.resolution);
   tbb::parallel_invoke(
       [&] {
@@ -617,81 +631,30 @@ std::uint32_t AngularTable::sort_entry(int k, Saturation* saturation, SortScratc
                                      entries_.pairs.data() + entries_.start[k + 1]);
   if (entry.empty()) return 0;
   const std::span<const AngularPair> sorted = scratch.sort(entry);  // step 1.7
-  std::vector<std::uint32_t>& covered = scratch.covered;
-  covered.clear();
   // Sec. 10 drops only pairs within a kept one, and never the first: the kept pairs have the
   // extent of all.
   const auto [kept, wide] = split_wide(sorted, entry, scratch.pairs, [&](const AngularPair& pair) {
     if (!saturation) return true;
-    if (saturation->covers(pair)) {
-      covered.push_back(pair.hidden);
-      return false;
-    }
+    if (saturation->covers(pair)) return false;
     saturation->keep(pair);
     return true;
   });
   entries_.wide_count[k] = wide;
-  // The covered pairs' faces go in the slots after the kept pairs, for compact.
-  for (std::size_t i = 0; i < covered.size(); ++i) entry[kept + i].hidden = covered[i];
   return kept;
 }
 
 std::vector<AngularPair> AngularTable::compact(const std::vector<std::uint32_t>& kept,
                                                std::vector<AngularPair> pairs) {
   std::vector<std::uint32_t> start(kept.size() + 1, 0);
-  covered_start_.assign(kept.size() + 1, 0);
-  for (std::size_t k = 0; k < kept.size(); ++k) {
-    start[k + 1] = start[k] + kept[k];
-    covered_start_[k + 1] =
-        covered_start_[k] + (entries_.start[k + 1] - entries_.start[k] - kept[k]);
-  }
+  for (std::size_t k = 0; k < kept.size(); ++k) start[k + 1] = start[k] + kept[k];
   pairs.resize(start.back());
-  covered_.resize(covered_start_.back());
   tbb::parallel_for(std::size_t(0), kept.size(), [&](std::size_t k) {
     std::copy_n(entries_.pairs.begin() + entries_.start[k], kept[k], pairs.begin() + start[k]);
-    for (std::uint32_t i = covered_start_[k]; i < covered_start_[k + 1]; ++i) {
-      covered_[i] = entries_.pairs[entries_.start[k] + kept[k] + (i - covered_start_[k])].hidden;
-    }
   });
   saturated_ = entries_.pairs.size() - pairs.size();
   std::swap(entries_.pairs, pairs);
   entries_.start = std::move(start);
   return pairs;
-}
-
-void AngularTable::fill_between(const EntryRays& rays, bool point_light) {
-  const int r = theta_.resolution;
-  const std::size_t slots = std::size_t(theta_.full_turn ? r : r + 1);
-  std::vector<int> slot(hidden_.size(), -1);
-  // How far past the centre of unwrapped entry k corner v lies: a sine's sign for a point
-  // light (within half a turn of it), theta's difference for a directional one.
-  const auto past = [&](Vec3 v, int k) {
-    const auto [u, w] = rays.centre(theta_.entry(k));
-    return point_light ? v.y * w - v.z * u : v.y - u;
-  };
-  parallel_each(hidden_.size(), [&](std::size_t i) {
-    const std::span<const Vec3> c = corners(std::uint32_t(i));
-    if (c.empty() || (point_light && c[0].y == 0 && c[0].z == 0)) return;
-    // The gap of the first corner (one arctangent per face), then every corner strictly
-    // within it: the face then lies within it too, a wedge of less than half a turn.
-    const double theta = point_light ? std::atan2(c[0].y, c[0].z) : c[0].y;
-    const int g = int(std::clamp(std::floor(theta_.position(theta) - 0.5), -1.0, double(r - 1)));
-    const bool below = theta_.full_turn || g >= 0, above = theta_.full_turn || g + 1 < r;
-    for (const Vec3& v : c) {
-      if ((below && !(past(v, g) > 0)) || (above && !(past(v, g + 1) < 0))) return;
-    }
-    slot[i] = gap_slot(g);
-  });
-  between_start_.assign(slots + 1, 0);
-  for (const int s : slot) {
-    if (s >= 0) ++between_start_[std::size_t(s) + 1];
-  }
-  for (std::size_t s = 0; s < slots; ++s) between_start_[s + 1] += between_start_[s];
-  between_.resize(between_start_.back());
-  std::vector<std::uint32_t> next(between_start_.begin(), between_start_.end() - 1);
-  for (std::uint32_t i = 0; i < slot.size(); ++i) {
-    if (slot[i] >= 0) between_[next[std::size_t(slot[i])]++] = i;
-  }
 }
 
 void AngularTable::fill_blocks() {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <utility>
 #include <vector>
@@ -149,6 +150,9 @@ struct PairLists {
   }
 };
 
+/// No occluding face (AngularTable::across).
+inline constexpr std::uint32_t kNoFace = std::numeric_limits<std::uint32_t>::max();
+
 /// Entries per block of AngularTable::blocks().
 inline constexpr int kBlockEntries = 16;
 
@@ -184,6 +188,7 @@ class AngularTable {
   std::span<const AngularPair> wide(int k) const { return entries_.wide(k); }
   std::span<const AngularPair> narrow(int k) const { return entries_.narrow(k); }
   const HiddenFace& hidden(std::uint32_t i) const { return hidden_[i]; }
+  std::size_t hidden_count() const { return hidden_.size(); }
   /// Occluding face \p i has a corner strictly on the light's side of \p receiver (a
   /// receiving face's plane, \p light_side its sign at the light), by more than
   /// \p tolerance. The segment from a point on a face's lit side to the light lies on that
@@ -201,6 +206,11 @@ class AngularTable {
   std::span<const Vec3> corners(std::uint32_t i) const {
     return {corners_.data() + corner_start_[i], corners_.data() + corner_start_[i + 1]};
   }
+  /// Per corner of occluding face \p i, the occluding face whose far sheet continues i's
+  /// across the edge from that corner to the next (a hidden edge), or kNoFace.
+  std::span<const std::uint32_t> across(std::uint32_t i) const {
+    return {across_.data() + corner_start_[i], across_.data() + corner_start_[i + 1]};
+  }
   /// The ray from the light to \p p (towards the light from \p p, for a directional light)
   /// passes through occluding face \p i before \p p, by more than \p tolerance.
   bool blocks(std::uint32_t i, Vec3 p, bool point_light, double tolerance) const;
@@ -211,37 +221,18 @@ class AngularTable {
   const PairingCounts& pairing() const { return pairing_; }
   /// Pairs dropped by saturation (Sec. 10).
   std::size_t saturated_count() const { return saturated_; }
-  /// The occluding faces of the pairs saturation dropped from entry \p k (none for k = -1).
-  /// A lookup needs none of them, but off the entry's centre such a face may block a point
-  /// that its covering pair's face does not: the exact test near a shadow's edge
-  /// (lookup_grazing) takes them as candidates too.
-  std::span<const std::uint32_t> covered(int k) const {
-    if (k < 0) return {};
-    return {covered_.data() + covered_start_[k], covered_.data() + covered_start_[k + 1]};
-  }
-  /// \brief The occluding faces whose theta lies wholly between the centres of unwrapped
-  /// entries \p g and g + 1, so that no pair of the table holds them: the exact test near a
-  /// shadow's edge on a grazed face (lookup_grazing), between the two slices around a point,
-  /// takes them as candidates too. g = -1 and g = R - 1 are the gaps below the first centre
-  /// and above the last (the same gap when the table goes all around the light).
-  std::span<const std::uint32_t> between(int g) const {
-    const int slot = gap_slot(g);
-    return {between_.data() + between_start_[slot], between_.data() + between_start_[slot + 1]};
-  }
   std::size_t memory_bytes() const {
     return entries_.memory_bytes() + blocks_.memory_bytes() +
-           (between_start_.capacity() + between_.capacity()) * sizeof(std::uint32_t) +
            hidden_.capacity() * sizeof(HiddenFace) +
-           corner_start_.capacity() * sizeof(std::uint32_t) + corners_.capacity() * sizeof(Vec3) +
-           (covered_start_.capacity() + covered_.capacity()) * sizeof(std::uint32_t);
+           (corner_start_.capacity() + across_.capacity()) * sizeof(std::uint32_t) +
+           corners_.capacity() * sizeof(Vec3);
   }
 
  private:
   void fill_entries(std::span<const std::vector<EntryPair>> lists);
   struct SortScratch {
     PhiBeginSort sort;
-    std::vector<AngularPair> pairs;      // the entry's kept wide pairs in order
-    std::vector<std::uint32_t> covered;  // the hidden faces of the pairs saturation drops
+    std::vector<AngularPair> pairs;  // the entry's kept wide pairs in order
   };
   // Sorts entry k and, given its saturation test, saturates it; returns the pairs kept at
   // its front.
@@ -252,23 +243,14 @@ class AngularTable {
                                    std::vector<AngularPair> storage);
   // The blocks from the kept pairs of the entries.
   void fill_blocks();
-  // The occluding faces between consecutive entries' centres (between()).
-  void fill_between(const EntryRays& rays, bool point_light);
-  int gap_slot(int g) const {
-    const int r = theta_.resolution;
-    return theta_.full_turn ? ((g % r) + r) % r : std::clamp(g, -1, r - 1) + 1;
-  }
 
   ThetaQuantization theta_;
   PairLists entries_;
   PairLists blocks_;
   std::vector<HiddenFace> hidden_;
-  std::vector<std::uint32_t> corner_start_;   ///< per hidden face, into corners_
-  std::vector<Vec3> corners_;                 ///< hidden faces' corners, light frame
-  std::vector<std::uint32_t> covered_start_;  ///< R + 1 offsets into covered_
-  std::vector<std::uint32_t> covered_;        ///< per entry, saturated pairs' hidden faces
-  std::vector<std::uint32_t> between_start_;  ///< per gap between centres, into between_
-  std::vector<std::uint32_t> between_;        ///< per gap, the hidden faces wholly within it
+  std::vector<std::uint32_t> corner_start_;  ///< per hidden face, into corners_
+  std::vector<Vec3> corners_;                ///< hidden faces' corners, light frame
+  std::vector<std::uint32_t> across_;        ///< per corner, the sheet's face across its edge
   std::size_t saturated_ = 0;
   RidgeEdgeStats loop_stats_;
   PairingCounts pairing_;
