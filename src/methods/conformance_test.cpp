@@ -134,8 +134,9 @@ const std::vector<SceneEntry>& scene_catalog() {
     }
     // The smallest failing scenes of scripts/mismatch_sweep.py.
     for (const char* file :
-         {"angular-coarse-torus-self-shadow.json", "angular-eye-inside-box.json",
-          "angular-fins-around-a-light-full-turn.json", "angular-grazing-light-far-shadow.json",
+         {"angular-coarse-torus-self-shadow.json", "angular-crease-grazed-by-a-light.json",
+          "angular-eye-inside-box.json", "angular-fins-around-a-light-full-turn.json",
+          "angular-grazing-light-far-shadow.json",
           "angular-knot-shadow-under-a-light-on-the-ground.json",
           "angular-light-axis-along-box-top.json", "angular-light-in-the-plane-of-box-bottoms.json",
           "angular-light-inside-touching-boxes.json", "angular-low-sun-along-a-torus.json",
@@ -413,6 +414,8 @@ const SceneTolerances kTolerances[] = {
     {"three-lights.json",                           1.0,    kExact, kExact, kAngular, kVoxelBand},
     // -- examples/sweep/
     {"sweep/angular-coarse-torus-self-shadow.json", 0,      kExact, kExact, kAngular, kVoxelBand},
+    // A point light grazing the open box's faces: shadowmap's acne there, 0.80%.
+    {"sweep/angular-crease-grazed-by-a-light.json", 1.0,    kExact, kExact, kAngular, kVoxelBand},
     {"sweep/angular-eye-inside-box.json",           0,      kExact, kExact, kAngular, kVoxelBand},
     // Two fins around a point light: shadowmap's cube map differs on 1.7% of the interior.
     {"sweep/angular-fins-around-a-light-full-turn.json",

@@ -43,6 +43,29 @@ int entry_beside(const ThetaQuantization& q, const LightFrame& frame, const Look
   return past_centre < 0 ? k - 1 : k + 1;
 }
 
+// On a grazed face, a neighbour across a concave edge casts a sliver of shadow thinner than
+// an entry, which no pair of the entries around a point may hold: the occluding face across a
+// side of the point's own face that blocks it.
+std::optional<std::uint32_t> neighbour_blocking(const AngularTable& table, bool point_light,
+                                                const LookupQuery& query) {
+  if (!query.own_face) return std::nullopt;
+  const Mesh& mesh = *query.own_face->mesh;
+  const std::uint32_t own = query.own_face->face, first_face = query.face - own;
+  for (std::uint32_t c = mesh.face_start[own]; c < mesh.face_start[own + 1]; ++c) {
+    const MeshEdge& edge = mesh.edges[mesh.corner_edge[c]];
+    for (std::uint32_t u = edge.first_use; u < edge.first_use + edge.use_count; ++u) {
+      const std::uint32_t i = table.hidden_of(first_face + mesh.edge_uses[u].face);
+      if (i != kNoFace && table.hidden(i).face != query.face &&
+          table.blocks(i, query.local, point_light, query.depth_tolerance) &&
+          table.reaches_front_of(i, query.face_plane, query.face_light_side,
+                                 query.depth_tolerance)) {
+        return i;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 // Sec. 7's lookup in list \p k of \p lists (an entry of the table, or a block of entries);
 // with \p sheet_frame, its shadows checked on their far sheets (lookup_on_sheets).
 LookupResult lookup_in(const AngularTable& table, const PairLists& lists, int k,
@@ -157,7 +180,7 @@ std::optional<double> exact_shadow_end(const AngularTable& table, const LightFra
 
 std::optional<std::uint32_t> blocker_on_sheet(const AngularTable& table, const LightFrame& frame,
                                               const LookupQuery& query, std::uint32_t hidden) {
-  std::uint32_t f = hidden;
+  std::uint32_t f = hidden, previous = kNoFace;
   for (int step = 0; step < kSheetSteps && f != kNoFace; ++step) {
     const std::span<const Vec3> corners = table.corners(f);
     const std::size_t n = corners.size();
@@ -180,7 +203,10 @@ std::optional<std::uint32_t> blocker_on_sheet(const AngularTable& table, const L
       if (table.blocks(f, query.local, frame.point_light(), query.depth_tolerance)) return f;
       return std::nullopt;
     }
-    f = table.across(f)[exit];
+    const std::uint32_t next = table.across(f)[exit];
+    if (next == previous) return std::nullopt;
+    previous = f;
+    f = next;
   }
   return std::nullopt;
 }
@@ -211,6 +237,9 @@ LookupResult lookup_on_sheets(const AngularTable& table, const LightFrame& frame
   across.entry = q.entry(entry_beside(q, frame, query, k));
   const LookupResult beside = lookup_in(table, table.entries(), across.entry, run, across, &frame);
   if (beside.shadowed) return exact(beside.hidden, 2);
+  if (on_grazed_face) {
+    if (const auto i = neighbour_blocking(table, frame.point_light(), query)) return exact(*i, 2);
+  }
   if (own.refuted || beside.refuted) return {false, query.column + 1, 2};
   // Both lit: that holds while both answers do and the point stays on this side of the
   // entry's centre.

@@ -140,15 +140,17 @@ bool straddles_negative_axis(std::span<const Vec3> local) {
 }
 
 // The occluding faces' planes (the depth of Sec. 5) from \p first on, in parallel over one
-// object's faces.
+// object's faces, and every face's hidden id in \p of_face (kNoFace where it occludes not).
 void place_hidden_faces(const Scene& scene, std::size_t o, const FarSheets& sheets,
                         const LightFrame& frame, std::uint32_t first, ObjectLoops& loops,
-                        std::vector<HiddenFace>& hidden) {
+                        std::vector<HiddenFace>& hidden, std::vector<std::uint32_t>& of_face) {
   const SceneObject& object = scene.objects[o];
   const Mesh& mesh = object.mesh;
   loops.hidden_id.assign(mesh.face_count(), 0);
   for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
-    if (sheets.occludes(f)) loops.hidden_id[f] = first++;
+    const bool occludes = sheets.occludes(f);
+    of_face[object.first_face + f] = occludes ? first : kNoFace;
+    if (occludes) loops.hidden_id[f] = first++;
   }
   const bool may_pierce = frame.point_light() && straddles_negative_axis(loops.local);
   std::vector<char> pierced(may_pierce ? mesh.face_count() : 0, 0);
@@ -378,10 +380,21 @@ namespace {
 // The occluding faces in hidden-id order: their planes (the depth of Sec. 5) and corners.
 struct Occluders {
   std::vector<HiddenFace> hidden;
+  std::vector<std::uint32_t> of_face;  // per global face, its hidden id or kNoFace
   std::vector<std::uint32_t> corner_start;
   std::vector<Vec3> corners;
   std::vector<std::uint32_t> across;
 };
+
+// The occluding face across manifold edge \p e from face \p f, or -1.
+std::int64_t occluding_neighbour(const Mesh& mesh, const FarSheets& sheets, std::uint32_t f,
+                                 std::uint32_t e) {
+  const MeshEdge& edge = mesh.edges[e];
+  if (edge.use_count != 2) return -1;
+  const std::uint32_t a = mesh.edge_uses[edge.first_use].face;
+  const std::uint32_t other = a == f ? mesh.edge_uses[edge.first_use + 1].face : a;
+  return sheets.occludes(other) ? std::int64_t(other) : -1;
+}
 
 // Object o's occluding faces' corners in the light frame, and their sheet neighbours across
 // each side, from hidden id \p id and corner \p corner on (ids go by object, then by face,
@@ -401,7 +414,7 @@ void place_corners(const Mesh& mesh, const FarSheets& sheets, const ObjectLoops&
     std::uint32_t c = i == first_id ? first_corner : out.corner_start[i];
     for (std::uint32_t k = 0; k < mesh.face_size(f); ++k, ++c) {
       const std::int64_t next =
-          sheet_neighbour(mesh, sheets, f, mesh.corner_edge[mesh.face_start[f] + k]);
+          occluding_neighbour(mesh, sheets, f, mesh.corner_edge[mesh.face_start[f] + k]);
       out.across[c] = next < 0 ? kNoFace : loops.hidden_id[std::size_t(next)];
       out.corners[c] = loops.local[mesh.face_vertex(f, k)];
     }
@@ -426,11 +439,13 @@ Occluders place_occluders(const Scene& scene, const std::vector<FarSheets>& shee
   }
   Occluders out;
   out.hidden.resize(first_hidden.back());
+  out.of_face.resize(scene.face_count());
   out.corner_start.assign(first_hidden.back() + 1, 0);
   out.corners.resize(first_corner.back());
   out.across.resize(first_corner.back());
   tbb::parallel_for(std::size_t(0), objects.size(), [&](std::size_t o) {
-    place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], out.hidden);
+    place_hidden_faces(scene, o, sheets[o], frame, first_hidden[o], objects[o], out.hidden,
+                       out.of_face);
     place_corners(scene.objects[o].mesh, sheets[o], objects[o], first_hidden[o], first_corner[o],
                   out);
   });
@@ -497,6 +512,7 @@ AngularTable AngularTable::build(const Scene& scene, const LightFrame& frame,
         view_scale = options.eq4 ? farthest_depth(scene, frame) : entry_theta(scene, frame);
       });
   table.hidden_ = std::move(occluders.hidden);
+  table.hidden_of_face_ = std::move(occluders.of_face);
   table.corner_start_ = std::move(occluders.corner_start);
   table.corners_ = std::move(occluders.corners);
   table.across_ = std::move(occluders.across);

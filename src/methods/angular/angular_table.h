@@ -189,6 +189,8 @@ class AngularTable {
   std::span<const AngularPair> narrow(int k) const { return entries_.narrow(k); }
   const HiddenFace& hidden(std::uint32_t i) const { return hidden_[i]; }
   std::size_t hidden_count() const { return hidden_.size(); }
+  /// The occluding face of global face \p face, or kNoFace.
+  std::uint32_t hidden_of(std::uint32_t face) const { return hidden_of_face_[face]; }
   /// Occluding face \p i has a corner strictly on the light's side of \p receiver (a
   /// receiving face's plane, \p light_side its sign at the light), by more than
   /// \p tolerance. The segment from a point on a face's lit side to the light lies on that
@@ -224,7 +226,8 @@ class AngularTable {
   std::size_t memory_bytes() const {
     return entries_.memory_bytes() + blocks_.memory_bytes() +
            hidden_.capacity() * sizeof(HiddenFace) +
-           (corner_start_.capacity() + across_.capacity()) * sizeof(std::uint32_t) +
+           (hidden_of_face_.capacity() + corner_start_.capacity() + across_.capacity()) *
+               sizeof(std::uint32_t) +
            corners_.capacity() * sizeof(Vec3);
   }
 
@@ -248,9 +251,10 @@ class AngularTable {
   PairLists entries_;
   PairLists blocks_;
   std::vector<HiddenFace> hidden_;
-  std::vector<std::uint32_t> corner_start_;  ///< per hidden face, into corners_
-  std::vector<Vec3> corners_;                ///< hidden faces' corners, light frame
-  std::vector<std::uint32_t> across_;        ///< per corner, the sheet's face across its edge
+  std::vector<std::uint32_t> hidden_of_face_;  ///< per global face, its hidden id or kNoFace
+  std::vector<std::uint32_t> corner_start_;    ///< per hidden face, into corners_
+  std::vector<Vec3> corners_;                  ///< hidden faces' corners, light frame
+  std::vector<std::uint32_t> across_;          ///< per corner, the sheet's face across its edge
   std::size_t saturated_ = 0;
   RidgeEdgeStats loop_stats_;
   PairingCounts pairing_;
