@@ -63,10 +63,11 @@ std::optional<double> exact_shadow_end(const AngularTable& table, const LightFra
                                        std::uint32_t hidden);
 
 /// The occluding face that blocks the queried point exactly, found on the far sheet of face
-/// \p hidden by walking from it across hidden edges towards the point's ray, at most
+/// \p hidden by walking from it towards the point's ray, from face to occluding face across
+/// their edges (AngularTable::across: hidden edges, and folds onto the other sheet), at most
 /// kSheetSteps faces: a pair cut at its entry's centre theta names a face beside the one
-/// whose shadow the point lies in. nullopt where the walk leaves the sheet across a ridge
-/// edge, meets the ray in front of the point, or runs out of steps.
+/// whose shadow the point lies in. nullopt where the walk leaves the occluding faces, would
+/// step back, meets the ray in front of the point, or runs out of steps.
 std::optional<std::uint32_t> blocker_on_sheet(const AngularTable& table, const LightFrame& frame,
                                               const LookupQuery& query, std::uint32_t hidden);
 inline constexpr int kSheetSteps = 16;

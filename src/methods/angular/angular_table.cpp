@@ -396,8 +396,8 @@ std::int64_t occluding_neighbour(const Mesh& mesh, const FarSheets& sheets, std:
   return sheets.occludes(other) ? std::int64_t(other) : -1;
 }
 
-// Object o's occluding faces' corners in the light frame, and their sheet neighbours across
-// each side, from hidden id \p id and corner \p corner on (ids go by object, then by face,
+// Object o's occluding faces' corners in the light frame, and their occluding neighbours
+// across each side, from hidden id \p id and corner \p corner on (ids go by object, then by face,
 // as place_hidden_faces assigns them).
 void place_corners(const Mesh& mesh, const FarSheets& sheets, const ObjectLoops& loops,
                    std::uint32_t id, std::uint32_t corner, Occluders& out) {

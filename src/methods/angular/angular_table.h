@@ -208,8 +208,9 @@ class AngularTable {
   std::span<const Vec3> corners(std::uint32_t i) const {
     return {corners_.data() + corner_start_[i], corners_.data() + corner_start_[i + 1]};
   }
-  /// Per corner of occluding face \p i, the occluding face whose far sheet continues i's
-  /// across the edge from that corner to the next (a hidden edge), or kNoFace.
+  /// Per corner of occluding face \p i, the occluding face across the manifold edge from that
+  /// corner to the next: across a hidden edge the one whose far sheet continues i's, across a
+  /// fold the other sheet's; kNoFace where the edge bounds the mesh or no such face occludes.
   std::span<const std::uint32_t> across(std::uint32_t i) const {
     return {across_.data() + corner_start_[i], across_.data() + corner_start_[i + 1]};
   }
