@@ -211,12 +211,12 @@ std::optional<std::uint32_t> blocker_on_sheet(const AngularTable& table, const L
   return std::nullopt;
 }
 
-bool grazed(const LookupQuery& query, bool point_light) {
+bool grazed(const LookupQuery& query, bool point_light, double sine_below) {
   const FrameAffine& plane = query.face_plane;
   // Point light: the distance from the light (the origin) to the plane over the distance to
   // the point; directional: the light's direction is the frame's Z axis.
   const double sine = point_light ? std::abs(plane.b) / length(query.local) : std::abs(plane.a.z);
-  return sine < kGrazingSine * length(plane.a);
+  return sine < sine_below * length(plane.a);
 }
 
 LookupResult lookup_on_sheets(const AngularTable& table, const LightFrame& frame,

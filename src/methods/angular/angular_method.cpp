@@ -216,9 +216,10 @@ std::size_t AngularMethod::shade_row(const Scene& scene, const VisibleSurfaceBuf
       query.depth_tolerance = depth_tolerance_;
       query.cull_faces_behind = exact_;
       query.own_face = exact_ ? &own_face : nullptr;
-      const LookupResult result = exact_ ? lookup_on_sheets(table_, *frame_, run, query, k,
-                                                            grazed(query, frame_->point_light()))
-                                         : lookup(table_, run, query);
+      const LookupResult result =
+          exact_ ? lookup_on_sheets(table_, *frame_, run, query, k,
+                                    grazed(query, frame_->point_light(), kRecheckSine))
+                 : lookup(table_, run, query);
       lookups += std::size_t(result.lookups);
       // Steps 3-4: hold the answer until nextX or the end of the maximum run (eq. 7), or
       // further across entries.
