@@ -59,7 +59,7 @@ TEST(AngularScenes, AConvexOpenSurfaceDoesNotShadowItselfAtCoarseTheta) {
 // most of its lit slopes, and a pair cut at its entry's centre reaches up to half an entry
 // past them. Taken as the table gives them, those pairs leave 0.19% of the interior in
 // shadow; the walk on each pair's far sheet finds that no face near its own blocks those
-// points (0.014%).
+// points (0.001%).
 TEST(AngularScenes, PairsReachingPastATerrainsTerminatorsDoNotShadowItsLitSlopes) {
   const Scene scene = testing::resized(load_scene("terrain:300", {}), 960, 540);
   EXPECT_LT(worst_interior_mismatch(scene), 0.05);
