@@ -14,7 +14,7 @@ struct LookupResult {
   bool shadowed = false;
   double next_x = 0;
   int lookups = 1;           ///< entries scanned for it
-  std::uint32_t hidden = 0;  ///< when shadowed by a pair: its hidden face
+  std::uint32_t hidden = 0;  ///< when shadowed: the occluding face that shadows it
   bool refuted = false;      ///< a pair's shadow did not hold on its sheet (lookup_on_sheets)
 };
 
