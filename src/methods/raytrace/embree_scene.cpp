@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "ray_packet.h"
+
 namespace shadowkit::raytrace {
 namespace {
 
@@ -25,6 +27,7 @@ EmbreeScene::EmbreeScene(const Scene& scene) {
   device_ = rtcNewDevice(nullptr);
   if (!device_) throw std::runtime_error("cannot create an Embree device");
   rtcSetDeviceErrorFunction(device_, report_error, nullptr);
+  packet_width_ = native_packet_width(device_);
   std::atomic<std::ptrdiff_t> bytes{0};
   rtcSetDeviceMemoryMonitorFunction(device_, track_memory, &bytes);
 

@@ -20,6 +20,8 @@ class EmbreeScene {
   RTCScene handle() const { return scene_; }
   /// Subtract from world positions before handing them to Embree.
   Vec3 origin() const { return origin_; }
+  /// Lanes of the widest ray packet the CPU traces natively (ray_packet.h).
+  int packet_width() const { return packet_width_; }
   /// Bytes Embree reports for its BVH and buffers.
   std::size_t memory_bytes() const { return memory_bytes_; }
 
@@ -27,6 +29,7 @@ class EmbreeScene {
   RTCDevice device_ = nullptr;
   RTCScene scene_ = nullptr;
   std::size_t memory_bytes_ = 0;
+  int packet_width_ = 4;
   Vec3 origin_;
 };
 

@@ -7,18 +7,20 @@
 #include <cmath>
 #include <limits>
 
+#include "ray_packet.h"
 #include "shadowkit/methods/raytrace.h"
 
 namespace shadowkit::raytrace {
 namespace {
 
-constexpr int kTile = 16;  // 16x16 pixel tiles, one 16-wide packet per tile row
+constexpr int kTile = 16;  // 16x16 pixel tiles, each row in packets of the native width
 
 // About 64 float ulps: float storage of the point and of the triangles each err by less
 // than one ulp, and Embree's own intersection test by a few.
 constexpr double kOffsetUlps = 64.0 * std::numeric_limits<float>::epsilon();
 
-// One packet of shadow rays for up to 16 consecutive pixels of a row.
+// One packet of shadow rays for up to kLanes consecutive pixels of a row.
+template <int kLanes>
 class ShadowPacket {
  public:
   void clear() {
@@ -40,15 +42,15 @@ class ShadowPacket {
   }
   /// Traces the packet; afterwards blocked(k) tells whether lane k hit anything.
   bool trace(RTCScene scene, RTCIntersectContext* context) {
-    if (any_) rtcOccluded16(valid_, scene, context, &rays_);
+    if (any_) RayPacket<kLanes>::occluded(valid_, scene, context, &rays_);
     return any_;
   }
   bool valid(int k) const { return valid_[k] != 0; }
   bool blocked(int k) const { return rays_.tfar[k] == -std::numeric_limits<float>::infinity(); }
 
  private:
-  alignas(64) RTCRay16 rays_;
-  alignas(64) int valid_[16];
+  alignas(64) typename RayPacket<kLanes>::Rays rays_;
+  alignas(64) int valid_[kLanes];
   bool any_ = false;
 };
 
@@ -125,6 +127,14 @@ void RaytraceMethod::build(const Scene& scene, std::size_t light, const Context&
 
 void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
                            ShadowMask& mask, const Context& /*ctx*/) {
+  with_packet_width(embree_->packet_width(), [&]<int kLanes>(RayPacket<kLanes>) {
+    shade_in_packets<kLanes>(scene, surfaces, mask);
+  });
+}
+
+template <int kLanes>
+void RaytraceMethod::shade_in_packets(const Scene& scene, const VisibleSurfaceBuffer& surfaces,
+                                      ShadowMask& mask) {
   const bool point_light = light_.type == Light::Type::point;
   const Vec3 origin = embree_->origin(), light_position = light_.position - origin;
   // A point light sits at t = 1 on an unnormalised ray; stop just short of it.
@@ -134,7 +144,7 @@ void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfa
   tbb::combinable<std::size_t> ray_count;
 
   // Returns the number of shadow rays cast.
-  auto shade_row = [&](ShadowPacket& packet, ShadowRayContext& context, int y, int x0,
+  auto shade_row = [&](ShadowPacket<kLanes>& packet, ShadowRayContext& context, int y, int x0,
                        int lanes) -> std::size_t {
     packet.clear();
     for (int k = 0; k < lanes; ++k) {
@@ -170,11 +180,13 @@ void RaytraceMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surfa
       context.context.filter = skip_faces_through_light;
       context.through_light = through_light_.data();
     }
-    ShadowPacket packet;
-    const int lanes = std::min(kTile, surfaces.width - x0);
+    ShadowPacket<kLanes> packet;
+    const int x_end = std::min(x0 + kTile, surfaces.width);
     std::size_t rays = 0;
     for (int y = y0; y < std::min(y0 + kTile, surfaces.height); ++y) {
-      rays += shade_row(packet, context, y, x0, lanes);
+      for (int x = x0; x < x_end; x += kLanes) {
+        rays += shade_row(packet, context, y, x, std::min(kLanes, x_end - x));
+      }
     }
     ray_count.local() += rays;
   });

@@ -8,7 +8,8 @@
 
 namespace shadowkit::raytrace {
 
-/// \brief Shadow rays in 16-wide packets (rtcOccluded16) over 16x16 pixel tiles, with the
+/// \brief Shadow rays in packets of the widest width the CPU traces natively (16 lanes with
+/// AVX-512, else 8) over 16x16 pixel tiles, with the
 /// contract's two-sided rule and a self-intersection offset along the face normal. The BVH
 /// and the per-face offsets are built once per scene.
 class RaytraceMethod final : public ShadowMethod {
@@ -23,6 +24,9 @@ class RaytraceMethod final : public ShadowMethod {
   MethodCounters counters() const override;
 
  private:
+  template <int kLanes>
+  void shade_in_packets(const Scene& scene, const VisibleSurfaceBuffer& surfaces, ShadowMask& mask);
+
   std::unique_ptr<EmbreeScene> embree_;
   std::vector<float> face_offset_;  ///< per face, from prepare()
   /// Per face for the current light: the offset signed toward the side the camera and the
