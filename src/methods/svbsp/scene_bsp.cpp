@@ -1,6 +1,7 @@
 #include "scene_bsp.h"
 
 #include <tbb/concurrent_vector.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 #include "convex_solids.h"
@@ -128,28 +130,49 @@ std::optional<std::pair<Plane, PlaneScore>> best_axis_plane(const Sample& polygo
 
 }  // namespace
 
-std::vector<ConvexPolygon> convex_faces(const Scene& scene) {
-  std::vector<ConvexPolygon> out;
-  for (const SceneObject& object : scene.objects) {
-    const Mesh& mesh = object.mesh;
-    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
-      const std::uint32_t face = object.first_face + std::uint32_t(f);
-      const std::span<const std::uint32_t> loop(&mesh.face_vertices[mesh.face_start[f]],
-                                                mesh.face_size(f));
-      if (is_convex(mesh, f)) {
-        ConvexPolygon::Corners v;
-        for (std::uint32_t i : loop) v.push_back(mesh.vertices[i]);
-        out.push_back(make_polygon(v, face));
-        continue;
-      }
-      std::vector<std::array<std::uint32_t, 3>> triangles;
-      triangulate_polygon(mesh.vertices, loop, mesh.planes[f].normal, triangles);
-      for (const auto& t : triangles) {
-        out.push_back(
-            make_polygon({mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]}, face));
-      }
-    }
+namespace {
+
+// Appends the convex pieces of face \p face of \p scene to \p out.
+void append_convex_pieces(const Scene& scene, std::uint32_t face, std::vector<ConvexPolygon>& out) {
+  const SceneObject& object = scene.objects[scene.object_of_face(face)];
+  const Mesh& mesh = object.mesh;
+  const std::size_t f = face - object.first_face;
+  const std::span<const std::uint32_t> loop(&mesh.face_vertices[mesh.face_start[f]],
+                                            mesh.face_size(f));
+  if (is_convex(mesh, f)) {
+    ConvexPolygon::Corners v;
+    for (std::uint32_t i : loop) v.push_back(mesh.vertices[i]);
+    out.push_back(make_polygon(v, face));
+    return;
   }
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  triangulate_polygon(mesh.vertices, loop, mesh.planes[f].normal, triangles);
+  for (const auto& t : triangles) {
+    out.push_back(
+        make_polygon({mesh.vertices[t[0]], mesh.vertices[t[1]], mesh.vertices[t[2]]}, face));
+  }
+}
+
+}  // namespace
+
+// Chunks of faces in parallel, then moved into place in parallel: at half a million faces
+// one pass in face order costs more than the tree's top levels.
+std::vector<ConvexPolygon> convex_faces(const Scene& scene) {
+  constexpr std::uint32_t kChunk = 4096;
+  const auto faces = std::uint32_t(scene.face_count());
+  std::vector<std::vector<ConvexPolygon>> chunks((faces + kChunk - 1) / kChunk);
+  tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
+    const std::uint32_t end = std::min<std::uint32_t>(faces, std::uint32_t(c + 1) * kChunk);
+    for (auto face = std::uint32_t(c * kChunk); face < end; ++face) {
+      append_convex_pieces(scene, face, chunks[c]);
+    }
+  });
+  std::vector<std::size_t> start(chunks.size() + 1, 0);
+  for (std::size_t c = 0; c < chunks.size(); ++c) start[c + 1] = start[c] + chunks[c].size();
+  std::vector<ConvexPolygon> out(start.back());
+  tbb::parallel_for(std::size_t(0), chunks.size(), [&](std::size_t c) {
+    std::move(chunks[c].begin(), chunks[c].end(), out.begin() + std::ptrdiff_t(start[c]));
+  });
   return out;
 }
 
@@ -157,15 +180,16 @@ std::vector<ConvexPolygon> convex_faces(const Scene& scene) {
 // laid out in one fixed order.
 struct SceneBsp::Draft {
   Plane plane;
-  Ids here;  ///< pieces in the plane (or the solid's faces), into the builder's pool
+  Ids here;  ///< pieces in the plane (or the solid's faces), builder ids
   std::int32_t solid = -1;
   std::vector<Plane> cluster;  ///< a cluster leaf: each piece's plane, turned (Builder::cluster)
   std::unique_ptr<Draft> front, back;
 };
 
-// Builds drafts over a pool of polygons that splitting only appends to, so that ids and
-// references stay valid while other subtrees grow it. An id with kSolidTag names a convex
-// solid kept whole: its faces, and its corners for the plane tests.
+// Builds drafts over the input polygons and the pieces that splitting appends to a
+// concurrent vector, so that ids and references stay valid while other subtrees add pieces.
+// An id with kSolidTag names a convex solid kept whole: its faces, and its corners for the
+// plane tests.
 class SceneBsp::Builder {
  public:
   Builder(const Scene& scene, double eps, std::vector<ConvexPolygon> inputs,
@@ -174,23 +198,31 @@ class SceneBsp::Builder {
         eps_(eps),
         planar_reach_(kPlanarTolerance * std::max(1.0, scene.bounds().diagonal())),
         clusters_(clusters),
-        pool_(inputs.begin(), inputs.end()) {
+        inputs_(std::move(inputs)) {
     if (solids) solids_.resize(solids->size());
-    for (std::uint32_t id = 0; id < pool_.size(); ++id) {
-      const std::int32_t s = solids ? solids->solid_of(pool_[id].face) : -1;
+    for (std::uint32_t id = 0; id < inputs_.size(); ++id) {
+      const std::int32_t s = solids ? solids->solid_of(polygon(id).face) : -1;
       if (s < 0) {
         items_.push_back(id);
         continue;
       }
       Solid& solid = solids_[std::size_t(s)];
       solid.faces.push_back(id);
-      for (const Vec3& v : pool_[id].vertices) solid.corners.vertices.push_back(v);
+      for (const Vec3& v : polygon(id).vertices) solid.corners.vertices.push_back(v);
     }
-    for (std::uint32_t s = 0; s < solids_.size(); ++s) items_.push_back(kSolidTag | s);
+    for (std::uint32_t s = 0; s < solids_.size(); ++s) {
+      items_.push_back(kSolidTag | s);
+      distinct_corners(solids_[s].corners.vertices);
+    }
   }
 
-  std::size_t size() const { return pool_.size(); }
-  ConvexPolygon& polygon(std::uint32_t id) { return pool_[id]; }
+  std::size_t size() const { return inputs_.size() + cut_.size(); }
+  ConvexPolygon& polygon(std::uint32_t id) {
+    return id < inputs_.size() ? inputs_[id] : cut_[id - inputs_.size()];
+  }
+  const ConvexPolygon& polygon(std::uint32_t id) const {
+    return id < inputs_.size() ? inputs_[id] : cut_[id - inputs_.size()];
+  }
   /// Every input polygon, a convex solid's faces as the solid.
   const Ids& items() const { return items_; }
 
@@ -230,14 +262,24 @@ class SceneBsp::Builder {
   static constexpr std::uint32_t kSolidTag = 1u << 31;
   static bool is_solid(std::uint32_t id) { return (id & kSolidTag) != 0; }
 
-  /// \brief A convex solid kept whole: its faces in the pool and all their corners.
+  /// \brief A convex solid kept whole: its faces' ids and all their corners.
   struct Solid {
     Ids faces;
     ConvexPolygon corners;
   };
 
+  // Each corner of a solid once: its faces share them (a cube's 24 face corners are 8), and
+  // every plane test of the solid reads them all.
+  static void distinct_corners(ConvexPolygon::Corners& corners) {
+    const auto less = [](const Vec3& a, const Vec3& b) {
+      return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    };
+    std::sort(corners.begin(), corners.end(), less);
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+  }
+
   const ConvexPolygon& shape(std::uint32_t id) const {
-    return is_solid(id) ? solids_[id & ~kSolidTag].corners : pool_[id];
+    return is_solid(id) ? solids_[id & ~kSolidTag].corners : polygon(id);
   }
   const Ids& faces_of(std::uint32_t solid_id) const { return solids_[solid_id & ~kSolidTag].faces; }
 
@@ -266,11 +308,11 @@ class SceneBsp::Builder {
     }
     bool front = false, back = false;
     for (const std::uint32_t i : ids) {
-      const Plane& plane = scene_.face_plane(pool_[i].face);
+      const Plane& plane = scene_.face_plane(polygon(i).face);
       for (const std::uint32_t j : ids) {
         if (j == i) continue;
-        const PlaneSides sides = classify(pool_[j], plane, eps_);
-        if (sides.on() && pool_[j].face != pool_[i].face) return std::nullopt;
+        const PlaneSides sides = classify(polygon(j), plane, eps_);
+        if (sides.on() && polygon(j).face != polygon(i).face) return std::nullopt;
         front = front || sides.positive;
         back = back || sides.negative;
         if (front && back) return std::nullopt;
@@ -278,7 +320,7 @@ class SceneBsp::Builder {
     }
     std::vector<Plane> planes;
     for (const std::uint32_t i : ids) {
-      const Plane& plane = scene_.face_plane(pool_[i].face);
+      const Plane& plane = scene_.face_plane(polygon(i).face);
       planes.push_back(front ? Plane{-plane.normal, -plane.d} : plane);
     }
     return planes;
@@ -341,7 +383,7 @@ class SceneBsp::Builder {
         continue;
       }
       for (const std::uint32_t id : faces_of(sampled[c])) {
-        consider(scene_.face_plane(pool_[id].face), kNoPolygon);
+        consider(scene_.face_plane(polygon(id).face), kNoPolygon);
       }
     }
     return best;
@@ -372,12 +414,12 @@ class SceneBsp::Builder {
         } else {
           (sides.positive ? front : back).push_back(id);
         }
-      } else if (id == best || sides.on() || in_plane(pool_[id], draft.plane)) {
+      } else if (id == best || sides.on() || in_plane(polygon(id), draft.plane)) {
         draft.here.push_back(id);
       } else if (!sides.spanning()) {
         (sides.positive ? front : back).push_back(id);
       } else {
-        split_polygon(pool_[id], draft.plane, eps_, std::nullopt, neg, pos);
+        split_polygon(polygon(id), draft.plane, eps_, std::nullopt, neg, pos);
         back.push_back(add(std::move(neg)));
         front.push_back(add(std::move(pos)));
       }
@@ -396,14 +438,15 @@ class SceneBsp::Builder {
   }
 
   std::uint32_t add(ConvexPolygon&& p) {
-    return std::uint32_t(pool_.push_back(std::move(p)) - pool_.begin());
+    return std::uint32_t(inputs_.size() + std::size_t(cut_.push_back(std::move(p)) - cut_.begin()));
   }
 
   const Scene& scene_;
   double eps_;
   double planar_reach_;  ///< how far a face's corners may lie off its plane (kPlanarTolerance)
   bool clusters_;
-  tbb::concurrent_vector<ConvexPolygon> pool_;
+  std::vector<ConvexPolygon> inputs_;
+  tbb::concurrent_vector<ConvexPolygon> cut_;  ///< pieces of splits, ids from inputs_.size()
   std::vector<Solid> solids_;
   Ids items_;
 };
@@ -414,22 +457,29 @@ SceneBsp SceneBsp::build(const Scene& scene, const ConvexSolids* solids, bool cl
   Builder builder(scene, bsp.eps_, convex_faces(scene), solids, clusters);
   const std::size_t inputs = builder.size();
   const std::unique_ptr<Draft> root = builder.build(builder.items());
-  if (root) bsp.root_ = bsp.lay_out(*root, builder, 1);
+  // The pieces in the order the nodes are laid out, then moved there in parallel.
+  std::vector<std::uint32_t> order;
+  order.reserve(builder.size());
+  if (root) bsp.root_ = bsp.lay_out(*root, order, 1);
+  bsp.pieces_.resize(order.size());
+  tbb::parallel_for(std::size_t(0), order.size(),
+                    [&](std::size_t k) { bsp.pieces_[k] = std::move(builder.polygon(order[k])); });
   bsp.splits_ = bsp.pieces_.size() - inputs;
   return bsp;
 }
 
-std::int32_t SceneBsp::lay_out(Draft& draft, Builder& builder, std::size_t depth) {
+std::int32_t SceneBsp::lay_out(const Draft& draft, std::vector<std::uint32_t>& order,
+                               std::size_t depth) {
   depth_ = std::max(depth_, depth);
   const std::int32_t index = std::int32_t(nodes_.size());
   const std::int32_t cluster = draft.cluster.empty() ? -1 : std::int32_t(cluster_planes_.size());
-  nodes_.push_back({draft.plane, std::uint32_t(pieces_.size()), std::uint32_t(draft.here.size()),
-                    -1, -1, draft.solid, cluster});
+  nodes_.push_back({draft.plane, std::uint32_t(order.size()), std::uint32_t(draft.here.size()), -1,
+                    -1, draft.solid, cluster});
   cluster_planes_.insert(cluster_planes_.end(), draft.cluster.begin(), draft.cluster.end());
-  for (const std::uint32_t id : draft.here) pieces_.push_back(std::move(builder.polygon(id)));
+  order.insert(order.end(), draft.here.begin(), draft.here.end());
   solids_ += draft.solid >= 0;
-  if (draft.front) nodes_[index].front = lay_out(*draft.front, builder, depth + 1);
-  if (draft.back) nodes_[index].back = lay_out(*draft.back, builder, depth + 1);
+  if (draft.front) nodes_[index].front = lay_out(*draft.front, order, depth + 1);
+  if (draft.back) nodes_[index].back = lay_out(*draft.back, order, depth + 1);
   return index;
 }
 

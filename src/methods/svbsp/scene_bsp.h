@@ -71,8 +71,9 @@ class SceneBsp {
   };
   struct Draft;
   class Builder;
-  // Appends \p draft's subtree in preorder, front before back; returns its root.
-  std::int32_t lay_out(Draft& draft, Builder& builder, std::size_t depth);
+  // Appends \p draft's subtree in preorder, front before back, and its pieces' builder ids
+  // to \p order; returns its root.
+  std::int32_t lay_out(const Draft& draft, std::vector<std::uint32_t>& order, std::size_t depth);
   void visit(std::int32_t node, const Light& light,
              const std::function<void(NodePieces)>& fn) const;
   void visit_cluster(const Node& n, const Light& light,
