@@ -175,10 +175,13 @@ void ShadowGenerator::process_solid(std::span<const ConvexPolygon> faces, std::s
 
 LightFragments generate_shadows(const SceneBsp& bsp, const Scene& scene, const Light& light,
                                 const GeneratorSettings& settings,
-                                const ShadowedWhole& shadowed_whole, const ConvexSolids* solids) {
+                                const ShadowedWhole& shadowed_whole, const ConvexSolids* solids,
+                                std::vector<Fragment> storage) {
   ShadowGenerator generator(scene, light, settings, shadowed_whole, solids);
   generator.divide(bsp.pieces());
   LightFragments result;
+  result.fragments = std::move(storage);
+  result.fragments.clear();
   bsp.front_to_back(light, [&](NodePieces node) { generator.process(node, result.fragments); });
   result.light_facing = generator.light_facing();
   result.svbsp_nodes = generator.tree().node_count();

@@ -122,9 +122,11 @@ class ShadowGenerator {
 /// Surfaces are two-sided unless \p settings says otherwise: a piece faces the light from
 /// whichever side the light is; a piece whose plane holds the light is shadowed and casts
 /// nothing. \p shadowed_whole: see ShadowedWhole. \p solids: see ShadowGenerator.
+/// \p storage: an earlier light's fragments, whose room the new ones take.
 LightFragments generate_shadows(const SceneBsp& bsp, const Scene& scene, const Light& light,
                                 const GeneratorSettings& settings = {},
                                 const ShadowedWhole& shadowed_whole = {},
-                                const ConvexSolids* solids = nullptr);
+                                const ConvexSolids* solids = nullptr,
+                                std::vector<Fragment> storage = {});
 
 }  // namespace shadowkit::svbsp

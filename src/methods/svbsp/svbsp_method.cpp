@@ -54,8 +54,11 @@ void SvbspMethod::prepare(const Scene& scene, const Context& /*ctx*/) {
 void SvbspMethod::build(const Scene& scene, std::size_t light, const Context& /*ctx*/) {
   SHADOWKIT_CHECK(bsp_.has_value());
   light_ = scene.lights[light];
+  // The last light's fragments give their room to the new ones: 100k fragments in fresh
+  // memory cost more in page faults than in their filtering.
   result_ = svbsp::generate_shadows(*bsp_, scene, light_, generator_, shadowed_whole(scene),
-                                    convex_solids_ ? &*convex_solids_ : nullptr);
+                                    convex_solids_ ? &*convex_solids_ : nullptr,
+                                    std::move(result_.fragments));
   if (shadowed_only_) {  // §6: one light at a time, the lit fragments are thrown away
     std::erase_if(result_.fragments, [](const svbsp::Fragment& f) { return f.lit; });
   }
