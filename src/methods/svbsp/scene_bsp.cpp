@@ -75,6 +75,8 @@ PlaneScore score(const Sample& polygons, const Plane& plane, double eps) {
 // through the gaps between them.
 std::pair<Plane, PlaneScore> axis_plane(const Sample& polygons, int axis) {
   std::vector<double> lo, hi;
+  lo.reserve(polygons.size());
+  hi.reserve(polygons.size());
   for (const ConvexPolygon* p : polygons) {
     double a = p->vertices[0][axis], b = a;
     for (const Vec3& v : p->vertices) a = std::min(a, v[axis]), b = std::max(b, v[axis]);
