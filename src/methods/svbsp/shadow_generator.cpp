@@ -124,17 +124,25 @@ void ShadowGenerator::process_node(NodePieces node, std::vector<Fragment>& out) 
   for (const ConvexPolygon& piece : node.pieces) process_coplanar({&piece, 1}, out);
 }
 
-void ShadowGenerator::process_coplanar(std::span<const ConvexPolygon> coplanar,
-                                       std::vector<Fragment>& out) {
-  // Pieces of one plane cannot shadow one another, but where two of them overlap, the
-  // first one's volume would hold the second: classify all, then enlarge.
+ShadowGenerator::Coplanar ShadowGenerator::coplanar_pieces(
+    std::span<const ConvexPolygon> coplanar) const {
   const auto whole = std::count_if(coplanar.begin(), coplanar.end(),
                                    [this](const ConvexPolygon& p) { return shadowed_whole(p); });
-  const bool together = std::ssize(coplanar) - whole > 1;
+  return {whole > 0, std::ssize(coplanar) - whole > 1};
+}
+
+bool ShadowGenerator::filtered(const ConvexPolygon& piece, const Coplanar& coplanar) const {
+  return !(coplanar.any_whole && shadowed_whole(piece)) && facing(piece);
+}
+
+void ShadowGenerator::process_coplanar(std::span<const ConvexPolygon> coplanar,
+                                       std::vector<Fragment>& out) {
+  const Coplanar pieces = coplanar_pieces(coplanar);
+  const bool together = pieces.together;
   const std::size_t group = out.size();
   for (const ConvexPolygon& piece : coplanar) {
     const std::size_t first = out.size();
-    if ((whole > 0 && shadowed_whole(piece)) || !facing(piece)) {
+    if (!filtered(piece, pieces)) {
       out.push_back({piece, false});  // Fig. 3: not facing the light, or shadowed whole
       continue;
     }
@@ -182,10 +190,14 @@ LightFragments generate_shadows(const SceneBsp& bsp, const Scene& scene, const L
   LightFragments result;
   result.fragments = std::move(storage);
   result.fragments.clear();
-  bsp.front_to_back(light, [&](NodePieces node) { generator.process(node, result.fragments); });
+  if (settings.cells_in_parallel && generator.tree().cell_count() > 1 && solids == nullptr) {
+    generator.process_in_cells(bsp, result.fragments);
+  } else {
+    bsp.front_to_back(light, [&](NodePieces node) { generator.process(node, result.fragments); });
+  }
   result.light_facing = generator.light_facing();
-  result.svbsp_nodes = generator.tree().node_count();
-  result.svbsp_bytes = generator.tree().memory_bytes();
+  result.svbsp_nodes = generator.svbsp_nodes();
+  result.svbsp_bytes = generator.svbsp_bytes();
   return result;
 }
 

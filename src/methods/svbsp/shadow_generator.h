@@ -45,6 +45,9 @@ struct GeneratorSettings {
   /// §6: the SVBSP tree is kept balanced: on a scene of many pieces it starts cut into cells
   /// by planes through the light (ShadowGenerator::divide).
   bool balance = true;
+  /// With balance, the cells filled in parallel (ShadowGenerator::process_in_cells); off, in
+  /// one tree one piece after another. The fragments are the same.
+  bool cells_in_parallel = true;
 };
 
 /// Whether a global face is known to lie in shadow whole: its pieces are shadowed without
@@ -91,8 +94,18 @@ class ShadowGenerator {
   /// earlier lights (§5), which must not add planes of their own.
   void classify(const ConvexPolygon& p, std::vector<Fragment>& out) { tree_.classify(p, out); }
 
+  /// Fig. 3 over every node of \p bsp in front-to-back order, as process() would, with each
+  /// of divide()'s cells filled by a thread of its own: the volumes in one cell never reach
+  /// another, so each piece is taken down the cells' planes first and its part in a cell
+  /// filtered down that cell's own tree; the fragments are then put together in the order,
+  /// and merged as, one tree would give. Needs cells, no convex solids and no split polygons.
+  void process_in_cells(const SceneBsp& bsp, std::vector<Fragment>& out);
+
   std::size_t light_facing() const { return light_facing_; }
   const SvbspTree& tree() const { return tree_; }
+  /// Nodes and bytes of the tree and of the cells' own trees.
+  std::size_t svbsp_nodes() const;
+  std::size_t svbsp_bytes() const;
 
  private:
   // Whether the light is in front of global face \p face, off its plane.
@@ -100,6 +113,18 @@ class ShadowGenerator {
   // Whether \p piece is filtered: the light is off its plane, and with one-sided surfaces in
   // front of it (Fig. 3).
   bool facing(const ConvexPolygon& piece) const;
+  // The pieces of one BSP node, in one plane: whether some are shadowed whole, and whether
+  // they are classified together (Coplanar::together).
+  struct Coplanar {
+    bool any_whole;
+    /// Pieces of one plane cannot shadow one another, but where two of them overlap, the
+    /// first one's volume would hold the second: all are classified, then their volumes
+    /// added.
+    bool together;
+  };
+  Coplanar coplanar_pieces(std::span<const ConvexPolygon> coplanar) const;
+  // Whether \p piece of \p coplanar is filtered: else it is shadowed whole and casts nothing.
+  bool filtered(const ConvexPolygon& piece, const Coplanar& coplanar) const;
   void process_node(NodePieces node, std::vector<Fragment>& out);
   void process_coplanar(std::span<const ConvexPolygon> coplanar, std::vector<Fragment>& out);
   void process_solid(std::span<const ConvexPolygon> faces, std::size_t solid,
@@ -115,6 +140,7 @@ class ShadowGenerator {
   const ConvexSolids* solids_;
   double in_plane_;
   SvbspTree tree_;
+  std::vector<SvbspTree> cell_trees_;  ///< process_in_cells(): per cell
   std::size_t light_facing_ = 0;
 };
 

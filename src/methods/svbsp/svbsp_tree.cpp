@@ -111,6 +111,11 @@ void SvbspTree::divide(const LightView& view, std::span<LightView::Coordinates> 
                        std::size_t levels) {
   SHADOWKIT_CHECK(nodes_.empty() && root_ == kOut);
   root_ = cells(view, points, levels);
+  cell_of_slot_.assign(2 * nodes_.size(), -1);
+  for (std::size_t n = 0; n < nodes_.size(); ++n) {
+    if (nodes_[n].negative == kOut) cell_of_slot_[2 * n] = std::int32_t(cell_count_++);
+    if (nodes_[n].positive == kOut) cell_of_slot_[2 * n + 1] = std::int32_t(cell_count_++);
+  }
 }
 
 std::int32_t SvbspTree::cells(const LightView& view, std::span<LightView::Coordinates> points,
@@ -139,19 +144,54 @@ std::int32_t& SvbspTree::slot(std::int32_t parent, bool positive) {
   return parent < 0 ? root_ : (positive ? nodes_[parent].positive : nodes_[parent].negative);
 }
 
+std::int32_t SvbspTree::slot(std::int32_t parent, bool positive) const {
+  return parent < 0 ? root_ : (positive ? nodes_[parent].positive : nodes_[parent].negative);
+}
+
+PlaneSides SvbspTree::sides_at(ConvexPolygon& p, const Plane& plane, double& eps) const {
+  // Within eps a point is near the plane; within in_plane, in it (kInPlaneShare).
+  const double in_plane = eps_ * kInPlaneShare;
+  PlaneSides sides = svbsp::classify(p, plane, eps_);
+  // Wholly near the plane is not in it: a grazing receiver is told by the finer tolerance.
+  eps = sides.on() ? in_plane : eps_;
+  if (sides.on()) sides = svbsp::classify(p, plane, eps);
+  // On one side (within eps: positive), no copy.
+  if (!sides.spanning() && sides.touching) mark_edges_in_plane(p, plane, eps, in_plane);
+  return sides;
+}
+
+void SvbspTree::route(ConvexPolygon p, std::int32_t parent, bool positive,
+                      std::vector<RouteStep>& steps) const {
+  std::int32_t at = slot(parent, positive);
+  while (at >= 0) {
+    const Plane& plane = nodes_[at].shadow_plane.plane;
+    double eps = 0;
+    const PlaneSides sides = sides_at(p, plane, eps);
+    if (!sides.spanning()) {
+      parent = at;
+      positive = !sides.negative;
+      at = slot(parent, positive);
+      continue;
+    }
+    ConvexPolygon negative_part, positive_part;
+    split_polygon(p, plane, eps, eps_ * kInPlaneShare, negative_part, positive_part);
+    steps.push_back({-1, std::move(p)});
+    route(std::move(negative_part), at, false, steps);
+    route(std::move(positive_part), at, true, steps);
+    return;
+  }
+  SHADOWKIT_CHECK(at == kOut && parent >= 0);
+  steps.push_back({cell_of_slot_[2 * std::size_t(parent) + positive], std::move(p)});
+}
+
 void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive, const Sinks& sinks) {
   std::int32_t at = slot(parent, positive);
   // Down the tree, splitting at the first node the piece spans (Fig. 4).
   while (at >= 0) {
     const Plane& plane = nodes_[at].shadow_plane.plane;
-    // Within eps a point is near the plane; within in_plane, in it (kInPlaneShare).
-    const double in_plane = eps_ * kInPlaneShare;
-    PlaneSides sides = svbsp::classify(p, plane, eps_);
-    // Wholly near the plane is not in it: a grazing receiver is told by the finer tolerance.
-    const double eps = sides.on() ? in_plane : eps_;
-    if (sides.on()) sides = svbsp::classify(p, plane, eps);
-    if (!sides.spanning()) {  // on one side (within eps: positive), no copy
-      if (sides.touching) mark_edges_in_plane(p, plane, eps, in_plane);
+    double eps = 0;
+    const PlaneSides sides = sides_at(p, plane, eps);
+    if (!sides.spanning()) {
       parent = at;
       positive = !sides.negative;
       at = positive ? nodes_[at].positive : nodes_[at].negative;
@@ -159,7 +199,7 @@ void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive, con
     }
     // Spanning: each side in its own subtree; the tree may grow (and nodes_ move) meanwhile.
     ConvexPolygon negative_part, positive_part;
-    split_polygon(p, plane, eps, in_plane, negative_part, positive_part);
+    split_polygon(p, plane, eps, eps_ * kInPlaneShare, negative_part, positive_part);
     std::vector<Fragment>* out = sinks.out;
     const std::size_t first = out ? out->size() : 0;
     const std::int32_t node = at;

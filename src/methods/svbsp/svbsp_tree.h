@@ -106,6 +106,26 @@ class SvbspTree {
   std::size_t node_count() const { return nodes_.size(); }
   std::size_t memory_bytes() const { return nodes_.capacity() * sizeof(Node); }
 
+  /// A tree with nothing in it and this one's light and settings: one cell's own.
+  SvbspTree empty_like() const {
+    return SvbspTree(light_, eps_, merge_siblings_, skip_edges_in_tree_, nullptr);
+  }
+  /// The OUT cells divide() made; 0 before it, or when it made none.
+  std::size_t cell_count() const { return cell_count_; }
+  /// \brief One step of a polygon's way down the planes of divide()'s cells (route()), in
+  /// preorder: a split keeps the polygon it cut, and its negative side's steps and then its
+  /// positive side's follow; a leaf names the cell its part reached.
+  struct RouteStep {
+    std::int32_t cell = -1;  ///< -1: a split
+    ConvexPolygon polygon;   ///< a split: the polygon before it; a leaf: the part
+  };
+  /// Takes \p p down the cells' planes as descend() would, before the cells hold anything,
+  /// appending its steps to \p steps. Each cell's part may then be filtered down a tree of its
+  /// own: the cells' volumes never meet.
+  void route(ConvexPolygon p, std::vector<RouteStep>& steps) const {
+    route(std::move(p), -1, false, steps);
+  }
+
  private:
   // Leaves: IN, OUT, and below kOut the cells in the shadow of split polygon `kOut - 1 - leaf`
   // alone, IN for every other polygon and OUT for that one.
@@ -124,7 +144,13 @@ class SvbspTree {
   };
   // Filters \p p from the slot (parent node, side; parent -1: the root) down to the leaves.
   void descend(ConvexPolygon p, std::int32_t parent, bool positive, const Sinks& sinks);
+  // Which sides of \p plane \p p reaches, its edges along the plane marked (§6) when it
+  // lies on one; \p eps: the tolerance to split it with when it spans the plane.
+  PlaneSides sides_at(ConvexPolygon& p, const Plane& plane, double& eps) const;
+  void route(ConvexPolygon p, std::int32_t parent, bool positive,
+             std::vector<RouteStep>& steps) const;
   std::int32_t& slot(std::int32_t parent, bool positive);
+  std::int32_t slot(std::int32_t parent, bool positive) const;
   // The cells of divide() over \p points: a subtree of OUT leaves.
   std::int32_t cells(const LightView& view, std::span<LightView::Coordinates> points,
                      std::size_t levels);
@@ -148,6 +174,9 @@ class SvbspTree {
   std::vector<std::uint32_t> pending_pieces_;  ///< per split polygon: its pieces still to come
   std::int32_t root_ = kOut;
   std::vector<Node> nodes_;
+  // divide()'s cells: per slot of its nodes (node * 2 + side), the cell there, or -1.
+  std::vector<std::int32_t> cell_of_slot_;
+  std::size_t cell_count_ = 0;
 };
 
 }  // namespace shadowkit::svbsp
