@@ -95,7 +95,8 @@ class DepthMap {
   /// changes (u, w) by s / zv and zv by s (n.x, n.y) / (n · d), a slope of
   /// |(n.x, n.y)| zv / |c|. Orthographic: d = (0, 0, 1), a slope of |(n.x, n.y)| / |n.z|.
   double slope_factor(Vec3 n, double eye_distance) const {
-    return std::hypot(n.x, n.y) / std::abs(view_.orthographic ? n.z : eye_distance);
+    // n is a unit vector: no overflow for std::hypot to guard against, at a tenth of its cost.
+    return std::sqrt(n.x * n.x + n.y * n.y) / std::abs(view_.orthographic ? n.z : eye_distance);
   }
 
   /// Williams 1978, second pass, with percentage-closer filtering: of the kernel x kernel
