@@ -148,33 +148,36 @@ std::int32_t SvbspTree::slot(std::int32_t parent, bool positive) const {
   return parent < 0 ? root_ : (positive ? nodes_[parent].positive : nodes_[parent].negative);
 }
 
-PlaneSides SvbspTree::sides_at(ConvexPolygon& p, const Plane& plane, double& eps) const {
+std::int32_t SvbspTree::down_to_split(ConvexPolygon& p, std::int32_t& parent, bool& positive,
+                                      ConvexPolygon& negative_part,
+                                      ConvexPolygon& positive_part) const {
   // Within eps a point is near the plane; within in_plane, in it (kInPlaneShare).
   const double in_plane = eps_ * kInPlaneShare;
-  PlaneSides sides = svbsp::classify(p, plane, eps_);
-  // Wholly near the plane is not in it: a grazing receiver is told by the finer tolerance.
-  eps = sides.on() ? in_plane : eps_;
-  if (sides.on()) sides = svbsp::classify(p, plane, eps);
-  // On one side (within eps: positive), no copy.
-  if (!sides.spanning() && sides.touching) mark_edges_in_plane(p, plane, eps, in_plane);
-  return sides;
+  std::int32_t at = slot(parent, positive);
+  while (at >= 0) {
+    const Plane& plane = nodes_[at].shadow_plane.plane;
+    PlaneSides sides = svbsp::classify(p, plane, eps_);
+    // Wholly near the plane is not in it: a grazing receiver is told by the finer tolerance.
+    const double eps = sides.on() ? in_plane : eps_;
+    if (sides.on()) sides = svbsp::classify(p, plane, eps);
+    if (sides.spanning()) {
+      split_polygon(p, plane, eps, in_plane, negative_part, positive_part);
+      return at;
+    }
+    // On one side (within eps: positive), no copy.
+    if (sides.touching) mark_edges_in_plane(p, plane, eps, in_plane);
+    parent = at;
+    positive = !sides.negative;
+    at = slot(parent, positive);
+  }
+  return at;
 }
 
 void SvbspTree::route(ConvexPolygon p, std::int32_t parent, bool positive,
                       std::vector<RouteStep>& steps) const {
-  std::int32_t at = slot(parent, positive);
-  while (at >= 0) {
-    const Plane& plane = nodes_[at].shadow_plane.plane;
-    double eps = 0;
-    const PlaneSides sides = sides_at(p, plane, eps);
-    if (!sides.spanning()) {
-      parent = at;
-      positive = !sides.negative;
-      at = slot(parent, positive);
-      continue;
-    }
-    ConvexPolygon negative_part, positive_part;
-    split_polygon(p, plane, eps, eps_ * kInPlaneShare, negative_part, positive_part);
+  ConvexPolygon negative_part, positive_part;
+  const std::int32_t at = down_to_split(p, parent, positive, negative_part, positive_part);
+  if (at >= 0) {
     steps.push_back({-1, std::move(p)});
     route(std::move(negative_part), at, false, steps);
     route(std::move(positive_part), at, true, steps);
@@ -185,26 +188,15 @@ void SvbspTree::route(ConvexPolygon p, std::int32_t parent, bool positive,
 }
 
 void SvbspTree::descend(ConvexPolygon p, std::int32_t parent, bool positive, const Sinks& sinks) {
-  std::int32_t at = slot(parent, positive);
   // Down the tree, splitting at the first node the piece spans (Fig. 4).
-  while (at >= 0) {
-    const Plane& plane = nodes_[at].shadow_plane.plane;
-    double eps = 0;
-    const PlaneSides sides = sides_at(p, plane, eps);
-    if (!sides.spanning()) {
-      parent = at;
-      positive = !sides.negative;
-      at = positive ? nodes_[at].positive : nodes_[at].negative;
-      continue;
-    }
+  ConvexPolygon negative_part, positive_part;
+  const std::int32_t at = down_to_split(p, parent, positive, negative_part, positive_part);
+  if (at >= 0) {
     // Spanning: each side in its own subtree; the tree may grow (and nodes_ move) meanwhile.
-    ConvexPolygon negative_part, positive_part;
-    split_polygon(p, plane, eps, eps_ * kInPlaneShare, negative_part, positive_part);
     std::vector<Fragment>* out = sinks.out;
     const std::size_t first = out ? out->size() : 0;
-    const std::int32_t node = at;
-    descend(std::move(negative_part), node, false, sinks);
-    descend(std::move(positive_part), node, true, sinks);
+    descend(std::move(negative_part), at, false, sinks);
+    descend(std::move(positive_part), at, true, sinks);
     // §6: two sibling fragments in the same state are the polygon before the split. The
     // pieces are exactly its halves (the cut shares its points), so no area changes; the
     // verdicts and the tree are those of the halves.

@@ -144,9 +144,12 @@ class SvbspTree {
   };
   // Filters \p p from the slot (parent node, side; parent -1: the root) down to the leaves.
   void descend(ConvexPolygon p, std::int32_t parent, bool positive, const Sinks& sinks);
-  // Which sides of \p plane \p p reaches, its edges along the plane marked (§6) when it
-  // lies on one; \p eps: the tolerance to split it with when it spans the plane.
-  PlaneSides sides_at(ConvexPolygon& p, const Plane& plane, double& eps) const;
+  // Takes \p p down from the slot (\p parent, \p positive) while it lies on one side of each
+  // plane, its edges along a plane it touches marked (§6). Returns the node whose plane it
+  // spans, its halves in \p negative_part and \p positive_part; or the leaf it reached, the
+  // slot left in (\p parent, \p positive).
+  std::int32_t down_to_split(ConvexPolygon& p, std::int32_t& parent, bool& positive,
+                             ConvexPolygon& negative_part, ConvexPolygon& positive_part) const;
   void route(ConvexPolygon p, std::int32_t parent, bool positive,
              std::vector<RouteStep>& steps) const;
   std::int32_t& slot(std::int32_t parent, bool positive);
