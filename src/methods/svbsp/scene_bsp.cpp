@@ -130,10 +130,6 @@ std::optional<std::pair<Plane, PlaneScore>> best_axis_plane(const Sample& polygo
   return best;
 }
 
-}  // namespace
-
-namespace {
-
 // Appends the convex pieces of face \p face of \p scene to \p out.
 void append_convex_pieces(const Scene& scene, std::uint32_t face, std::vector<ConvexPolygon>& out) {
   const SceneObject& object = scene.objects[scene.object_of_face(face)];
