@@ -12,10 +12,12 @@ endif()
 add_library(shadowkit_options INTERFACE)
 target_link_libraries(shadowkit_options INTERFACE shadowkit_warnings)
 # No code reads errno after a math function; without the flag std::sqrt keeps a branch to
-# set it, and no loop that takes a square root is vectorized.
-target_compile_options(shadowkit_options INTERFACE -fno-math-errno)
+# set it, and no loop that takes a square root is vectorized. No multiply and add fused into
+# one FMA either: every build, whatever its -march, rounds every operation alike, so masks and
+# counts are the same bit for bit.
+target_compile_options(shadowkit_options INTERFACE -fno-math-errno -ffp-contract=off)
 if(CMAKE_BUILD_TYPE STREQUAL "Release")
-  target_compile_options(shadowkit_options INTERFACE -march=x86-64-v2 -O3)
+  target_compile_options(shadowkit_options INTERFACE -march=${SHADOWKIT_MARCH} -O3)
 endif()
 if(SHADOWKIT_SANITIZE)
   target_compile_options(shadowkit_options INTERFACE
