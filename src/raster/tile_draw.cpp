@@ -17,6 +17,16 @@ double nearest_key(const ScreenTriangle& t, int xa, int xb, int ya, int yb) {
   return a + b + t.key_c + 1e-12 * (std::abs(a) + std::abs(b) + std::abs(t.key_c));
 }
 
+// A tile's sort key of triangle \p id whose nearest key is \p nearest: ascending keys go
+// nearest first. The key is rounded to float, whose bits order as sign and magnitude, above
+// the id. The order only decides how much the blocks' farthest keys cull; in any order the
+// tile gets the same keys and faces.
+std::uint64_t nearest_first(double nearest, std::uint32_t id) {
+  const auto bits = std::bit_cast<std::uint32_t>(float(nearest));
+  const std::uint32_t ascending = (bits & 0x80000000u) != 0 ? ~bits : bits | 0x80000000u;
+  return std::uint64_t(~ascending) << 32 | id;
+}
+
 // One triangle's span of row py, columns [xa, xb]: depth-tested into \p key and, with faces,
 // \p face. Between equally near triangles the lower face id wins, which is the first in
 // triangle order whatever order they are drawn in.
@@ -143,19 +153,18 @@ template <typename Key>
 template <bool kFaces>
 void TileDepth<Key>::draw_triangles(const ScreenTriangles& tris,
                                     std::span<const std::uint32_t> bin) {
-  thread_local std::vector<std::pair<double, std::uint32_t>> order;  // nearest first
+  thread_local std::vector<std::uint64_t> order;  // nearest first
   order.clear();
   const int xe = x0_ + w_ - 1, ye = y0_ + h_ - 1;
   for (const std::uint32_t id : bin) {
     const ScreenTriangle& t = tris[id];
-    order.emplace_back(nearest_key(t, std::max(x0_, t.min_x), std::min(xe, t.max_x),
-                                   std::max(y0_, t.min_y), std::min(ye, t.max_y)),
-                       id);
+    order.push_back(nearest_first(nearest_key(t, std::max(x0_, t.min_x), std::min(xe, t.max_x),
+                                              std::max(y0_, t.min_y), std::min(ye, t.max_y)),
+                                  id));
   }
-  std::sort(order.begin(), order.end(),
-            [](const auto& a, const auto& b) { return a.first > b.first; });
-  for (const auto& nearest_first : order) {
-    const ScreenTriangle& t = tris[nearest_first.second];
+  std::sort(order.begin(), order.end());
+  for (const std::uint64_t entry : order) {
+    const ScreenTriangle& t = tris[std::uint32_t(entry)];
     const int ya = std::max(y0_, t.min_y), yb = std::min(ye, t.max_y);
     const int xa0 = std::max(x0_, t.min_x), xb0 = std::min(xe, t.max_x);
     const BlockRange r = blocks(xa0, xb0, ya, yb);

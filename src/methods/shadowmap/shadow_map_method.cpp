@@ -164,6 +164,13 @@ struct ShadowMapMethod::Receiver {
   ReceiverBias bias;
 };
 
+// The receivers a screen tile has met, a slot per face: a triangle of a fine mesh spans a
+// few pixels of two or three rows, so most stretches meet a face that a row above met.
+struct ShadowMapMethod::Receivers {
+  static constexpr std::size_t kSlots = 32;
+  std::array<Receiver, kSlots> slots;
+};
+
 // The frame the camera pass works on, and the contract's pixel rays as
 // VisibleSurfaceBuffer::ray() makes them, (forward + x right) + y up, with the column's part
 // computed once per column and the row's once per row.
@@ -201,8 +208,8 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
   if (all_tiles_) {
     each_tile_row(
         surfaces,
-        [&](int y, int x0, int x1, TileRow& r, Receiver& receiver) {
-          set_up_row(pass, y, x0, x1, r, receiver);
+        [&](int y, int x0, int x1, TileRow& r, Receivers& receivers) {
+          set_up_row(pass, y, x0, x1, r, receivers);
           load_row(r);
         },
         decide);
@@ -224,15 +231,15 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
   kept_count_.resize(rows);
   each_tile_row(
       surfaces,
-      [&](int y, int x0, int x1, TileRow& r, Receiver& receiver) {
-        set_up_row(pass, y, x0, x1, r, receiver);
+      [&](int y, int x0, int x1, TileRow& r, Receivers& receivers) {
+        set_up_row(pass, y, x0, x1, r, receivers);
         keep_row(y, x0, r);
       },
       [](const TileRow&) {});
   draw_maps(scene, ctx);
   each_tile_row(
       surfaces,
-      [&](int y, int x0, int /*x1*/, TileRow& r, Receiver&) {
+      [&](int y, int x0, int /*x1*/, TileRow& r, Receivers&) {
         kept_row(y, x0, r);
         load_row(r);
       },
@@ -252,12 +259,12 @@ void ShadowMapMethod::each_tile_row(const VisibleSurfaceBuffer& surfaces, Fill&&
     const int x0 = (tile % tiles_x) * kShadeTileW, y0 = (tile / tiles_x) * kShadeTileH;
     const int x1 = std::min(x0 + kShadeTileW, surfaces.width);
     const int y1 = std::min(y0 + kShadeTileH, surfaces.height);
-    Receiver receiver;
+    Receivers receivers;
     // The thread's own, made once (a frame has thousands of tiles): the body starts no
     // parallel work, so no other tile takes them meanwhile.
     thread_local std::array<TileRow, 2> rows;
     for (int y = y0; y <= y1; ++y) {
-      if (y < y1) fill(y, x0, x1, rows[y % 2], receiver);
+      if (y < y1) fill(y, x0, x1, rows[y % 2], receivers);
       if (y > y0) finish(rows[(y - 1) % 2]);
     }
   });
@@ -266,13 +273,14 @@ void ShadowMapMethod::each_tile_row(const VisibleSurfaceBuffer& surfaces, Fill&&
 // Sets up the light-facing points of row \p y's columns [x0, x1), a stretch of pixels on one
 // face at a time, and locates them; shadows the pixels whose face is turned from the light.
 void ShadowMapMethod::set_up_row(const CameraPass& pass, int y, int x0, int x1, TileRow& r,
-                                 Receiver& receiver) const {
+                                 Receivers& receivers) const {
   const VisibleSurfaceBuffer& surfaces = pass.surfaces;
   const Vec3 row = (pass.grid.y0 - pass.grid.step * double(y)) * pass.up;
   const std::uint32_t* face = surfaces.face.data() + surfaces.index(0, y);
   r.points.size = 0;
   for (int x = surfaces.next_covered(x0, x1, y); x < x1;) {
     const int end = stretch_end(face, x, x1);
+    Receiver& receiver = receivers.slots[face[x] % Receivers::kSlots];
     if (face[x] != receiver.face) {
       receiver = receiver_of(pass.scene.face_plane(face[x]), pass.eye, face[x]);
     }

@@ -68,6 +68,7 @@ class ShadowMapMethod final : public ShadowMethod {
 
  private:
   struct Receiver;
+  struct Receivers;
   struct TileRow;
   struct CameraPass;
   /// A point kept between the passes: its pixel, its texel (map << 28 | tile << 12 | place in
@@ -86,12 +87,12 @@ class ShadowMapMethod final : public ShadowMethod {
   shadowmap::DepthMap& map(int m);
   /// Draws the tiles wanted_ marks in every map (all of them where it is empty).
   void draw_maps(const Scene& scene, const Context& ctx);
-  /// Runs \p fill(y, x0, x1, row, receiver) and then \p finish(row) on every row of every
+  /// Runs \p fill(y, x0, x1, row, receivers) and then \p finish(row) on every row of every
   /// screen tile of \p surfaces.
   template <class Fill, class Finish>
   void each_tile_row(const VisibleSurfaceBuffer& surfaces, Fill&& fill, Finish&& finish) const;
   void set_up_row(const CameraPass& pass, int y, int x0, int x1, TileRow& r,
-                  Receiver& receiver) const;
+                  Receivers& receivers) const;
   void load_row(TileRow& r) const;
   /// Writes each point of a loaded row lit or shadowed into \p mask.
   void decide_row(const TileRow& r, ShadowMask& mask) const;
