@@ -25,6 +25,8 @@ static_assert(kMaxResolution <= limits::kImageSide);  // the scan converter's la
 constexpr int kMaxPcf = 31;
 // The camera pass's screen tiles: wide, so that the hardware prefetcher follows each row.
 constexpr int kShadeTileW = 128, kShadeTileH = 8;
+// Camera passes so far, of every ShadowMapMethod: each pass's number marks what it cached.
+std::atomic<std::uint64_t> camera_passes{0};
 
 [[noreturn]] void bad_option(const std::string& key, const std::string& what) {
   throw InputError("option 'shadowmap." + key + "'", what);
@@ -164,11 +166,13 @@ struct ShadowMapMethod::Receiver {
   ReceiverBias bias;
 };
 
-// The receivers a screen tile has met, a slot per face: a triangle of a fine mesh spans a
-// few pixels of two or three rows, so most stretches meet a face that a row above met.
+// The receivers a thread has met, a slot per face, kept from tile to tile: a triangle of a
+// fine mesh spans a few pixels of two or three rows, so most stretches meet a face that a row
+// above met. A slot filled in another camera pass (another light, another method) is stale.
 struct ShadowMapMethod::Receivers {
-  static constexpr std::size_t kSlots = 32;
+  static constexpr std::size_t kSlots = 512;
   std::array<Receiver, kSlots> slots;
+  std::array<std::uint64_t, kSlots> pass{};  ///< the camera pass that filled each slot
 };
 
 // The frame the camera pass works on, and the contract's pixel rays as
@@ -204,6 +208,7 @@ void ShadowMapMethod::shade(const Scene& scene, const VisibleSurfaceBuffer& surf
                             ShadowMask& mask, const Context& ctx) {
   SHADOWKIT_CHECK(map(0).texel_count() > 0);  // built
   const CameraPass pass(scene, surfaces, mask);
+  pass_ = camera_passes.fetch_add(1, std::memory_order_relaxed) + 1;
   const auto decide = [&](const TileRow& r) { decide_row(r, mask); };
   if (all_tiles_) {
     each_tile_row(
@@ -259,10 +264,10 @@ void ShadowMapMethod::each_tile_row(const VisibleSurfaceBuffer& surfaces, Fill&&
     const int x0 = (tile % tiles_x) * kShadeTileW, y0 = (tile / tiles_x) * kShadeTileH;
     const int x1 = std::min(x0 + kShadeTileW, surfaces.width);
     const int y1 = std::min(y0 + kShadeTileH, surfaces.height);
-    Receivers receivers;
     // The thread's own, made once (a frame has thousands of tiles): the body starts no
     // parallel work, so no other tile takes them meanwhile.
     thread_local std::array<TileRow, 2> rows;
+    thread_local Receivers receivers;
     for (int y = y0; y <= y1; ++y) {
       if (y < y1) fill(y, x0, x1, rows[y % 2], receivers);
       if (y > y0) finish(rows[(y - 1) % 2]);
@@ -280,9 +285,11 @@ void ShadowMapMethod::set_up_row(const CameraPass& pass, int y, int x0, int x1, 
   r.points.size = 0;
   for (int x = surfaces.next_covered(x0, x1, y); x < x1;) {
     const int end = stretch_end(face, x, x1);
-    Receiver& receiver = receivers.slots[face[x] % Receivers::kSlots];
-    if (face[x] != receiver.face) {
+    const std::size_t slot = face[x] % Receivers::kSlots;
+    Receiver& receiver = receivers.slots[slot];
+    if (face[x] != receiver.face || receivers.pass[slot] != pass_) {
       receiver = receiver_of(pass.scene.face_plane(face[x]), pass.eye, face[x]);
+      receivers.pass[slot] = pass_;
     }
     const std::size_t i = surfaces.index(x, y);
     if (!receiver.faces_light) {

@@ -134,6 +134,7 @@ class ShadowMapMethod final : public ShadowMethod {
   /// The last camera pass's light-facing points, kept from locating them to testing them: a
   /// row of each screen tile's column after another, each with room for a tile's width.
   std::size_t kept_columns_ = 0, kept_capacity_ = 0;
+  std::uint64_t pass_ = 0;  ///< the number of the current camera pass (Receivers)
   std::unique_ptr<KeptPoint[]> kept_;
   std::vector<std::uint8_t> kept_count_;  ///< points per row
 };

@@ -553,6 +553,33 @@ TEST(ShadowMap, LookedUpTilesGiveTheWholeMapsMasks) {
   }
 }
 
+// A camera pass keeps what it set up per receiving face for its own light only: a method
+// that shades one light and then another, from above the ground and then below it, gives the
+// second the masks a fresh method gives, on the square and on faces a few pixels wide.
+TEST(ShadowMap, ASecondLightForgetsTheFirstsReceivers) {
+  for (const std::string tiles : {"looked_up", "all"}) {
+    for (const bool pyramids : {false, true}) {
+      SCOPED_TRACE(tiles + (pyramids ? " pyramids" : " square"));
+      const auto scene_lit_by = [&](const Light& light) {
+        return pyramids ? pyramid_field(light) : square_scene(light, kTopCamera);
+      };
+      Scene scene = scene_lit_by(Light::directional({0.3, -1, 0.2}));
+      scene.lights.push_back(Light::directional({0.2, 1, 0.3}));
+      const Scene second = scene_lit_by(scene.lights[1]);
+      ShadowMapMethod reused = make({{"resolution", "256"}, {"tiles", tiles}});
+      const Rendered first = render(scene, reused);
+      ASSERT_GT(count_mask(first, 0, kMaskLit), 0);
+      ShadowMask again(first.mask.width, first.mask.height, kMaskBackground);
+      reused.build(scene, 1, quiet());
+      reused.shade(scene, first.surfaces, again, quiet());
+      ShadowMapMethod fresh = make({{"resolution", "256"}, {"tiles", tiles}});
+      const Rendered expected = render(second, fresh);
+      EXPECT_EQ(count_mask(expected, 0, kMaskLit), 0);  // the ground's top is turned from it
+      EXPECT_EQ(again.pixels, expected.mask.pixels);
+    }
+  }
+}
+
 // Nothing to look up draws nothing: a camera that sees no surface, and one that sees only
 // faces turned from the light.
 TEST(ShadowMap, NoLookupsDrawNoTile) {
