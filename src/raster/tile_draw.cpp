@@ -57,9 +57,11 @@ void draw_small(const ScreenTriangle& t, int xa, int xb, int ya, int yb, std::pt
                 Key* key, std::uint32_t* face) {
   std::int64_t row[3], step_x[3], step_y[3];
   for (int i = 0; i < 3; ++i) {
+    const int j = i == 2 ? 0 : i + 1;
     row[i] = edge_function(t, i, xa, ya);
-    step_x[i] = edge_function(t, i, xa + 1, ya) - row[i];
-    step_y[i] = edge_function(t, i, xa, ya + 1) - row[i];
+    // The edge function's steps from one pixel centre to the next (edge_function).
+    step_x[i] = -std::int64_t(t.y[j] - t.y[i]) * kSubpixel;
+    step_y[i] = std::int64_t(t.x[j] - t.x[i]) * kSubpixel;
   }
   for (int py = ya; py <= yb; ++py) {
     const std::ptrdiff_t at = (py - ya) * pitch;
