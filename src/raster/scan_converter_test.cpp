@@ -68,6 +68,25 @@ PolygonSoup jittered_sheet(int n, double half, std::uint32_t seed) {
   return s;
 }
 
+// Vertices snap to fixed point as std::llround would: halves away from zero, and the
+// doubles either side of each half to the nearer integer.
+TEST(ScanConverter, SnappingRoundsAsLlround) {
+  EXPECT_EQ(raster::round_to_integer(0.49999999999999994), 0);
+  EXPECT_EQ(raster::round_to_integer(0.5), 1);
+  EXPECT_EQ(raster::round_to_integer(-0.5), -1);
+  EXPECT_EQ(raster::round_to_integer(-0.0), 0);
+  EXPECT_EQ(raster::round_to_integer(4503599627370495.5), 4503599627370496);  // 2^52 - 1/2
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> coordinate(-1e9, 1e9);
+  for (int i = 0; i < 100000; ++i) {
+    const double half = std::floor(coordinate(random)) + 0.5;
+    for (const double x : {half, std::nextafter(half, -1e300), std::nextafter(half, 1e300),
+                           coordinate(random)}) {
+      ASSERT_EQ(raster::round_to_integer(x), std::llround(x)) << std::hexfloat << x;
+    }
+  }
+}
+
 TEST(ScanConverter, SharedEdgesCoverEveryPixelExactlyOnce) {
   for (std::uint32_t seed : {1u, 2u, 3u}) {
     // The sheet is larger than the view: every pixel must be covered once, none twice.

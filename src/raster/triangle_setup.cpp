@@ -68,8 +68,8 @@ DepthPlane depth_plane(const Plane& plane, const RasterProjection& p) {
 }
 
 FixedPoint to_fixed(const RasterProjection& p, Vec3 v) {
-  return {std::llround(p.pixel_x(v) * double(kSubpixel)),
-          std::llround(p.pixel_y(v) * double(kSubpixel))};
+  return {round_to_integer(p.pixel_x(v) * double(kSubpixel)),
+          round_to_integer(p.pixel_y(v) * double(kSubpixel))};
 }
 
 // Where edge (p, q) crosses a clip plane. The endpoints are taken in a canonical order so

@@ -1,6 +1,7 @@
 #pragma once
 // Triangle setup for the scan converter: clipping in view space and fixed-point edges.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -18,6 +19,13 @@ inline constexpr std::int64_t kSubpixel = 1 << kSubpixelBits;
 /// Triangles are clipped to the raster plus this margin in pixels, which keeps fixed-point
 /// edge functions well inside 64 bits.
 inline constexpr double kGuardBand = 4096;
+
+/// std::llround(\p x), halves away from zero, for |x| < 2^52, inline where the library's is a
+/// call per coordinate: the sum rounds across an integer only where x + 1/2 reaches it
+/// (0.5 - 2^-54 is the double just below a half).
+inline std::int64_t round_to_integer(double x) {
+  return std::int64_t(std::trunc(x + std::copysign(0.49999999999999994, x)));
+}
 
 /// \brief A triangle ready for scan conversion: positively oriented fixed-point vertices (in
 /// pixel coordinates, y down; clockwise as seen on screen) with
