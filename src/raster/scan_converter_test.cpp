@@ -80,8 +80,8 @@ TEST(ScanConverter, SnappingRoundsAsLlround) {
   std::uniform_real_distribution<double> coordinate(-1e9, 1e9);
   for (int i = 0; i < 100000; ++i) {
     const double half = std::floor(coordinate(random)) + 0.5;
-    for (const double x : {half, std::nextafter(half, -1e300), std::nextafter(half, 1e300),
-                           coordinate(random)}) {
+    for (const double x :
+         {half, std::nextafter(half, -1e300), std::nextafter(half, 1e300), coordinate(random)}) {
       ASSERT_EQ(raster::round_to_integer(x), std::llround(x)) << std::hexfloat << x;
     }
   }
@@ -177,8 +177,8 @@ TEST(ScanConverter, BlocksRejectedByTheEdgeTestHoldNoOwnedPixel) {
           for (int bx = 0; bx < owned.width; ++bx) {
             const int xa = t.min_x + 8 * bx, ya = t.min_y + 8 * by;
             ++blocks;
-            if (raster::may_own_pixel_in(t, xa, std::min(xa + 7, t.max_x), ya,
-                                         std::min(ya + 7, t.max_y))) {
+            if (raster::may_own_pixel_in(t, xa, std::min(xa + 7, int(t.max_x)), ya,
+                                         std::min(ya + 7, int(t.max_y)))) {
               continue;
             }
             ++rejected;

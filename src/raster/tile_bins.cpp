@@ -14,15 +14,15 @@ TileBins::TileBins(const ScreenTriangles& tris, int width, int height)
   const std::size_t tiles = std::size_t(tiles_x) * tiles_y;
   const auto for_each_tile = [&](std::uint32_t chunk, auto&& fn) {
     tris.for_each_in_chunk(chunk, [&](std::uint32_t t, const ScreenTriangle& s) {
-      const int tx0 = s.min_x / kTile, tx1 = s.max_x / kTile;
-      const int ty0 = s.min_y / kTile, ty1 = s.max_y / kTile;
+      const int tx0 = int(s.min_x) / kTile, tx1 = int(s.max_x) / kTile;
+      const int ty0 = int(s.min_y) / kTile, ty1 = int(s.max_y) / kTile;
       const bool one_tile = tx0 == tx1 && ty0 == ty1;
       for (int ty = ty0; ty <= ty1; ++ty) {
         for (int tx = tx0; tx <= tx1; ++tx) {
-          if (one_tile || may_own_pixel_in(s, std::max(s.min_x, tx * kTile),
-                                           std::min(s.max_x, tx * kTile + kTile - 1),
-                                           std::max(s.min_y, ty * kTile),
-                                           std::min(s.max_y, ty * kTile + kTile - 1))) {
+          if (one_tile || may_own_pixel_in(s, std::max(int(s.min_x), tx * kTile),
+                                           std::min(int(s.max_x), tx * kTile + kTile - 1),
+                                           std::max(int(s.min_y), ty * kTile),
+                                           std::min(int(s.max_y), ty * kTile + kTile - 1))) {
             fn(std::size_t(ty) * tiles_x + tx, t);
           }
         }

@@ -133,11 +133,11 @@ template <typename Key>
 std::uint64_t TileDepth<Key>::showing(const ScreenTriangle& t, const BlockRange& r) {
   std::uint64_t shows = 0;
   for (int by = r.by0; by <= r.by1; ++by) {
-    const int ya = std::max(t.min_y, y0_ + by * kBlock);
-    const int yb = std::min({t.max_y, y0_ + by * kBlock + kBlock - 1, y0_ + h_ - 1});
+    const int ya = std::max(int(t.min_y), y0_ + by * kBlock);
+    const int yb = std::min({int(t.max_y), y0_ + by * kBlock + kBlock - 1, y0_ + h_ - 1});
     for (int bx = r.bx0; bx <= r.bx1; ++bx) {
-      const int xa = std::max(t.min_x, x0_ + bx * kBlock);
-      const int xb = std::min({t.max_x, x0_ + bx * kBlock + kBlock - 1, x0_ + w_ - 1});
+      const int xa = std::max(int(t.min_x), x0_ + bx * kBlock);
+      const int xb = std::min({int(t.max_x), x0_ + bx * kBlock + kBlock - 1, x0_ + w_ - 1});
       const double nearest = nearest_key(t, xa, xb, ya, yb);
       const int b = by * kBlocks + bx;
       if (nearest < far_[b]) continue;
@@ -160,15 +160,16 @@ void TileDepth<Key>::draw_triangles(const ScreenTriangles& tris,
   const int xe = x0_ + w_ - 1, ye = y0_ + h_ - 1;
   for (const std::uint32_t id : bin) {
     const ScreenTriangle& t = tris[id];
-    order.push_back(nearest_first(nearest_key(t, std::max(x0_, t.min_x), std::min(xe, t.max_x),
-                                              std::max(y0_, t.min_y), std::min(ye, t.max_y)),
-                                  id));
+    order.push_back(
+        nearest_first(nearest_key(t, std::max(x0_, int(t.min_x)), std::min(xe, int(t.max_x)),
+                                  std::max(y0_, int(t.min_y)), std::min(ye, int(t.max_y))),
+                      id));
   }
   std::sort(order.begin(), order.end());
   for (const std::uint64_t entry : order) {
     const ScreenTriangle& t = tris[std::uint32_t(entry)];
-    const int ya = std::max(y0_, t.min_y), yb = std::min(ye, t.max_y);
-    const int xa0 = std::max(x0_, t.min_x), xb0 = std::min(xe, t.max_x);
+    const int ya = std::max(y0_, int(t.min_y)), yb = std::min(ye, int(t.max_y));
+    const int xa0 = std::max(x0_, int(t.min_x)), xb0 = std::min(xe, int(t.max_x));
     const BlockRange r = blocks(xa0, xb0, ya, yb);
     // Blocks where nearer surfaces hide the triangle are skipped: a large triangle partly
     // behind others draws only where it may show, and one hidden everywhere not at all.

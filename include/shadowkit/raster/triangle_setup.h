@@ -30,17 +30,20 @@ inline std::int64_t round_to_integer(double x) {
 /// \brief A triangle ready for scan conversion: positively oriented fixed-point vertices (in
 /// pixel coordinates, y down; clockwise as seen on screen) with
 /// the top-left rule folded into the edge biases, and the depth-key plane of its face.
-/// 72 bytes: a frame sets up and bins hundreds of thousands, and reads each several times.
-/// Fixed-point corners fit 32 bits within the guard band; edge functions take them to 64.
-struct ScreenTriangle {
+/// One cache line: a frame sets up and bins hundreds of thousands, and reads each several
+/// times. Fixed-point corners fit 32 bits within the guard band; edge functions take them to
+/// 64. Pixel bounds fit 16 bits on the largest raster.
+struct alignas(64) ScreenTriangle {
   // Corners within the guard band of the largest raster, a camera's image or a depth map.
   static_assert((limits::kImageSide + 2 * kGuardBand) * kSubpixel < 2147483647.0);
-  double key_a, key_b, key_c;      ///< depth key = a * px + b * py + c at pixel centre (px, py)
-  std::int32_t x[3], y[3];         ///< fixed point
-  int min_x, min_y, max_x, max_y;  ///< pixel bounds, clamped to the raster
+  static_assert(limits::kImageSide <= 32767);
+  double key_a, key_b, key_c;  ///< depth key = a * px + b * py + c at pixel centre (px, py)
+  std::int32_t x[3], y[3];     ///< fixed point
+  std::int16_t min_x, min_y, max_x, max_y;  ///< pixel bounds, clamped to the raster
   std::uint32_t face;
   std::int8_t bias[3];  ///< 0 if the edge owns pixel centres on it, 1 otherwise
 };
+static_assert(sizeof(ScreenTriangle) == 64);
 
 /// Edge \p i's function at the centre of pixel (\p px, \p py): the triangle owns the pixel
 /// where all three are >= 0 (EdgeWalker follows where they change sign).
