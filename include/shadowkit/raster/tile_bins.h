@@ -56,12 +56,21 @@ class TileDepth {
   struct BlockRange {
     int bx0, bx1, by0, by1;
   };
+  /// Pixels [xa, xb] x [ya, yb] of the tile.
+  struct PixelRange {
+    int xa, xb, ya, yb;
+    int area() const { return (xb - xa + 1) * (yb - ya + 1); }
+  };
+  /// The pixels of the tile within \p t's bounds.
+  PixelRange pixels_of(const ScreenTriangle& t) const;
   BlockRange blocks(int xa, int xb, int ya, int yb) const;
   bool hidden(const BlockRange& r, double nearest) const;
   std::uint64_t showing(const ScreenTriangle& t, const BlockRange& r);
   void refresh(int block);
   template <bool kFaces>
   void draw_triangles(const ScreenTriangles& tris, std::span<const std::uint32_t> bin);
+  template <bool kFaces>
+  void draw_triangle(const ScreenTriangle& t);
 
   int x0_ = 0, y0_ = 0, w_ = 0, h_ = 0;
   Key* key_ = nullptr;
