@@ -98,39 +98,41 @@ Polygon clip(Polygon poly, const std::array<ClipPlane, kClipPlanes>& planes, uns
   return poly;
 }
 
+// Antisymmetric ownership of the pixel centres on edge (from, to): of two triangles on
+// either side of it, exactly one owns them (0: this one, 1: the other).
+std::int8_t edge_bias(FixedPoint from, FixedPoint to) {
+  const std::int64_t dx = to.x - from.x, dy = to.y - from.y;
+  return (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1;
+}
+
 class TriangleBuilder {
  public:
   TriangleBuilder(const RasterProjection& view, std::vector<ScreenTriangle>& out)
       : view_(view), out_(out) {}
 
   void emit(FixedPoint v0, FixedPoint v1, FixedPoint v2, const DepthPlane& k, std::uint32_t face) {
-    std::int64_t area = (v1.x - v0.x) * (v2.y - v0.y) - (v1.y - v0.y) * (v2.x - v0.x);
+    const std::int64_t area = (v1.x - v0.x) * (v2.y - v0.y) - (v1.y - v0.y) * (v2.x - v0.x);
     if (area == 0) return;
     if (area < 0) std::swap(v1, v2);
-    ScreenTriangle t;
-    const FixedPoint v[3] = {v0, v1, v2};
-    for (int i = 0; i < 3; ++i) {
-      t.x[i] = std::int32_t(v[i].x);
-      t.y[i] = std::int32_t(v[i].y);
-      const FixedPoint d{v[(i + 1) % 3].x - v[i].x, v[(i + 1) % 3].y - v[i].y};
-      // Antisymmetric ownership: of two triangles on either side of an edge, exactly one
-      // owns the pixel centres lying on it.
-      t.bias[i] = (d.y < 0 || (d.y == 0 && d.x > 0)) ? 0 : 1;
-    }
     const auto lo = [](std::int64_t a) {
       return int((a - kSubpixel / 2 + kSubpixel - 1) >> kSubpixelBits);
     };
     const auto hi = [](std::int64_t a) { return int((a - kSubpixel / 2) >> kSubpixelBits); };
-    t.min_x = std::max(0, lo(std::min({v0.x, v1.x, v2.x})));
-    t.min_y = std::max(0, lo(std::min({v0.y, v1.y, v2.y})));
-    t.max_x = std::min(view_.width - 1, hi(std::max({v0.x, v1.x, v2.x})));
-    t.max_y = std::min(view_.height - 1, hi(std::max({v0.y, v1.y, v2.y})));
-    if (t.min_x > t.max_x || t.min_y > t.max_y) return;
-    t.key_a = k.a;
-    t.key_b = k.b;
-    t.key_c = k.c;
+    const int min_x = std::max(0, lo(std::min({v0.x, v1.x, v2.x})));
+    const int min_y = std::max(0, lo(std::min({v0.y, v1.y, v2.y})));
+    const int max_x = std::min(view_.width - 1, hi(std::max({v0.x, v1.x, v2.x})));
+    const int max_y = std::min(view_.height - 1, hi(std::max({v0.y, v1.y, v2.y})));
+    if (min_x > max_x || min_y > max_y) return;
+    // Built in place, corner by corner from the arguments' registers: a temporary, or an
+    // array of the corners, stalls on its own stores (a tenth of a million-triangle frame).
+    ScreenTriangle& t = out_.emplace_back();
+    t.key_a = k.a, t.key_b = k.b, t.key_c = k.c;
+    t.x[0] = std::int32_t(v0.x), t.x[1] = std::int32_t(v1.x), t.x[2] = std::int32_t(v2.x);
+    t.y[0] = std::int32_t(v0.y), t.y[1] = std::int32_t(v1.y), t.y[2] = std::int32_t(v2.y);
+    t.min_x = std::int16_t(min_x), t.min_y = std::int16_t(min_y);
+    t.max_x = std::int16_t(max_x), t.max_y = std::int16_t(max_y);
     t.face = face;
-    out_.push_back(t);
+    t.bias[0] = edge_bias(v0, v1), t.bias[1] = edge_bias(v1, v2), t.bias[2] = edge_bias(v2, v0);
   }
 
  private:
@@ -392,7 +394,13 @@ ScreenTriangles setup_cluster_triangles(const Scene& scene, const RasterProjecti
     chunks[c].reserve(end - c * kChunkTriangles);
     for (std::size_t i = c * kChunkTriangles; i < end; ++i) {
       // In cluster order, triangles are scattered over the scene's face planes and vertex
-      // positions: those of a triangle a few ahead start loading now.
+      // positions: those of a triangle a few ahead start loading now, and the entry of a
+      // triangle twice as far ahead, which names them (the next cluster's, at its start).
+      if (i + 2 * kLoadAhead < end) {
+        const std::uint32_t further = entries[i + 2 * kLoadAhead];
+        prefetch(clusters.faces[further]);
+        prefetch(clusters.corners[further]);
+      }
       if (i + kLoadAhead < end) {
         const std::uint32_t ahead = entries[i + kLoadAhead];
         prefetch(scene.face_plane(clusters.faces[ahead]));
