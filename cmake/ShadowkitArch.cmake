@@ -17,6 +17,8 @@ if(SHADOWKIT_ARCH STREQUAL "auto")
 else()
   set(SHADOWKIT_MARCH ${SHADOWKIT_ARCH})
 endif()
+# For the benchmark pages, which name the build (scripts/benchmarks.sh).
+set(SHADOWKIT_MARCH ${SHADOWKIT_MARCH} CACHE INTERNAL "-march of Release builds")
 if(CMAKE_BUILD_TYPE STREQUAL "Release")
   message(STATUS "shadowkit: Release build for -march=${SHADOWKIT_MARCH}")
 endif()

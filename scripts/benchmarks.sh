@@ -114,6 +114,7 @@ cache=$build_dir/CMakeCache.txt
 cache_value() { sed -n "s/^$1:[A-Z]*=//p" "$cache" 2>/dev/null | head -1; }
 build_type=$(cache_value CMAKE_BUILD_TYPE)
 flags=$(cache_value "CMAKE_CXX_FLAGS_${build_type^^}")
+[[ $build_type == Release ]] && flags="-march=$(cache_value SHADOWKIT_MARCH) $flags"
 compiler=$("$(cache_value CMAKE_CXX_COMPILER)" --version 2>/dev/null | head -1 || true)
 embree=$(cache_value embree_DIR | sed -n 's/.*embree-\([0-9.]*\).*/\1/p')
 command="bash scripts/benchmarks.sh"

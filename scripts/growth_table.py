@@ -117,8 +117,11 @@ def machine(threads):
     cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo")
                 if l.startswith("model name")), "unknown CPU")
     mem = next(int(l.split()[1]) for l in open("/proc/meminfo") if l.startswith("MemTotal"))
+    cache = pathlib.Path(SHADOWKIT).resolve().parent / "CMakeCache.txt"
+    march = next((l.split("=", 1)[1].strip() for l in cache.read_text().splitlines()
+                  if l.startswith("SHADOWKIT_MARCH:")), "") if cache.exists() else ""
     return {"cpu": cpu, "cores": os.cpu_count(), "memory_gb": f"{mem / 2**20:.0f}",
-            "threads": threads or ""}
+            "threads": threads or "", "march": march}
 
 
 def measure(args, scenes, methods, work):
@@ -367,8 +370,9 @@ def report(work, out):
     w("```")
     w("")
     w(f"- **Machine**: {meta['cpu']}, {meta['cores']} cores (`nproc`), {meta['memory_gb']} GB "
-      "memory. " + (f"Every command runs with `--threads {meta['threads']}`."
-                    if meta.get("threads") else "Every command uses every core."))
+      "memory" + (f"; a Release build for `-march={meta['march']}`" if meta.get("march") else "")
+      + ". " + (f"Every command runs with `--threads {meta['threads']}`."
+                if meta.get("threads") else "Every command uses every core."))
     resolutions = sorted({r["resolution"] for r in scene_rows})
     w(f"- **Resolution**: {', '.join(resolutions)} on every scene: the shaded pixels stay the "
       "same while the triangles grow, so what grows with the scene is each method's work per "

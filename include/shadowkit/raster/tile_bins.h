@@ -23,9 +23,9 @@ struct TileBins {
 
 /// \brief One tile's nearest depth keys (and faces), drawn into batch after batch, with one
 /// level of hierarchical depth (Greene, Kass & Miller 1993) over its blocks of 8 x 8 pixels:
-/// each block's farthest key so far. Triangles go nearest first, so that most of those hidden
-/// behind nearer ones meet full blocks and are dropped whole: a cube field seen at a low angle
-/// stacks dozens of triangles on a pixel.
+/// each block's farthest key so far. Large triangles go first, nearest first, so that most of
+/// those hidden behind nearer ones meet full blocks and are dropped whole: a cube field seen
+/// at a low angle stacks dozens of triangles on a pixel. Small ones follow as they came.
 ///
 /// \p Key: double for the camera's keys, exact to the rounding of each face's plane; float
 /// for a light's depth map, which stores float depth: each key summed in double and rounded,
