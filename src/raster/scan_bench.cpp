@@ -34,6 +34,7 @@ void BM_VisibleSurfaces(benchmark::State& state) {
   visible_surfaces(state, "cubes");
 }
 BENCHMARK(BM_VisibleSurfaces)
+    ->Arg(125)
     ->Arg(2000)
     ->Arg(8000)
     ->Arg(30000)
