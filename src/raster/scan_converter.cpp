@@ -139,14 +139,19 @@ class TileFrame {
       thread_local Scratch scratch;
       const bool drawing = bins.start[t + 1] > bins.start[t];
       const bool started = key_ != nullptr && reached_[t];
-      if (!drawing && !started && !(last && output_.empty_tiles)) return;
+      const int x0 = (t % tiles_x_) * kTile, y0 = (t / tiles_x_) * kTile;
+      const int w = std::min(kTile, width_ - x0), h = std::min(kTile, height_ - y0);
+      if (!drawing && !started) {
+        if constexpr (kFaces) {
+          if (last && output_.empty_tiles) fn(Tile{x0, y0, w, h});  // empty(): not drawn
+        }
+        return;
+      }
       // Kept while a later batch may draw into it; otherwise drawn in the thread's own.
       const bool kept = key_ != nullptr && (drawing || started);
       const std::size_t slot = std::size_t(t) * kTilePixels;
-      const int x0 = (t % tiles_x_) * kTile, y0 = (t / tiles_x_) * kTile;
       Key* key = kept ? key_ + slot : scratch.key;
       std::uint32_t* face = !kFaces ? nullptr : kept ? face_ + slot : scratch.face;
-      const int w = std::min(kTile, width_ - x0), h = std::min(kTile, height_ - y0);
       Tile r{x0, y0, w, h, key};
       if constexpr (kFaces) r.face = face;
       raster::TileDepth<Key>& depth = kept ? depth_[t] : scratch.depth;
@@ -291,6 +296,11 @@ DepthFaceBuffer ScanConverter::rasterize(const RasterProjection& view, const Con
   rasterize_tiles(view, ctx, [&](const RasterTile& tile) {
     for (int y = 0; y < tile.height; ++y) {
       const std::size_t dst = std::size_t(tile.y0 + y) * view.width + tile.x0;
+      if (tile.empty()) {
+        std::fill_n(out.depth_key.begin() + std::ptrdiff_t(dst), tile.width, -INFINITY);
+        std::fill_n(out.face.begin() + std::ptrdiff_t(dst), tile.width, kNoFace);
+        continue;
+      }
       std::transform(tile.depth_key + y * tile.width, tile.depth_key + (y + 1) * tile.width,
                      out.depth_key.begin() + std::ptrdiff_t(dst),
                      [](double k) { return float(k); });

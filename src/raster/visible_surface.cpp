@@ -70,20 +70,24 @@ void render_visible_surfaces(const Scene& scene, const Context& ctx, VisibleSurf
         for (int y = 0; y < tile.height; ++y) {
           const float y2 = float(std::pow(grid.y0 - grid.step * (tile.y0 + y), 2));
           const std::size_t row = std::size_t(tile.y0 + y) * cam.width + tile.x0;
-          const double* key = tile.depth_key + y * tile.width;
           const float* x2 = column_x2.data() + tile.x0;
           float* depth = vsb.depth.data() + row;
-          const std::uint32_t* face = tile.face + y * tile.width;
-          std::copy_n(face, tile.width, vsb.face.begin() + std::ptrdiff_t(row));
+          const std::uint32_t* face = tile.empty() ? nullptr : tile.face + y * tile.width;
+          if (face) {
+            std::copy_n(face, tile.width, vsb.face.begin() + std::ptrdiff_t(row));
+          } else {
+            std::fill_n(vsb.face.begin() + std::ptrdiff_t(row), tile.width, kNoFace);
+          }
           // Tiles are coverage blocks, so each tile writes its own flags.
-          const bool covered =
-              std::any_of(face, face + tile.width, [](std::uint32_t f) { return f != kNoFace; });
+          const bool covered = face && std::any_of(face, face + tile.width,
+                                                   [](std::uint32_t f) { return f != kNoFace; });
           vsb.block_covered[std::size_t(tile.y0 + y) * vsb.blocks_per_row() +
                             std::size_t(tile.x0 / VisibleSurfaceBuffer::kCoverageBlock)] = covered;
           if (!covered) {
             std::fill_n(depth, tile.width, INFINITY);  // what the keys of -inf give
             continue;
           }
+          const double* key = tile.depth_key + y * tile.width;
           for (int x = 0; x < tile.width; ++x) {
             // Background keys are -inf and give a depth of +inf.
             depth[x] = std::sqrt(1.0f + x2[x] + y2) / std::max(float(key[x]), 0.0f);

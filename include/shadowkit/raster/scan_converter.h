@@ -27,6 +27,9 @@ struct RasterTile {
   int x0 = 0, y0 = 0, width = 0, height = 0;
   const double* depth_key = nullptr;  ///< exact to double rounding of the face plane
   const std::uint32_t* face = nullptr;
+  /// No triangle reached the tile (keys and faces null): every pixel is background, key
+  /// -inf and face kNoFace. Most of a view of the sky is handed on without being drawn.
+  bool empty() const { return face == nullptr; }
 };
 
 /// \brief One finished tile of a depth map: keys alone, in float (a map stores float depth).
@@ -57,7 +60,8 @@ class ScanConverter {
 
   /// Calls \p fn once per finished tile, from several threads at once: the building block
   /// of rasterize() and of passes that post-process a tile while it is in cache. \p fn must
-  /// not start parallel work itself: the tile's buffer is the worker thread's own.
+  /// not start parallel work itself: the tile's buffer is the worker thread's own. A tile
+  /// no triangle reaches comes empty (RasterTile::empty), without buffers.
   void rasterize_tiles(const RasterProjection& view, const Context& ctx,
                        const std::function<void(const RasterTile&)>& fn) const;
   /// Per tile of a raster (row by row, kTileSize pixels a side), whether it is wanted.

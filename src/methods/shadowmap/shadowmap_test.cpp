@@ -362,6 +362,7 @@ TEST(ShadowMap, CubeMapEdgesAndCornersLookUpCorrectly) {
 std::vector<float> scan_converter_depths(const Scene& scene, const RasterProjection& view) {
   std::vector<float> depth(std::size_t(view.width) * view.height, INFINITY);
   ScanConverter(scene).rasterize_tiles(view, quiet(), [&](const RasterTile& tile) {
+    if (tile.empty()) return;
     for (int y = 0; y < tile.height; ++y) {
       for (int x = 0; x < tile.width; ++x) {
         const int k = y * tile.width + x;
