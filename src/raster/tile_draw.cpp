@@ -75,9 +75,24 @@ int draw_span_by_four(double row, double key_a, std::uint32_t id, int xa, int xb
   return px;
 }
 
-// One triangle's span of row py, columns [xa, xb]: depth-tested into \p key and, with faces,
-// \p face. Between equally near triangles the lower face id wins, which is the first in
-// triangle order whatever order they are drawn in.
+// Pixel \p px of a triangle's row whose keys are \p key_a * x + \p row: depth-tested into
+// \p key and, with faces, \p face. Between equally near triangles the lower face id wins,
+// which is the first in triangle order whatever order they are drawn in.
+template <bool kFaces, typename Key>
+void draw_pixel(double row, double key_a, std::uint32_t id, int px, Key* key, std::uint32_t* face) {
+  // Summed in double: a float key is the double one rounded, as a map stores it.
+  const Key z = Key(key_a * px + row);
+  if constexpr (kFaces) {
+    if (z > key[px] || (z == key[px] && id < face[px])) {
+      key[px] = z;
+      face[px] = id;
+    }
+  } else {
+    key[px] = z > key[px] ? z : key[px];
+  }
+}
+
+// One triangle's span of row py, columns [xa, xb], pixel by pixel as draw_pixel.
 template <bool kFaces, typename Key>
 void draw_span(const ScreenTriangle& t, int py, int xa, int xb, Key* key, std::uint32_t* face) {
   // Locals, so the compiler need not reload them after every store to the tile.
@@ -85,18 +100,7 @@ void draw_span(const ScreenTriangle& t, int py, int xa, int xb, Key* key, std::u
   const std::uint32_t id = t.face;
   int px = xa;
   if constexpr (kFaces) px = draw_span_by_four(row, key_a, id, xa, xb, key, face);
-  for (; px <= xb; ++px) {
-    // Summed in double: a float key is the double one rounded, as a map stores it.
-    const Key z = Key(key_a * px + row);
-    if constexpr (kFaces) {
-      if (z > key[px] || (z == key[px] && id < face[px])) {
-        key[px] = z;
-        face[px] = id;
-      }
-    } else {
-      key[px] = z > key[px] ? z : key[px];
-    }
-  }
+  for (; px <= xb; ++px) draw_pixel<kFaces>(row, key_a, id, px, key, face);
 }
 
 // A triangle with few pixels in its rectangle [xa, xb] x [ya, yb]: each pixel centre tested
@@ -115,11 +119,12 @@ void draw_small(const ScreenTriangle& t, int xa, int xb, int ya, int yb, std::pt
   }
   for (int py = ya; py <= yb; ++py) {
     const std::ptrdiff_t at = (py - ya) * pitch;
+    const double key_row = t.key_b * py + t.key_c;
     std::int64_t e0 = row[0], e1 = row[1], e2 = row[2];
     for (int px = xa; px <= xb; ++px, e0 += step_x[0], e1 += step_x[1], e2 += step_x[2]) {
       // All three >= 0: no sign bit in their OR.
       if ((e0 | e1 | e2) >= 0)
-        draw_span<kFaces>(t, py, px, px, key + at, kFaces ? face + at : face);
+        draw_pixel<kFaces>(key_row, t.key_a, t.face, px, key + at, kFaces ? face + at : face);
     }
     for (int i = 0; i < 3; ++i) row[i] += step_y[i];
   }
