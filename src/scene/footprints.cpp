@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "shadowkit/core/convex_hull.h"
+#include "shadowkit/core/prefetch.h"
 
 namespace shadowkit {
 namespace {
@@ -160,6 +161,15 @@ class FaceGrid {
     return true;
   }
 
+  /// Starts loading the cells of \p r (covers and add read and write them).
+  void prefetch(const CellRect& r) const {
+    for (int y = r.y0; y <= r.y1; ++y) {
+      const float* row = cells_.data() + std::size_t(y) * side_;
+      __builtin_prefetch(row + r.x0);
+      __builtin_prefetch(row + r.x1);
+    }
+  }
+
   // Adds the convex footprint \p plane_hull (plane coordinates) reaching as far as \p reach
   // to the cells it covers wholly: a cell's rows y and y + 1 cross it within the cell's
   // columns.
@@ -297,8 +307,18 @@ std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& lig
   const double tolerance = 1e-9 * (scene_bounds.diagonal() + length(scene_bounds.center()) +
                                    (light.type == Light::Type::point ? length(light.position) : 0));
   // Nearest the light first: a sub-object is tested against the footprints of nearer ones.
+  // They lie all over the grids: the cells and footprint of one a few ahead start loading now.
+  constexpr std::size_t kLoadAhead = 8;
   std::vector<char> shadowed(parts.size(), 0);
-  for (const SubObjectView& v : views) {
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    const SubObjectView& v = views[i];
+    if (i + kLoadAhead < views.size() && views[i + kLoadAhead].box_face >= 0) {
+      const SubObjectView& ahead = views[i + kLoadAhead];
+      const FaceGrid& grid = grids[std::size_t(ahead.box_face)];
+      if (const std::optional<CellRect> cells = grid.touched(ahead.box_lo, ahead.box_hi))
+        grid.prefetch(*cells);
+      if (ahead.hull_count > 0) prefetch(hulls[ahead.hull_first]);
+    }
     if (v.box_face >= 0) {
       const FaceGrid& grid = grids[std::size_t(v.box_face)];
       const std::optional<CellRect> cells = grid.touched(v.box_lo, v.box_hi);
