@@ -226,15 +226,16 @@ DepthFaceBuffer in_triangle_order(const Scene& scene, const RasterProjection& vi
   return out;
 }
 
-// \p boxes random boxes seen at a low angle, several deep on most pixels, and two coincident
-// squares; looking at \p target.
-Scene random_boxes(int boxes, unsigned seed, Vec3 target = {0, 2, 0}) {
+// \p boxes random boxes seen at a low angle, several deep on most pixels, each as \p copies
+// coincident objects one after another, and two coincident squares; looking at \p target.
+Scene random_boxes(int boxes, unsigned seed, Vec3 target = {0, 2, 0}, int copies = 1) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> u(-10, 10), size(0.2, 1.5);
   std::vector<PolygonSoup> objects;
   for (int i = 0; i < boxes; ++i) {
     const Vec3 lo{u(rng), 0.5 * (u(rng) + 10), u(rng)};
-    objects.push_back(testing::box(lo, lo + Vec3{size(rng), size(rng), size(rng)}));
+    const PolygonSoup box = testing::box(lo, lo + Vec3{size(rng), size(rng), size(rng)});
+    objects.insert(objects.end(), std::size_t(copies), box);
   }
   objects.push_back(testing::horizontal_quad(-30, 30, -30, 30, 0));
   objects.push_back(testing::horizontal_quad(-30, 30, -30, 30, 0));
@@ -290,6 +291,29 @@ void expect_drawn_as_in_triangle_order(int boxes, unsigned seed) {
 
 TEST(ScanConverter, HiddenTrianglesDroppedWholeChangeNoPixel) {
   expect_drawn_as_in_triangle_order(300, 7);
+}
+
+// Every box twice: each pixel of a box ties between its copies, on spans of every length
+// and column, and the first copy's face (the lower id) keeps it, as in triangle order.
+TEST(ScanConverter, CoincidentCopiesKeepTheLowerFaceOnSpansOfEveryLength) {
+  constexpr int kBoxes = 200;
+  const Scene scene = random_boxes(kBoxes, 11, {0, 2, 0}, 2);
+  const RasterProjection view = RasterProjection::from_camera(scene.camera, 1e-3);
+  const DepthFaceBuffer tiles = ScanConverter(scene).rasterize(view, {});
+  const DepthFaceBuffer reference = in_triangle_order(scene, view, [&](std::uint32_t f) {
+    return scene.outward_solids().far_side_from(scene, f, view.eye);
+  });
+  std::size_t first_copy = 0;
+  for (std::size_t i = 0; i < tiles.face.size(); ++i) {
+    ASSERT_EQ(tiles.face[i], reference.face[i]) << "pixel " << i;
+    ASSERT_EQ(tiles.depth_key[i], reference.depth_key[i]) << "pixel " << i;
+    if (tiles.face[i] == kNoFace) continue;
+    const std::uint32_t object = scene.object_of_face(tiles.face[i]);
+    if (object >= 2 * kBoxes) continue;  // the ground
+    ASSERT_EQ(object % 2, 0u) << "pixel " << i;
+    ++first_copy;
+  }
+  EXPECT_GT(first_copy, 2000u);
 }
 
 // A light's depth tiles hold the keys of the full pass, rounded to float, in the tiles that
