@@ -29,18 +29,25 @@ std::uint64_t nearest_first(double nearest, std::uint32_t id) {
   return std::uint64_t(~ascending) << 32 | id;
 }
 
-// Four keys in one vector, and a comparison's result on them (all bits set: true).
-template <typename Key>
-struct FourKeys;
+// N keys in one vector, and a comparison's result on them (all bits set: true): four for
+// the span test, and a register's width (AVX2) for a block's farthest key. Spelled out for
+// each: GCC drops a vector size that depends on a template parameter.
+template <typename Key, int N>
+struct KeyVector;
 template <>
-struct FourKeys<double> {
+struct KeyVector<double, 4> {
   using Keys = double __attribute__((vector_size(32)));
   using Mask = std::int64_t __attribute__((vector_size(32)));
 };
 template <>
-struct FourKeys<float> {
+struct KeyVector<float, 4> {
   using Keys = float __attribute__((vector_size(16)));
   using Mask = std::int32_t __attribute__((vector_size(16)));
+};
+template <>
+struct KeyVector<float, 8> {
+  using Keys = float __attribute__((vector_size(32)));
+  using Mask = std::int32_t __attribute__((vector_size(32)));
 };
 
 // draw_span's depth test with faces, four pixels at a time from column \p xa while four
@@ -50,8 +57,8 @@ struct FourKeys<float> {
 template <typename Key>
 int draw_span_by_four(double row, double key_a, std::uint32_t id, int xa, int xb, Key* key,
                       std::uint32_t* face) {
-  using Keys = typename FourKeys<Key>::Keys;
-  using KeyMask = typename FourKeys<Key>::Mask;
+  using Keys = typename KeyVector<Key, 4>::Keys;
+  using KeyMask = typename KeyVector<Key, 4>::Mask;
   using Columns = double __attribute__((vector_size(32)));
   using Faces = std::int32_t __attribute__((vector_size(16)));
   using UnsignedFaces = std::uint32_t __attribute__((vector_size(16)));
@@ -161,23 +168,39 @@ bool TileDepth<Key>::hidden(const BlockRange& r, double nearest) const {
 }
 
 // Takes the farthest key of block \p b; background counts as -inf, farther than anything.
-// Column by column first, in selections the compiler turns into vector minima.
+// A register's width of a row at a time: the compilers leave a loop over its columns scalar,
+// and a tile drawn over by a large face refreshes every block.
 template <typename Key>
 void TileDepth<Key>::refresh(int b) {
+  constexpr int kLanes = 32 / sizeof(Key), kParts = kBlock / kLanes;
+  using Lanes = typename KeyVector<Key, kLanes>::Keys;
+  using LaneMask = typename KeyVector<Key, kLanes>::Mask;
   stale_ &= ~(std::uint64_t(1) << b);
   const int xa = b % kBlocks * kBlock, ya = b / kBlocks * kBlock;
   const int columns = std::min(w_ - xa, kBlock), yb = std::min(h_, ya + kBlock);
-  Key far[kBlock];
-  std::fill_n(far, kBlock, Key(INFINITY));
+  const Lanes beyond = Lanes{} + Key(INFINITY);  // and columns past the tile's edge
+  Lanes far[kParts];
+  std::fill_n(far, kParts, beyond);
   for (int y = ya; y < yb; ++y) {
-    const Key* row = key_ + y * w_ + xa;
-    if (columns == kBlock) {
-      for (int x = 0; x < kBlock; ++x) far[x] = row[x] < far[x] ? row[x] : far[x];
-    } else {
-      for (int x = 0; x < columns; ++x) far[x] = row[x] < far[x] ? row[x] : far[x];
+    const Key* keys = key_ + y * w_ + xa;
+    for (int part = 0; part < kParts; ++part) {
+      Lanes row = beyond;
+      if (columns == kBlock) {
+        std::memcpy(&row, keys + part * kLanes, sizeof row);
+      } else {
+        for (int x = part * kLanes; x < std::min(columns, (part + 1) * kLanes); ++x) {
+          row[x - part * kLanes] = keys[x];
+        }
+      }
+      const LaneMask nearer = far[part] < row;
+      far[part] = Lanes((nearer & LaneMask(far[part])) | (~nearer & LaneMask(row)));
     }
   }
-  far_[b] = *std::min_element(far, far + kBlock);
+  Key farthest = INFINITY;
+  for (const Lanes& lanes : far) {
+    for (int x = 0; x < kLanes; ++x) farthest = std::min(farthest, Key(lanes[x]));
+  }
+  far_[b] = farthest;
 }
 
 // The blocks of \p r where triangle \p t may still show: those whose farthest key is not
