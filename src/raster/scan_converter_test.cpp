@@ -147,15 +147,17 @@ TEST(ScanConverter, NearPlaneClippingLeavesNoCracks) {
   EXPECT_EQ(gaps_below_horizon, 0);
 }
 
-// may_own_pixel_in, over every 8 x 8 block of random slivers' bounds: a block it rejects
-// holds no pixel centre the triangle owns, and it rejects most blocks of a long diagonal.
-TEST(ScanConverter, BlocksRejectedByTheEdgeTestHoldNoOwnedPixel) {
+// The edge tests, over every 8 x 8 block of random triangles' bounds: a block that
+// may_own_pixel_in rejects holds no pixel centre the triangle owns, and one that
+// owns_every_pixel_in accepts holds only owned ones. Of slivers, the first rejects most
+// blocks; of wide triangles, the second accepts most of those they own whole.
+TEST(ScanConverter, EdgeTestsBoundTheOwnedPixelsOfEachBlock) {
   std::mt19937 rng(3);
-  std::uniform_real_distribution<double> u(-0.95, 0.95), thin(0.005, 0.05);
+  std::uniform_real_distribution<double> u(-0.95, 0.95), thin(0.005, 0.05), wide(0.3, 0.9);
   PolygonSoup slivers;
-  for (int i = 0; i < 200; ++i) {
+  for (int i = 0; i < 240; ++i) {
     const Vec3 a{u(rng), u(rng), 0}, b{u(rng), u(rng), 0};
-    const Vec3 off = thin(rng) * normalize(Vec3{a.y - b.y, b.x - a.x, 0});
+    const Vec3 off = (i < 200 ? thin(rng) : wide(rng)) * normalize(Vec3{a.y - b.y, b.x - a.x, 0});
     const auto v = std::uint32_t(slivers.positions.size());
     slivers.positions.insert(slivers.positions.end(), {a, b, b + off});
     slivers.add_face({v, v + 1, v + 2});
@@ -163,7 +165,7 @@ TEST(ScanConverter, BlocksRejectedByTheEdgeTestHoldNoOwnedPixel) {
   const Scene scene =
       testing::make_scene(testing::camera({0, 0, 3}, {0, 0, 0}, 256, 256, 40), {}, {slivers});
   const RasterProjection view = RasterProjection::from_camera(scene.camera, 1e-3);
-  std::size_t blocks = 0, rejected = 0;
+  std::size_t sliver_blocks = 0, rejected = 0, whole = 0, accepted = 0;
   raster::setup_triangles(scene, view)
       .for_each([&](std::uint32_t, const raster::ScreenTriangle& t) {
         Image<int> owned((t.max_x - t.min_x) / 8 + 1, (t.max_y - t.min_y) / 8 + 1, 0);
@@ -173,21 +175,29 @@ TEST(ScanConverter, BlocksRejectedByTheEdgeTestHoldNoOwnedPixel) {
           if (!walker.span(x0, x1)) continue;
           for (int x = x0; x <= x1; ++x) ++owned.at((x - t.min_x) / 8, (y - t.min_y) / 8);
         }
+        const bool sliver = t.face < 200;
         for (int by = 0; by < owned.height; ++by) {
           for (int bx = 0; bx < owned.width; ++bx) {
             const int xa = t.min_x + 8 * bx, ya = t.min_y + 8 * by;
-            ++blocks;
-            if (raster::may_own_pixel_in(t, xa, std::min(xa + 7, int(t.max_x)), ya,
-                                         std::min(ya + 7, int(t.max_y)))) {
-              continue;
+            const int xb = std::min(xa + 7, int(t.max_x)), yb = std::min(ya + 7, int(t.max_y));
+            const int pixels = (xb - xa + 1) * (yb - ya + 1);
+            sliver_blocks += sliver;
+            whole += !sliver && owned.at(bx, by) == pixels;
+            if (raster::owns_every_pixel_in(t, xa, xb, ya, yb)) {
+              accepted += !sliver;
+              ASSERT_EQ(owned.at(bx, by), pixels)
+                  << "block " << bx << "," << by << " of " << t.face;
             }
-            ++rejected;
+            if (raster::may_own_pixel_in(t, xa, xb, ya, yb)) continue;
+            rejected += sliver;
             ASSERT_EQ(owned.at(bx, by), 0) << "block " << bx << "," << by << " of " << t.face;
           }
         }
       });
-  EXPECT_GT(blocks, 10000u);
-  EXPECT_GT(rejected, blocks * 3 / 4) << rejected << " of " << blocks;
+  EXPECT_GT(sliver_blocks, 10000u);
+  EXPECT_GT(rejected, sliver_blocks * 3 / 4) << rejected << " of " << sliver_blocks;
+  EXPECT_GT(whole, 1000u);
+  EXPECT_GT(accepted, whole * 3 / 4) << accepted << " of " << whole;
 }
 
 TEST(ScanConverter, NearestFaceWinsWithoutBackFaceCulling) {

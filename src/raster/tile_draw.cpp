@@ -275,15 +275,10 @@ void TileDepth<Key>::draw_triangle(const ScreenTriangle& t) {
     draw_small<kFaces>(t, xa0, xb0, ya, yb, w_, key_ + row, kFaces ? face_ + row : nullptr);
     return;
   }
-  SpanWalker walker(t, ya);
-  for (int py = ya; py <= yb; ++py, walker.next_row()) {
+  // Row py's span [xa, xb], in the blocks that show, as runs of columns.
+  const auto draw_row = [&](int py, int xa, int xb) {
     const int by = (py - y0_) / kBlock;
-    constexpr std::uint64_t kRowOfBlocks = (1u << kBlocks) - 1;
-    if ((shows >> (by * kBlocks) & kRowOfBlocks) == 0) continue;  // hidden the whole row
-    int xa = xa0, xb = xb0;
-    if (!walker.span(xa, xb)) continue;
     const std::ptrdiff_t row = std::ptrdiff_t(py - y0_) * w_ - x0_;
-    // The span's blocks that show, as runs of columns.
     const unsigned in_span = (2u << (xb - x0_) / kBlock) - (1u << (xa - x0_) / kBlock);
     unsigned runs = unsigned(shows >> (by * kBlocks)) & in_span;
     stale_ |= std::uint64_t(runs) << (by * kBlocks);
@@ -295,6 +290,21 @@ void TileDepth<Key>::draw_triangle(const ScreenTriangle& t) {
                         std::min(xb, x0_ + end * kBlock - 1), key_ + row,
                         kFaces ? face_ + row : nullptr);
     }
+  };
+  constexpr std::uint64_t kRowOfBlocks = (1u << kBlocks) - 1;
+  const auto row_hidden = [&](int py) {
+    return (shows >> ((py - y0_) / kBlock * kBlocks) & kRowOfBlocks) == 0;
+  };
+  if (owns_every_pixel_in(t, xa0, xb0, ya, yb)) {
+    for (int py = ya; py <= yb; ++py) {
+      if (!row_hidden(py)) draw_row(py, xa0, xb0);
+    }
+    return;
+  }
+  SpanWalker walker(t, ya);
+  for (int py = ya; py <= yb; ++py, walker.next_row()) {
+    int xa = xa0, xb = xb0;
+    if (!row_hidden(py) && walker.span(xa, xb)) draw_row(py, xa, xb);
   }
 }
 

@@ -246,14 +246,27 @@ SpanWalker::SpanWalker(const ScreenTriangle& t, int first_row)
     : edges_{EdgeWalker(t, 0, first_row), EdgeWalker(t, 1, first_row),
              EdgeWalker(t, 2, first_row)} {}
 
-bool may_own_pixel_in(const ScreenTriangle& t, int xa, int xb, int ya, int yb) {
+namespace {
+
+// Whether every edge function of \p t is >= 0 at the corner of [xa, xb] x [ya, yb] where it
+// is largest (\p largest) or least: a linear function peaks at a corner.
+bool edges_at_corners(const ScreenTriangle& t, int xa, int xb, int ya, int yb, bool largest) {
   for (int i = 0; i < 3; ++i) {
     const int j = i == 2 ? 0 : i + 1;
-    // At the corner where the edge function is largest.
-    const int px = t.y[j] < t.y[i] ? xb : xa, py = t.x[j] > t.x[i] ? yb : ya;
-    if (edge_function(t, i, px, py) < 0) return false;
+    const bool right = (t.y[j] < t.y[i]) == largest, below = (t.x[j] > t.x[i]) == largest;
+    if (edge_function(t, i, right ? xb : xa, below ? yb : ya) < 0) return false;
   }
   return true;
+}
+
+}  // namespace
+
+bool may_own_pixel_in(const ScreenTriangle& t, int xa, int xb, int ya, int yb) {
+  return edges_at_corners(t, xa, xb, ya, yb, true);
+}
+
+bool owns_every_pixel_in(const ScreenTriangle& t, int xa, int xb, int ya, int yb) {
+  return edges_at_corners(t, xa, xb, ya, yb, false);
 }
 
 ScreenTriangles setup_triangles(const Scene& scene, const RasterProjection& view) {

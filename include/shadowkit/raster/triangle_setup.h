@@ -60,6 +60,11 @@ inline std::int64_t edge_function(const ScreenTriangle& t, int i, std::int64_t p
 /// corner). A triangle's bounds hold many tiles that a thin slanted triangle never reaches.
 bool may_own_pixel_in(const ScreenTriangle& t, int xa, int xb, int ya, int yb);
 
+/// Whether triangle \p t owns every pixel centre in columns [xa, xb] and rows [ya, yb]: each
+/// edge function is >= 0 at the rectangle's corner where it is least. A large face owns the
+/// whole of most tiles it reaches, row after row, without walking its edges.
+bool owns_every_pixel_in(const ScreenTriangle& t, int xa, int xb, int ya, int yb);
+
 /// \brief Screen triangles in chunks, as they were set up in parallel, never copied into one
 /// array: at 360k triangles that copy and the page faults of its fresh storage cost more
 /// than the set-up. An id holds the chunk and the place in it; ids follow triangle order.
