@@ -160,11 +160,10 @@ class EdgeWalker {
       return;
     }
     // Without a branch: whether the remainder carries is as good as random from row to row.
-    q_ += step_q_;
-    r_ += step_r_;
-    const std::int64_t carry = r_ >= abs_a_;
-    r_ -= abs_a_ & -carry;
-    q_ += carry;
+    const std::int64_t r = r_ + step_r_;
+    const std::int64_t carry = r >= abs_a_;
+    r_ = r - (abs_a_ & -carry);
+    q_ += step_q_ + carry;
   }
 
  private:
