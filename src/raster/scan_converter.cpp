@@ -94,6 +94,7 @@ class TileFrame {
     key_ = buffers_->keys.data(), face_ = kFaces ? buffers_->faces.data() : nullptr;
     depth_.resize(tiles);
     reached_.assign(tiles, 0);
+    kept_at_.assign(tiles, nullptr);
   }
   ~TileFrame() {
     if (buffers_) pool<Key>().give(std::move(buffers_));
@@ -149,9 +150,10 @@ class TileFrame {
       }
       // Kept while a later batch may draw into it; otherwise drawn in the thread's own.
       const bool kept = key_ != nullptr && (drawing || started);
-      const std::size_t slot = std::size_t(t) * kTilePixels;
-      Key* key = kept ? key_ + slot : scratch.key;
-      std::uint32_t* face = !kFaces ? nullptr : kept ? face_ + slot : scratch.face;
+      Key* key = kept ? kept_keys(t, w) : scratch.key;
+      std::uint32_t* face = !kFaces ? nullptr
+                            : kept  ? face_ + std::size_t(t) * kTilePixels
+                                    : scratch.face;
       Tile r{x0, y0, w, h, key};
       if constexpr (kFaces) r.face = face;
       raster::TileDepth<Key>& depth = kept ? depth_[t] : scratch.depth;
@@ -167,12 +169,25 @@ class TileFrame {
   }
 
  private:
+  // Where kept tile \p t (\p w pixels wide) is drawn: the caller's storage for a full-width
+  // depth tile, if it has some, else the frame's slot.
+  Key* kept_keys(int t, int w) {
+    Key*& at = kept_at_[std::size_t(t)];
+    if (at != nullptr) return at;
+    if constexpr (!kFaces) {
+      if (output_.keep_in != nullptr && w == kTile) at = (*output_.keep_in)(std::size_t(t));
+    }
+    if (at == nullptr) at = key_ + std::size_t(t) * kTilePixels;
+    return at;
+  }
+
   int width_, height_, tiles_x_, tiles_y_;
   std::unique_ptr<FrameBuffers<Key>> buffers_;
   Key* key_ = nullptr;  ///< tile after tile, when kept between batches
   std::uint32_t* face_ = nullptr;
   std::vector<raster::TileDepth<Key>> depth_;
   std::vector<char> reached_;  ///< per kept tile, whether a batch drew triangles into it
+  std::vector<Key*> kept_at_;  ///< per kept tile, where it is drawn, once started
   TileOutput output_;
 };
 
@@ -255,8 +270,9 @@ void ScanConverter::rasterize_tiles(const RasterProjection& view, const Context&
 
 void ScanConverter::rasterize_depth_tiles(const RasterProjection& view, const Context& /*ctx*/,
                                           const std::function<void(const DepthTile&)>& fn,
-                                          TileMask wanted) const {
-  draw_clusters<DepthTile>(view, {.empty_tiles = false, .wanted = wanted}, fn);
+                                          TileMask wanted, const TileStorage& keep_in) const {
+  draw_clusters<DepthTile>(
+      view, {.empty_tiles = false, .wanted = wanted, .keep_in = keep_in ? &keep_in : nullptr}, fn);
 }
 
 template <typename Tile>

@@ -335,9 +335,89 @@ TEST(ScanConverter, CoincidentCopiesKeepTheLowerFaceOnSpansOfEveryLength) {
   EXPECT_GT(first_copy, 2000u);
 }
 
+// rasterize_depth_tiles of \p scene's \p view against the full pass \p full: the tiles
+// \p wanted marks (all when empty) and only those, each once with the full pass's keys;
+// with \p storage, kept tiles drawn in storage of the test's own, asked once per tile.
+void expect_depth_tiles_of_the_full_pass(const Scene& scene, const RasterProjection& view,
+                                         const DepthFaceBuffer& full,
+                                         const std::vector<std::uint8_t>& wanted, bool storage) {
+  constexpr int kTile = ScanConverter::kTileSize;
+  const int tiles_x = (view.width + kTile - 1) / kTile;
+  const int tiles = tiles_x * ((view.height + kTile - 1) / kTile);
+  const auto is_wanted = [&](std::size_t i) {
+    const std::size_t t = i / view.width / kTile * tiles_x + i % view.width / kTile;
+    return wanted.empty() || wanted[t];
+  };
+  std::vector<double> key(full.depth_key.size(), -INFINITY);
+  std::vector<int> handed(full.depth_key.size(), 0);
+  const auto tile_count = std::size_t(tiles);
+  std::vector<std::vector<float>> kept(tile_count);
+  std::vector<int> asked(tile_count, 0);
+  std::size_t from_storage = 0;
+  std::mutex mutex;
+  ScanConverter::TileStorage keep_in;
+  if (storage) {
+    keep_in = [&](std::size_t t) {
+      std::lock_guard lock(mutex);
+      ++asked[t];
+      kept[t].assign(std::size_t(kTile) * kTile, 0.0f);
+      return kept[t].data();
+    };
+  }
+  ScanConverter(scene).rasterize_depth_tiles(
+      view, {},
+      [&](const DepthTile& tile) {
+        std::lock_guard lock(mutex);
+        const std::size_t t = std::size_t(tile.y0 / kTile) * tiles_x + tile.x0 / kTile;
+        from_storage += !kept[t].empty() && tile.depth_key == kept[t].data();
+        for (int y = 0; y < tile.height; ++y) {
+          for (int x = 0; x < tile.width; ++x) {
+            const std::size_t i = std::size_t(tile.y0 + y) * view.width + tile.x0 + x;
+            key[i] = tile.depth_key[y * tile.width + x];
+            ++handed[i];
+          }
+        }
+      },
+      wanted, keep_in);
+  std::size_t drawn = 0, left_out = 0;
+  for (std::size_t i = 0; i < key.size(); ++i) {
+    ASSERT_LE(handed[i], 1) << "pixel " << i;
+    if (!is_wanted(i)) {
+      ASSERT_EQ(handed[i], 0) << "pixel " << i;
+      continue;
+    }
+    ASSERT_EQ(key[i], full.depth_key[i]) << "pixel " << i;  // both rounded to float
+    drawn += full.face[i] != kNoFace;
+    left_out += handed[i] == 0;
+  }
+  for (int t = 0; t < tiles; ++t) {
+    ASSERT_LE(asked[std::size_t(t)], 1) << "tile " << t;
+    if (asked[std::size_t(t)] == 1) {
+      EXPECT_LT(t % tiles_x, tiles_x - 1);  // the last column of tiles is 11 pixels wide
+    }
+  }
+  const std::size_t asked_tiles = std::size_t(std::count(asked.begin(), asked.end(), 1));
+  EXPECT_EQ(from_storage, asked_tiles);
+  const bool batches = scene.triangles().clusters.size() >= ScanConverter::kCulledClusters;
+  if (storage && batches && wanted.empty()) {
+    EXPECT_GT(asked_tiles, std::size_t(tiles / 2));
+  }
+  if (!batches) {
+    EXPECT_EQ(asked_tiles, 0u);
+  }
+  if (wanted.empty()) {
+    EXPECT_GT(drawn, key.size() / 10);
+    if (scene.triangles().clusters.size() < 10) {
+      EXPECT_GE(left_out, 64u * 64);  // a tile of sky at least
+    }
+  }
+}
+
 // A light's depth tiles hold the keys of the full pass, rounded to float, in the tiles that
 // some triangle reaches, and only those, with one batch and with several; with a mask of
-// wanted tiles (a checkerboard, one tile), only the wanted ones, with the same keys.
+// wanted tiles (a checkerboard, one tile), only the wanted ones, with the same keys. Given
+// storage for kept tiles, the pass asks for it once per full-width tile that several
+// batches draw, and hands those tiles on from it.
 TEST(ScanConverter, DepthTilesAreTheReachedTilesOfTheFullPass) {
   constexpr int kTile = ScanConverter::kTileSize;
   for (const int boxes : {3, 300, 4000}) {
@@ -349,46 +429,13 @@ TEST(ScanConverter, DepthTilesAreTheReachedTilesOfTheFullPass) {
     std::vector<std::uint8_t> checkerboard(std::size_t(tiles), 0), one(std::size_t(tiles), 0);
     for (int t = 0; t < tiles; ++t) checkerboard[t] = (t % tiles_x + t / tiles_x) % 2;
     one[std::size_t(tiles / 2)] = 1;
-    for (const std::vector<std::uint8_t>& wanted :
-         {std::vector<std::uint8_t>{}, checkerboard, one}) {
-      SCOPED_TRACE(std::to_string(boxes) + " boxes, " + std::to_string(wanted.size()) + " tiles");
-      const auto is_wanted = [&](std::size_t i) {
-        const std::size_t t = i / view.width / kTile * tiles_x + i % view.width / kTile;
-        return wanted.empty() || wanted[t];
-      };
-      std::vector<double> key(full.depth_key.size(), -INFINITY);
-      std::vector<int> handed(full.depth_key.size(), 0);
-      std::mutex mutex;
-      ScanConverter(scene).rasterize_depth_tiles(
-          view, {},
-          [&](const DepthTile& tile) {
-            std::lock_guard lock(mutex);
-            for (int y = 0; y < tile.height; ++y) {
-              for (int x = 0; x < tile.width; ++x) {
-                const std::size_t i = std::size_t(tile.y0 + y) * view.width + tile.x0 + x;
-                key[i] = tile.depth_key[y * tile.width + x];
-                ++handed[i];
-              }
-            }
-          },
-          wanted);
-      std::size_t drawn = 0, left_out = 0;
-      for (std::size_t i = 0; i < key.size(); ++i) {
-        ASSERT_LE(handed[i], 1) << "pixel " << i;
-        if (!is_wanted(i)) {
-          ASSERT_EQ(handed[i], 0) << "pixel " << i;
-          continue;
-        }
-        ASSERT_EQ(key[i], full.depth_key[i]) << "pixel " << i;  // both rounded to float
-
-        drawn += full.face[i] != kNoFace;
-        left_out += handed[i] == 0;
-      }
-      if (wanted.empty()) {
-        EXPECT_GT(drawn, key.size() / 10);
-        if (boxes == 3) {
-          EXPECT_GE(left_out, 64u * 64);  // a tile of sky at least
-        }
+    for (const bool storage : {false, true}) {
+      for (const std::vector<std::uint8_t>& wanted :
+           {std::vector<std::uint8_t>{}, checkerboard, one}) {
+        SCOPED_TRACE(std::to_string(boxes) + " boxes, " + std::to_string(wanted.size()) + " tiles" +
+                     (storage ? ", kept in storage" : ""));
+        expect_depth_tiles_of_the_full_pass(scene, view, full, wanted, storage);
+        if (HasFatalFailure()) return;
       }
     }
   }

@@ -70,15 +70,20 @@ class ScanConverter {
   /// As rasterize_tiles, for a light's depth map: float keys only, and only the tiles that
   /// some triangle reaches; the others hold nothing. With \p wanted, only the tiles it marks:
   /// no triangle is set up whose cluster reaches none of them.
+  /// \p keep_in, when given, is where a full-width tile kept between batches is drawn, asked
+  /// once per tile when a batch first reaches it (rows of kTileSize keys; null: the pass's
+  /// own storage): a depth map's own slot, which \p fn then finds its keys in.
+  using TileStorage = std::function<float*(std::size_t tile)>;
   void rasterize_depth_tiles(const RasterProjection& view, const Context& ctx,
-                             const std::function<void(const DepthTile&)>& fn,
-                             TileMask wanted = {}) const;
+                             const std::function<void(const DepthTile&)>& fn, TileMask wanted = {},
+                             const TileStorage& keep_in = {}) const;
 
   /// What the drawing of the clusters hands on, besides its tiles' keys (and faces, for a
   /// RasterTile).
   struct TileOutput {
-    bool empty_tiles;  ///< tiles no triangle reaches, too
-    TileMask wanted;   ///< the tiles drawn; empty: all
+    bool empty_tiles;                      ///< tiles no triangle reaches, too
+    TileMask wanted;                       ///< the tiles drawn; empty: all
+    const TileStorage* keep_in = nullptr;  ///< depth tiles only
   };
 
  private:

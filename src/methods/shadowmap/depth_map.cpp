@@ -25,15 +25,21 @@ void DepthMap::draw(const Scene& scene, const Context& ctx, ScanConverter::TileM
   }
   std::atomic<std::uint32_t> slots{std::uint32_t(slots_)};
   std::atomic<std::size_t> covered{covered_};
+  // A tile's slot, taken when it is first drawn into: tiles kept between batches are drawn
+  // in it, and their keys become depth in place.
+  const auto slot_of = [&](std::size_t t) {
+    if (slot_[t] == 0) slot_[t] = slots.fetch_add(1, std::memory_order_relaxed);
+    return slot_[t];
+  };
   // Williams 1978, first pass: a z-buffer rendering of the scene from the light, keeping only
   // depth; the scan converter's own, so that what a nearer surface hides is never drawn.
   ScanConverter(scene).rasterize_depth_tiles(
       view_, ctx,
       [&](const DepthTile& tile) {
-        covered.fetch_add(store(tile, slots.fetch_add(1, std::memory_order_relaxed)),
-                          std::memory_order_relaxed);
+        const std::size_t t = std::size_t(tile.y0 / kTile) * tiles_x_ + tile.x0 / kTile;
+        covered.fetch_add(store(tile, slot_of(t)), std::memory_order_relaxed);
       },
-      wanted);
+      wanted, [&](std::size_t t) { return texels_.get() + std::size_t(slot_of(t)) * kTileTexels; });
   slots_ = slots.load();
   covered_ = covered.load();
 }
@@ -58,7 +64,6 @@ void DepthMap::start(const RasterProjection& view) {
 
 // Stores a drawn tile's keys as linear depth in \p slot; returns how many texels were drawn.
 std::size_t DepthMap::store(const DepthTile& tile, std::uint32_t slot) {
-  slot_[std::size_t(tile.y0 / kTile) * tiles_x_ + tile.x0 / kTile] = slot;
   float* out = texels_.get() + std::size_t(slot) * kTileTexels;
   std::size_t drawn = 0;
   for (int y = 0; y < tile.height; ++y) {
@@ -74,8 +79,10 @@ std::size_t DepthMap::store(const DepthTile& tile, std::uint32_t slot) {
 // double would take most of the time of drawing a map that a few large faces fill.
 template <bool kOrthographic>
 int DepthMap::store_row(const float* key, int n, float* depth) {
+  // Counted first: a tile drawn in its slot becomes depth in place.
+  const int drawn = int(std::count_if(key, key + n, [](float k) { return k != -INFINITY; }));
   for (int x = 0; x < n; ++x) depth[x] = linear_depth<kOrthographic>(key[x]);
-  return int(std::count_if(key, key + n, [](float k) { return k != -INFINITY; }));
+  return drawn;
 }
 
 std::size_t DepthMap::drawn_tiles() const {
