@@ -5,12 +5,12 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <optional>
 #include <utility>
 
 #include "shadowkit/core/convex_hull.h"
-#include "shadowkit/core/prefetch.h"
 
 namespace shadowkit {
 namespace {
@@ -146,6 +146,8 @@ class FaceGrid {
     return CellRect{int(a.x - kSlack), int(b.x + kSlack), int(a.y - kSlack), int(b.y + kSlack)};
   }
 
+  int side() const { return side_; }
+
   /// Whether every cell of \p r holds footprints whose far reach is nearer than \p near.
   bool covers(const CellRect& r, double near) const {
     // In floats, rounded down: a reach equal to the rounded value keeps the sub-object.
@@ -161,19 +163,10 @@ class FaceGrid {
     return true;
   }
 
-  /// Starts loading the cells of \p r (covers and add read and write them).
-  void prefetch(const CellRect& r) const {
-    for (int y = r.y0; y <= r.y1; ++y) {
-      const float* row = cells_.data() + std::size_t(y) * side_;
-      __builtin_prefetch(row + r.x0);
-      __builtin_prefetch(row + r.x1);
-    }
-  }
-
   // Adds the convex footprint \p plane_hull (plane coordinates) reaching as far as \p reach
-  // to the cells it covers wholly: a cell's rows y and y + 1 cross it within the cell's
-  // columns.
-  void add(std::span<const Point2> plane_hull, float reach) {
+  // to the cells of columns [\p lo, \p hi) it covers wholly: a cell's rows y and y + 1 cross
+  // it within the cell's columns.
+  void add(std::span<const Point2> plane_hull, float reach, int lo, int hi) {
     if (cells_.empty()) return;
     thread_local std::vector<Point2> hull;
     hull.resize(plane_hull.size());
@@ -181,16 +174,17 @@ class FaceGrid {
                    [&](Point2 p) { return to_cells(p); });
     double y_lo = INFINITY, y_hi = -INFINITY;
     for (const Point2& p : hull) y_lo = std::min(y_lo, p.y), y_hi = std::max(y_hi, p.y);
-    for (int y = std::max(0, int(std::ceil(y_lo + kSlack)));
-         y + 1 <= std::min(double(side_), y_hi - kSlack); ++y) {
-      const auto [l0, r0] = columns_at(hull, y);
+    int y = std::max(0, int(std::ceil(y_lo + kSlack)));
+    for (auto [l0, r0] = columns_at(hull, y); y + 1 <= std::min(double(side_), y_hi - kSlack);
+         ++y) {
       const auto [l1, r1] = columns_at(hull, y + 1);
-      const int x0 = std::max(0, int(std::ceil(std::max(l0, l1) + kSlack)));
-      const int x1 = std::min(side_, int(std::floor(std::min(r0, r1) - kSlack)));
+      const int x0 = std::max(lo, int(std::ceil(std::max(l0, l1) + kSlack)));
+      const int x1 = std::min(hi, int(std::floor(std::min(r0, r1) - kSlack)));
       for (int x = x0; x < x1; ++x) {
         float& c = cells_[std::size_t(y) * side_ + std::size_t(x)];
         c = std::min(c, reach);
       }
+      l0 = l1, r0 = r1;
     }
   }
 
@@ -203,14 +197,14 @@ class FaceGrid {
 
 // What the footprint test needs of one sub-object as the light sees it.
 struct SubObjectView {
-  std::uint32_t k = 0;                           ///< the sub-object
-  double near = 0;                               ///< how near the light its box reaches
-  int box_face = -1;                             ///< the face its box projects onto, -1 if none
-  Point2 box_lo{}, box_hi{};                     ///< the rectangle of its box's projection
-  int hull_face = -1;                            ///< a convex sub-object's: its footprint's face
-  std::uint32_t hull_first = 0, hull_count = 0;  ///< its footprint (plane coordinates)
-  Point2 hull_lo{}, hull_hi{};                   ///< the footprint's bounds
-  float reach = 0;  ///< how far from the light its footprint reaches, rounded up
+  std::uint32_t k = 0;            ///< the sub-object
+  double near = 0;                ///< how near the light its box reaches
+  int box_face = -1;              ///< the face its box projects onto, -1 if none
+  Point2 box_lo{}, box_hi{};      ///< the rectangle of its box's projection
+  int hull_face = -1;             ///< a convex sub-object's: its footprint's face
+  std::span<const Vec3> corners;  ///< its corners, whose projections make its footprint
+  Point2 hull_lo{}, hull_hi{};    ///< the footprint's bounds
+  float reach = 0;                ///< how far from the light its footprint reaches, rounded up
 };
 
 // The bounds [lo, hi] of \p points (at least one).
@@ -222,10 +216,11 @@ void bounds_of(std::span<const Point2> points, Point2& lo, Point2& hi) {
   }
 }
 
-// Sub-object \p k as \p view sees it, its footprint into \p hull (room for its corners).
-SubObjectView view_of(const SubObjects& parts, std::uint32_t k, const FootprintProjection& view,
-                      Point2* hull) {
-  thread_local std::vector<Point2> points, convex;
+// Sub-object \p k as \p view sees it. Its footprint, the convex hull of its corners' projections,
+// is left to when it is added: most sub-objects of a large field lie in the shadow of nearer
+// ones and add none; its bounds are those of the projections.
+SubObjectView view_of(const SubObjects& parts, std::uint32_t k, const FootprintProjection& view) {
+  thread_local std::vector<Point2> points;
   SubObjectView out;
   out.k = k;
   out.near = view.near(parts.bounds[k]);
@@ -237,16 +232,21 @@ SubObjectView view_of(const SubObjects& parts, std::uint32_t k, const FootprintP
   }
   if (!parts.convex[k]) return out;  // only a convex hull of its corners is its footprint
   if (const std::optional<int> face = view.project(parts.corners(k), points)) {
-    const std::size_t n = convex_hull(std::span(points), convex);
-    if (n >= 3) {
-      out.hull_face = *face;
-      out.hull_count = std::uint32_t(n);
-      std::copy_n(convex.begin(), n, hull);
-      bounds_of({hull, n}, out.hull_lo, out.hull_hi);
-      out.reach = rounded_up(view.far(parts.corners(k)));
-    }
+    out.hull_face = *face;
+    out.corners = parts.corners(k);
+    bounds_of(points, out.hull_lo, out.hull_hi);
+    out.reach = rounded_up(view.far(parts.corners(k)));
   }
   return out;
+}
+
+// The footprint of a sub-object with \p corners on its face of \p view, into \p hull;
+// returns its corner count (under 3: it covers no cell).
+std::size_t footprint(std::span<const Vec3> corners, const FootprintProjection& view,
+                      std::vector<Point2>& hull) {
+  thread_local std::vector<Point2> points;
+  view.project(corners, points);
+  return convex_hull(std::span(points), hull);
 }
 
 // Per face of \p view, a grid around the footprints in \p views that fall on it.
@@ -269,22 +269,13 @@ std::vector<FaceGrid> footprint_grids(const std::vector<SubObjectView>& views,
   return grids;
 }
 
-// Every sub-object as \p view sees it, nearest the light first: the order of the pass over
-// them, which cannot run in parallel and then reads them one after another. Their footprints
-// go into \p hulls in sub-object order, as the views are made: made in the pass's order, the
-// reads of the sub-objects would miss the cache one after another.
-std::vector<SubObjectView> nearest_first(const SubObjects& parts, const FootprintProjection& view,
-                                         std::vector<Point2>& hulls) {
-  std::vector<std::uint32_t> room(parts.size() + 1, 0);  // a footprint has at most its corners
-  for (std::size_t k = 0; k < parts.size(); ++k) {
-    room[k + 1] = room[k] + std::uint32_t(parts.corners(k).size());
-  }
-  hulls.resize(room.back());
+// Every sub-object as \p view sees it, nearest the light first: the order in which each
+// strip of the grids takes them, reading them one after another. The views are made in
+// sub-object order, which reads the sub-objects one after another, then put in order.
+std::vector<SubObjectView> nearest_first(const SubObjects& parts, const FootprintProjection& view) {
   std::vector<SubObjectView> by_part(parts.size());
-  tbb::parallel_for(std::uint32_t(0), std::uint32_t(parts.size()), [&](std::uint32_t k) {
-    by_part[k] = view_of(parts, k, view, hulls.data() + room[k]);
-    by_part[k].hull_first = room[k];
-  });
+  tbb::parallel_for(std::uint32_t(0), std::uint32_t(parts.size()),
+                    [&](std::uint32_t k) { by_part[k] = view_of(parts, k, view); });
   std::vector<std::pair<double, std::uint32_t>> order(parts.size());
   for (std::uint32_t k = 0; k < parts.size(); ++k) order[k] = {by_part[k].near, k};
   tbb::parallel_sort(order.begin(), order.end());
@@ -294,43 +285,122 @@ std::vector<SubObjectView> nearest_first(const SubObjects& parts, const Footprin
   return views;
 }
 
+// A face's grid in strips of this many columns, taken in parallel. A sub-object in the shadow
+// of nearer ones would change no cell if it added its footprint: nearer footprints already
+// hold each cell of it, reaching nearer. So whether a box is covered depends only on the
+// footprints nearer the light, never on another box's test: each strip is taken on its own,
+// a box is shadowed when every strip it touches covers it, and the answers are those of one
+// pass over the whole grid. A strip's cells (64 columns of at most 2048 rows) stay in the
+// cache while the sub-objects go by.
+constexpr int kStripCells = 64;
+
+// One sub-object as a strip takes it: the test of its box against the strip's cells, or the
+// addition of its footprint to them, or both.
+struct StripEntry {
+  enum : std::uint8_t { kTest = 1, kAdd = 2 };
+  double near = 0;                ///< SubObjectView::near
+  std::span<const Vec3> corners;  ///< SubObjectView::corners
+  std::uint32_t k = 0;            ///< the sub-object
+  float reach = 0;                ///< SubObjectView::reach
+  CellRect cells{};               ///< the cells its box touches, within the strip
+  std::uint8_t what = 0;
+};
+
+// The columns [lo, hi) of one face's grid, and what each sub-object that reaches them asks
+// of them, nearest the light first: each strip reads its entries one after another.
+struct Strip {
+  int face = 0, lo = 0, hi = 0;
+  std::vector<StripEntry> entries;
+};
+
+// The strips of every face's grid, with the boxes each tests and the footprints it adds, in
+// the views' order; \p tested (per sub-object) marks the boxes that touch only cells.
+std::vector<Strip> strips_of(const std::vector<SubObjectView>& views,
+                             const std::vector<FaceGrid>& grids, std::vector<char>& tested) {
+  std::vector<Strip> strips;
+  std::vector<std::size_t> first(grids.size() + 1, 0);  // per face, its first strip
+  for (std::size_t f = 0; f < grids.size(); ++f) {
+    for (int lo = 0; lo < grids[f].side(); lo += kStripCells) {
+      strips.push_back({int(f), lo, std::min(grids[f].side(), lo + kStripCells), {}});
+    }
+    first[f + 1] = strips.size();
+  }
+  // Adds \p what of \p v to the strips of face f that columns [x0, x1] reach.
+  const auto add_to = [&](const SubObjectView& v, int f, int x0, int x1, CellRect cells,
+                          std::uint8_t what) {
+    const int last = int(first[f + 1] - first[f]) - 1;
+    for (int s = std::max(0, x0 / kStripCells); s <= std::min(last, x1 / kStripCells); ++s) {
+      Strip& strip = strips[first[f] + std::size_t(s)];
+      if (!strip.entries.empty() && strip.entries.back().k == v.k) {
+        strip.entries.back().what |= what;
+        continue;
+      }
+      CellRect within = cells;
+      within.x0 = std::max(cells.x0, strip.lo), within.x1 = std::min(cells.x1, strip.hi - 1);
+      strip.entries.push_back({v.near, v.corners, v.k, v.reach, within, what});
+    }
+  };
+  for (const SubObjectView& v : views) {
+    if (v.box_face >= 0) {
+      if (const std::optional<CellRect> cells =
+              grids[std::size_t(v.box_face)].touched(v.box_lo, v.box_hi)) {
+        tested[v.k] = 1;
+        add_to(v, v.box_face, cells->x0, cells->x1, *cells, StripEntry::kTest);
+      }
+    }
+    if (v.hull_face < 0 || grids[std::size_t(v.hull_face)].side() == 0) continue;
+    const FaceGrid& grid = grids[std::size_t(v.hull_face)];
+    const double x0 = std::floor(grid.to_cells(v.hull_lo).x), x1 = grid.to_cells(v.hull_hi).x;
+    if (x1 < 0 || x0 >= grid.side()) continue;
+    add_to(v, v.hull_face, int(std::max(x0, 0.0)), int(std::min(x1, double(grid.side()))), {},
+           StripEntry::kAdd);
+  }
+  return strips;
+}
+
 }  // namespace
 
 std::vector<char> shadowed_sub_objects(const SubObjects& parts, const Light& light,
                                        const Bounds3& scene_bounds) {
   const FootprintProjection view(light);
-  std::vector<Point2> hulls;
-  const std::vector<SubObjectView> views = nearest_first(parts, view, hulls);
-  std::vector<FaceGrid> grids = footprint_grids(views, view);
+  std::vector<FaceGrid> grids;
+  std::vector<Strip> strips;
+  std::vector<char> shadowed(parts.size(), 0);  // first: the boxes tested
+  {
+    const std::vector<SubObjectView> views = nearest_first(parts, view);
+    grids = footprint_grids(views, view);
+    strips = strips_of(views, grids, shadowed);
+  }
   // Hazard: distances carry rounding of about 1e-16 of the scene's size; a sub-object
   // touching a footprint's far side stays.
   const double tolerance = 1e-9 * (scene_bounds.diagonal() + length(scene_bounds.center()) +
                                    (light.type == Light::Type::point ? length(light.position) : 0));
-  // Nearest the light first: a sub-object is tested against the footprints of nearer ones.
-  // They lie all over the grids: the cells and footprint of one a few ahead start loading now.
-  constexpr std::size_t kLoadAhead = 8;
-  std::vector<char> shadowed(parts.size(), 0);
-  for (std::size_t i = 0; i < views.size(); ++i) {
-    const SubObjectView& v = views[i];
-    if (i + kLoadAhead < views.size() && views[i + kLoadAhead].box_face >= 0) {
-      const SubObjectView& ahead = views[i + kLoadAhead];
-      const FaceGrid& grid = grids[std::size_t(ahead.box_face)];
-      if (const std::optional<CellRect> cells = grid.touched(ahead.box_lo, ahead.box_hi))
-        grid.prefetch(*cells);
-      if (ahead.hull_count > 0) prefetch(hulls[ahead.hull_first]);
-    }
-    if (v.box_face >= 0) {
-      const FaceGrid& grid = grids[std::size_t(v.box_face)];
-      const std::optional<CellRect> cells = grid.touched(v.box_lo, v.box_hi);
-      if (cells && grid.covers(*cells, v.near - tolerance)) {
-        shadowed[v.k] = 1;
-        continue;
-      }
-    }
-    if (v.hull_face >= 0) {
-      grids[std::size_t(v.hull_face)].add({hulls.data() + v.hull_first, v.hull_count}, v.reach);
-    }
-  }
+  tbb::parallel_for(
+      std::size_t(0), strips.size(),
+      [&](std::size_t s) {
+        const Strip& strip = strips[s];
+        FaceGrid& grid = grids[std::size_t(strip.face)];
+        thread_local std::vector<Point2> hull;
+        for (std::size_t e = 0; e < strip.entries.size(); ++e) {
+          // The corners of a footprint a few entries ahead start loading now.
+          if (e + 4 < strip.entries.size() && strip.entries[e + 4].what & StripEntry::kAdd) {
+            for (const Vec3& c : strip.entries[e + 4].corners) __builtin_prefetch(&c);
+          }
+          const StripEntry& entry = strip.entries[e];
+          bool covered = false;
+          if (entry.what & StripEntry::kTest) {
+            covered = grid.covers(entry.cells, entry.near - tolerance);
+            if (!covered)
+              std::atomic_ref<char>(shadowed[entry.k]).store(0, std::memory_order_relaxed);
+          }
+          // Where the strip covers the box, its footprint would change no cell of it.
+          if (entry.what & StripEntry::kAdd && !covered) {
+            const std::size_t n = footprint(entry.corners, view, hull);
+            if (n >= 3) grid.add({hull.data(), n}, entry.reach, strip.lo, strip.hi);
+          }
+        }
+      },
+      tbb::simple_partitioner());
   return shadowed;
 }
 

@@ -64,5 +64,27 @@ TEST(Footprints, NeedAFootprintOnOneCubeFaceOfAPointLight) {
   EXPECT_EQ(shadowed(scene), (std::vector<char>{0, 0, 0}));
 }
 
+TEST(Footprints, TestEveryPartOfAWideBox) {
+  // 2,304 small cubes make the grid 192 cells across: the grid is kept in strips of columns
+  // that go by the light's first axis, here world z. Under a slab, a box across the three
+  // strips is shadowed; a box across two, out from under the slab in the second, is not.
+  std::vector<PolygonSoup> objects{testing::box({-1, 4, -5}, {1, 4.2, 5}),
+                                   testing::box({-0.5, 2, -4.5}, {0.5, 2.5, 4.5}),
+                                   testing::box({-0.5, 2, -1}, {0.5, 2.5, 5.8})};
+  for (int i = 0; i < 48; ++i) {
+    for (int j = 0; j < 48; ++j) {
+      const Vec3 lo{-6 + 0.25 * i, 0, -6 + 0.25 * j};
+      objects.push_back(testing::box(lo, lo + Vec3{0.1, 0.1, 0.1}));
+    }
+  }
+  for (const Light& light :
+       {testing::directional_light({0, -1, 0}), testing::point_light({0, 400, 0})}) {
+    const std::vector<char> marked = shadowed(
+        testing::make_scene(testing::camera({0, 7, 12}, {0, 2, 0}, 160, 120), {light}, objects));
+    EXPECT_EQ(marked[1], 1) << int(light.type);
+    EXPECT_EQ(marked[2], 0) << int(light.type);
+  }
+}
+
 }  // namespace
 }  // namespace shadowkit
