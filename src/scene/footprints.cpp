@@ -314,7 +314,8 @@ struct Strip {
 };
 
 // The strips of every face's grid, with the boxes each tests and the footprints it adds, in
-// the views' order; \p tested (per sub-object) marks the boxes that touch only cells.
+// the views' order; \p tested (per sub-object) marks the boxes that lie within their grid,
+// the only ones tested.
 std::vector<Strip> strips_of(const std::vector<SubObjectView>& views,
                              const std::vector<FaceGrid>& grids, std::vector<char>& tested) {
   std::vector<Strip> strips;
