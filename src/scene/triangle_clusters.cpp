@@ -46,7 +46,7 @@ TriangleClusters cluster_triangles(const TriangleList& list, const Bounds3& boun
   tbb::parallel_sort(keyed.begin(), keyed.end());
 
   TriangleClusters out;
-  out.corners.resize(n);
+  out.corners.assign(n, {});  // not resize(n): GCC 12 sees a null pointer in that, wrongly
   out.faces.resize(n);
   tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
     out.corners[i] = list.triangles[keyed[i].second];

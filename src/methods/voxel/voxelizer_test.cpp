@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deque>
 #include <limits>
@@ -306,7 +307,7 @@ bool empties_joined(std::uint8_t occupied) {
     if (!(occupied >> b & 1)) empty.push_back({b & 1, b >> 1 & 1, b >> 2 & 1});
   }
   if (empty.empty()) return true;
-  std::vector<bool> reached(empty.size(), false);
+  std::array<bool, 8> reached{};  // per empty voxel: a vector<bool> trips GCC's null checks
   reached[0] = true;
   for (std::size_t round = 0; round < empty.size(); ++round) {
     for (std::size_t i = 0; i < empty.size(); ++i) {
@@ -315,7 +316,8 @@ bool empties_joined(std::uint8_t occupied) {
       }
     }
   }
-  return std::all_of(reached.begin(), reached.end(), [](bool r) { return r; });
+  return std::all_of(reached.begin(), reached.begin() + std::ptrdiff_t(empty.size()),
+                     [](bool r) { return r; });
 }
 
 // Every block: the fill takes only empty voxels and leaves the empty ones joined, and a block
