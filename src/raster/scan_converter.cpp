@@ -196,37 +196,42 @@ class TileFrame {
 class HiddenSides {
  public:
   HiddenSides(const Scene& scene, const RasterProjection& view)
-      : scene_(scene), view_(view), past_near_(scene.outward_solids().size(), kUnknown) {}
+      : scene_(scene), view_(view), solid_state_(scene.outward_solids().size(), kUnknown) {}
 
   bool hidden(std::uint32_t face) const {
-    const OutwardSolids& solids = scene_.outward_solids();
-    const std::int32_t s = solids.solid_of(face);
-    if (s < 0 || !past_near(std::size_t(s))) return false;
-    return view_.orthographic ? solids.far_side_along(scene_, face, view_.forward)
-                              : solids.far_side_from(scene_, face, view_.eye);
+    const std::int32_t s = scene_.outward_solids().solid_of(face);
+    if (s < 0 || !hides_far_side(std::size_t(s))) return false;
+    // OutwardSolids::far_side_from and far_side_along, with what they ask of the solid
+    // asked once per solid (hides_far_side), not once per face.
+    const Plane& plane = scene_.face_plane(face);
+    return view_.orthographic ? dot(plane.normal, view_.forward) > 0
+                              : plane.distance(view_.eye) < 0;
   }
 
  private:
-  enum : std::uint8_t { kUnknown, kPast, kCut };
-  // Taken when a face of the solid is first met: a cube map's face meets a few of a scene's
-  // solids, and most views meet few of them that are not hidden whole. Threads that meet
-  // the solid at once find the same answer.
-  bool past_near(std::size_t s) const {
-    std::atomic_ref<std::uint8_t> state(past_near_[s]);
+  enum : std::uint8_t { kUnknown, kHides, kShows };
+  // Whether solid \p s's near side hides its far side: the solid lies past the near plane
+  // and, for a perspective view, the eye lies outside its box. Taken when a face of the
+  // solid is first met: a cube map's face meets a few of a scene's solids, and most views
+  // meet few of them that are not hidden whole. Threads that meet the solid at once find
+  // the same answer.
+  bool hides_far_side(std::size_t s) const {
+    std::atomic_ref<std::uint8_t> state(solid_state_[s]);
     std::uint8_t known = state.load(std::memory_order_relaxed);
     if (known == kUnknown) {
-      const Bounds3& box = scene_.outward_solids().bounds(s);
-      bool past = true;
-      for (int k = 0; k < 8 && past; ++k) past = view_.to_view(box.corner(k)).z > view_.near;
-      known = past ? kPast : kCut;
+      const OutwardSolids& solids = scene_.outward_solids();
+      const Bounds3& box = solids.bounds(s);
+      bool hides = view_.orthographic || solids.outside(s, view_.eye);
+      for (int k = 0; k < 8 && hides; ++k) hides = view_.to_view(box.corner(k)).z > view_.near;
+      known = hides ? kHides : kShows;
       state.store(known, std::memory_order_relaxed);
     }
-    return known == kPast;
+    return known == kHides;
   }
 
   const Scene& scene_;
   const RasterProjection& view_;
-  mutable std::vector<std::uint8_t> past_near_;
+  mutable std::vector<std::uint8_t> solid_state_;
 };
 
 // The triangles of the clusters \p batch that neither what \p frame has drawn nor their own

@@ -26,11 +26,6 @@ std::vector<std::uint32_t> connected_parts(const Mesh& mesh) {
   return part;
 }
 
-bool outside(const Bounds3& box, Vec3 p) {
-  return p.x < box.lo.x || p.y < box.lo.y || p.z < box.lo.z || p.x > box.hi.x || p.y > box.hi.y ||
-         p.z > box.hi.z;
-}
-
 }  // namespace
 
 OutwardSolids::OutwardSolids(const Scene& scene) : solid_(scene.face_count(), -1) {
@@ -64,7 +59,13 @@ OutwardSolids::OutwardSolids(const Scene& scene) : solid_(scene.face_count(), -1
 bool OutwardSolids::far_side_from(const Scene& scene, std::uint32_t face, Vec3 point) const {
   const std::int32_t solid = solid_[face];
   return solid >= 0 && scene.face_plane(face).distance(point) < 0 &&
-         outside(bounds_[std::size_t(solid)], point);
+         outside(std::size_t(solid), point);
+}
+
+bool OutwardSolids::outside(std::size_t s, Vec3 point) const {
+  const Bounds3& box = bounds_[s];
+  return point.x < box.lo.x || point.y < box.lo.y || point.z < box.lo.z || point.x > box.hi.x ||
+         point.y > box.hi.y || point.z > box.hi.z;
 }
 
 bool OutwardSolids::far_side_along(const Scene& scene, std::uint32_t face, Vec3 direction) const {

@@ -30,6 +30,8 @@ class OutwardSolids {
   std::size_t size() const { return bounds_.size(); }
   /// Solid \p s's bounding box.
   const Bounds3& bounds(std::size_t s) const { return bounds_[s]; }
+  /// Whether \p point lies outside solid \p s's bounding box.
+  bool outside(std::size_t s, Vec3 point) const;
   /// Whether \p face is on the far side of its solid from \p point: it bounds an outward
   /// solid, its plane is turned from the point, and the point is outside the solid's box.
   bool far_side_from(const Scene& scene, std::uint32_t face, Vec3 point) const;
