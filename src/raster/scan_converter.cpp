@@ -201,11 +201,11 @@ class HiddenSides {
   bool hidden(std::uint32_t face) const {
     const std::int32_t s = scene_.outward_solids().solid_of(face);
     if (s < 0 || !hides_far_side(std::size_t(s))) return false;
-    // OutwardSolids::far_side_from and far_side_along, with what they ask of the solid
-    // asked once per solid (hides_far_side), not once per face.
+    // OutwardSolids::far_side_from and far_side_along, with their test of the solid asked
+    // once per solid (hides_far_side), not once per face.
     const Plane& plane = scene_.face_plane(face);
-    return view_.orthographic ? dot(plane.normal, view_.forward) > 0
-                              : plane.distance(view_.eye) < 0;
+    return view_.orthographic ? OutwardSolids::turned_along(plane, view_.forward)
+                              : OutwardSolids::turned_from(plane, view_.eye);
   }
 
  private:

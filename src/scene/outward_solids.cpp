@@ -58,7 +58,7 @@ OutwardSolids::OutwardSolids(const Scene& scene) : solid_(scene.face_count(), -1
 
 bool OutwardSolids::far_side_from(const Scene& scene, std::uint32_t face, Vec3 point) const {
   const std::int32_t solid = solid_[face];
-  return solid >= 0 && scene.face_plane(face).distance(point) < 0 &&
+  return solid >= 0 && turned_from(scene.face_plane(face), point) &&
          outside(std::size_t(solid), point);
 }
 
@@ -69,7 +69,7 @@ bool OutwardSolids::outside(std::size_t s, Vec3 point) const {
 }
 
 bool OutwardSolids::far_side_along(const Scene& scene, std::uint32_t face, Vec3 direction) const {
-  return solid_[face] >= 0 && dot(scene.face_plane(face).normal, direction) > 0;
+  return solid_[face] >= 0 && turned_along(scene.face_plane(face), direction);
 }
 
 }  // namespace shadowkit

@@ -38,6 +38,13 @@ class OutwardSolids {
   /// Whether \p face is on the far side of its solid seen along \p direction from infinitely
   /// far: it bounds an outward solid and its plane is turned from the viewer.
   bool far_side_along(const Scene& scene, std::uint32_t face, Vec3 direction) const;
+  /// The face tests of far_side_from and far_side_along alone, for a caller that knows the
+  /// solid's part: whether a face's \p plane is turned from \p point, or from a viewer
+  /// looking along \p direction.
+  static bool turned_from(const Plane& plane, Vec3 point) { return plane.distance(point) < 0; }
+  static bool turned_along(const Plane& plane, Vec3 direction) {
+    return dot(plane.normal, direction) > 0;
+  }
 
  private:
   std::vector<std::int32_t> solid_;  ///< per global face: its solid, -1 for none
